@@ -1,0 +1,33 @@
+# relight — the two commands of the quick start: `make demo` and `make test`.
+# Each bootstraps missing Debian packages, builds in Release, then runs.
+BUILD ?= build
+JOBS  ?= 2
+DEMO_OUT ?= out/demo
+
+.PHONY: all bootstrap build demo test bench format clean
+
+all: build
+
+bootstrap:
+	@scripts/bootstrap.sh
+
+$(BUILD)/build.ninja: | bootstrap
+	@cmake -S . -B $(BUILD) -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+
+build: bootstrap $(BUILD)/build.ninja
+	@cmake --build $(BUILD) -j $(JOBS)
+
+demo: build
+	@$(BUILD)/relight demo -o $(DEMO_OUT)
+
+test: build
+	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+bench: build
+	@$(BUILD)/relight_benchmarks --benchmark_min_time=0.2
+
+format:
+	@clang-format -i $$(git ls-files 'src/*.cpp' 'src/*.h' 'tests/*.cpp' 'tests/*.h' 'bench/*.cpp')
+
+clean:
+	@rm -rf $(BUILD)

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Installs what relight needs on Debian 12, and nothing when nothing is missing.
+# Idempotent: asks dpkg which packages are absent and installs only those.
+# Every dependency comes from Debian (ARCHITECTURE §5); npm packages are added
+# here when the studio lands.
+set -euo pipefail
+
+debian_packages=(
+  g++ make cmake ninja-build pkg-config
+  libembree-dev libtbb-dev libeigen3-dev
+  libtinyobjloader-dev libtinygltf-dev
+  libopenexr-dev libstb-dev
+  nlohmann-json3-dev libcli11-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+)
+
+missing=()
+for p in "${debian_packages[@]}"; do
+  status=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)
+  [[ "$status" == "install ok installed" ]] || missing+=("$p")
+done
+
+if ((${#missing[@]})); then
+  echo "bootstrap: installing ${missing[*]}"
+  sudo_cmd=()
+  if [[ $(id -u) -ne 0 ]]; then
+    command -v sudo >/dev/null || { echo "error: bootstrap: need root or sudo to install: ${missing[*]}" >&2; exit 2; }
+    sudo_cmd=(sudo)
+  fi
+  export DEBIAN_FRONTEND=noninteractive
+  "${sudo_cmd[@]}" apt-get update -qq
+  "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi

@@ -1,0 +1,40 @@
+#include "common/atomic_file.h"
+
+#include <fstream>
+#include <random>
+#include <stdexcept>
+#include <system_error>
+
+#include <unistd.h>
+
+namespace relight {
+
+namespace fs = std::filesystem;
+
+void write_atomically(const fs::path& target, const std::function<void(const fs::path&)>& write) {
+  const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  std::random_device entropy;
+  // Keep the extension last: image writers choose the format from it.
+  const fs::path tmp = folder / ("." + target.stem().string() + ".tmp" +
+                                 std::to_string(::getpid()) + "-" + std::to_string(entropy()) +
+                                 target.extension().string());
+  try {
+    write(tmp);
+    fs::rename(tmp, target);
+  } catch (...) {
+    std::error_code ignored;
+    fs::remove(tmp, ignored);
+    throw;
+  }
+}
+
+void write_text_atomically(const fs::path& target, std::string_view text) {
+  write_atomically(target, [&](const fs::path& tmp) {
+    std::ofstream out(tmp, std::ios::binary);
+    out.write(text.data(), static_cast<std::streamsize>(text.size()));
+    out.close();
+    if (!out) throw std::runtime_error("cannot write " + target.string());
+  });
+}
+
+}  // namespace relight

@@ -1,0 +1,19 @@
+// Files are written atomically (ARCHITECTURE §4.8): the content goes to a temporary
+// name beside the target and is renamed over it only when complete, so a crash or a
+// full disk never leaves a half-written file where the user's was.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <string_view>
+
+namespace relight {
+
+// Calls write(tmp) with a temporary path in the target's folder, then renames tmp
+// onto target. If write throws, the temporary is removed and the target untouched.
+void write_atomically(const std::filesystem::path& target,
+                      const std::function<void(const std::filesystem::path& tmp)>& write);
+
+void write_text_atomically(const std::filesystem::path& target, std::string_view text);
+
+}  // namespace relight

@@ -1,0 +1,26 @@
+// Triangles as they come from the scene file, before mesh preparation: world-space
+// positions, index triples and one material index per triangle (into Scene::materials).
+// Mesh preparation (mesh_preparation.h) turns this into the per-vertex receivers of
+// precomputed transfer.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "math/vec3.h"
+
+namespace relight {
+
+using Triangle = std::array<std::uint32_t, 3>;
+
+struct TriangleSoup {
+  std::vector<Vec3> positions;
+  std::vector<Triangle> triangles;
+  std::vector<std::uint32_t> triangle_material;  // one per triangle
+
+  // Appends `other`, offsetting its indices.
+  void append(const TriangleSoup& other);
+};
+
+}  // namespace relight
