@@ -8,17 +8,35 @@ struct Rgb {
   double r = 0, g = 0, b = 0;
 };
 
-constexpr Rgb operator+(Rgb a, Rgb c) { return {a.r + c.r, a.g + c.g, a.b + c.b}; }
-constexpr Rgb operator-(Rgb a, Rgb c) { return {a.r - c.r, a.g - c.g, a.b - c.b}; }
-constexpr Rgb operator*(Rgb a, Rgb c) { return {a.r * c.r, a.g * c.g, a.b * c.b}; }
-constexpr Rgb operator*(Rgb a, double s) { return {a.r * s, a.g * s, a.b * s}; }
-constexpr Rgb operator*(double s, Rgb a) { return a * s; }
-constexpr Rgb operator/(Rgb a, double s) { return {a.r / s, a.g / s, a.b / s}; }
-constexpr Rgb& operator+=(Rgb& a, Rgb c) { return a = a + c; }
-constexpr Rgb& operator*=(Rgb& a, double s) { return a = a * s; }
+constexpr Rgb operator+(Rgb a, Rgb c) {
+  return {a.r + c.r, a.g + c.g, a.b + c.b};
+}
+constexpr Rgb operator-(Rgb a, Rgb c) {
+  return {a.r - c.r, a.g - c.g, a.b - c.b};
+}
+constexpr Rgb operator*(Rgb a, Rgb c) {
+  return {a.r * c.r, a.g * c.g, a.b * c.b};
+}
+constexpr Rgb operator*(Rgb a, double s) {
+  return {a.r * s, a.g * s, a.b * s};
+}
+constexpr Rgb operator*(double s, Rgb a) {
+  return a * s;
+}
+constexpr Rgb operator/(Rgb a, double s) {
+  return {a.r / s, a.g / s, a.b / s};
+}
+constexpr Rgb& operator+=(Rgb& a, Rgb c) {
+  return a = a + c;
+}
+constexpr Rgb& operator*=(Rgb& a, double s) {
+  return a = a * s;
+}
 
 inline constexpr double kLumaR = 0.2126, kLumaG = 0.7152, kLumaB = 0.0722;
-constexpr double luminance(Rgb c) { return kLumaR * c.r + kLumaG * c.g + kLumaB * c.b; }
+constexpr double luminance(Rgb c) {
+  return kLumaR * c.r + kLumaG * c.g + kLumaB * c.b;
+}
 constexpr double max_component(Rgb c) {
   return c.r > c.g ? (c.r > c.b ? c.r : c.b) : (c.g > c.b ? c.g : c.b);
 }

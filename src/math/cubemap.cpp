@@ -1,0 +1,112 @@
+// Cubemap layout, texel solid angles and SH projection; see cubemap.h.
+#include "math/cubemap.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+#include "math/sh.h"
+
+namespace relight {
+namespace {
+
+double area_element_integral(double u, double v) {
+  return std::atan2(u * v, std::sqrt(1.0 + u * u + v * v));
+}
+
+Vec3 face_point(int face, double u, double v) {
+  switch (face) {
+    case kPosX:
+      return {1.0, -v, -u};
+    case kNegX:
+      return {-1.0, -v, u};
+    case kPosY:
+      return {u, 1.0, v};
+    case kNegY:
+      return {u, -1.0, -v};
+    case kPosZ:
+      return {u, -v, 1.0};
+    default:
+      return {-u, -v, -1.0};
+  }
+}
+
+template <class T>
+std::vector<T> project(int order, int n, std::span<const T> texels) {
+  assert(texels.size() == cubemap_texel_count(n));
+  const std::vector<double> omega = cubemap_solid_angles(n);
+  std::vector<T> c(sh_count(order));
+  for (int face = 0; face < 6; ++face)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const CubemapTexel t{face, i, j};
+        sh_add_sample(cubemap_texel_direction(n, t),
+                      texels[cubemap_texel_index(n, t)] * omega[j * n + i], std::span<T>(c));
+      }
+  return c;
+}
+
+}  // namespace
+
+Vec3 cubemap_direction(CubemapCoord c) {
+  return normalize(face_point(c.face, 2.0 * c.s - 1.0, 2.0 * c.t - 1.0));
+}
+
+Vec3 cubemap_texel_direction(int n, CubemapTexel c) {
+  return cubemap_direction({c.face, (c.i + 0.5) / n, (c.j + 0.5) / n});
+}
+
+double cubemap_texel_solid_angle(int n, int i, int j) {
+  const double u0 = 2.0 * i / n - 1.0, u1 = 2.0 * (i + 1) / n - 1.0;
+  const double v0 = 2.0 * j / n - 1.0, v1 = 2.0 * (j + 1) / n - 1.0;
+  return area_element_integral(u1, v1) - area_element_integral(u0, v1) -
+         area_element_integral(u1, v0) + area_element_integral(u0, v0);
+}
+
+std::vector<double> cubemap_solid_angles(int n) {
+  std::vector<double> omega(static_cast<std::size_t>(n) * n);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) omega[j * n + i] = cubemap_texel_solid_angle(n, i, j);
+  return omega;
+}
+
+CubemapCoord cubemap_coord(Vec3 d) {
+  const double ax = std::abs(d.x), ay = std::abs(d.y), az = std::abs(d.z);
+  int face;
+  double ma, sc, tc;
+  if (ax >= ay && ax >= az) {
+    face = d.x >= 0 ? kPosX : kNegX;
+    ma = ax;
+    sc = d.x >= 0 ? -d.z : d.z;
+    tc = -d.y;
+  } else if (ay >= az) {
+    face = d.y >= 0 ? kPosY : kNegY;
+    ma = ay;
+    sc = d.x;
+    tc = d.y >= 0 ? d.z : -d.z;
+  } else {
+    face = d.z >= 0 ? kPosZ : kNegZ;
+    ma = az;
+    sc = d.z >= 0 ? d.x : -d.x;
+    tc = -d.y;
+  }
+  return {face, 0.5 * (sc / ma + 1.0), 0.5 * (tc / ma + 1.0)};
+}
+
+CubemapTexel cubemap_texel(int n, Vec3 dir) {
+  const CubemapCoord c = cubemap_coord(dir);
+  const auto cell = [n](double s) {
+    return std::clamp(static_cast<int>(std::floor(s * n)), 0, n - 1);
+  };
+  return {c.face, cell(c.s), cell(c.t)};
+}
+
+std::vector<double> sh_project_cubemap(int order, int n, std::span<const double> texels) {
+  return project(order, n, texels);
+}
+
+std::vector<Rgb> sh_project_cubemap(int order, int n, std::span<const Rgb> texels) {
+  return project(order, n, texels);
+}
+
+}  // namespace relight
