@@ -15,9 +15,11 @@ void write_atomically(const fs::path& target, const std::function<void(const fs:
   const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
   std::random_device entropy;
   // Keep the extension last: image writers choose the format from it.
-  const fs::path tmp = folder / ("." + target.stem().string() + ".tmp" +
-                                 std::to_string(::getpid()) + "-" + std::to_string(entropy()) +
-                                 target.extension().string());
+  std::string name = ".";
+  name += target.stem().string();
+  name += ".tmp" + std::to_string(::getpid()) + "-" + std::to_string(entropy());
+  name += target.extension().string();
+  const fs::path tmp = folder / name;
   try {
     write(tmp);
     fs::rename(tmp, target);

@@ -1,0 +1,19 @@
+// The subcommands of `relight`. Each add_* registers its options on the parent app
+// and sets `action` to the function that runs it after parsing.
+#pragma once
+
+#include <functional>
+
+namespace CLI {
+class App;
+}
+
+namespace relight {
+
+using Action = std::function<int()>;
+
+void add_reference_command(CLI::App& app, Action& action);
+void add_info_command(CLI::App& app, Action& action);
+void add_demo_command(CLI::App& app, Action& action);
+
+}  // namespace relight

@@ -1,0 +1,54 @@
+// `relight info SCENE.json`: counts (triangles, vertices after preparation, luminaires,
+// sensors) and the bounding box, after full validation of the scene and its files.
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/commands.h"
+#include "light/luminaire_frame.h"
+#include "scene/scene_loader.h"
+#include "trace/traced_scene.h"
+
+namespace relight {
+
+void add_info_command(CLI::App& app, Action& action) {
+  auto scene_file = std::make_shared<std::string>();
+  CLI::App* cmd = app.add_subcommand("info", "Validate a scene and print its counts and bounds");
+  cmd->add_option("scene", *scene_file, "scene JSON file")->required();
+  cmd->callback([scene_file, &action] {
+    action = [scene_file] {
+      const Scene scene = load_scene(*scene_file);
+      const std::vector<PlacedLuminaire> luminaires = place_luminaires(scene);  // validates files
+      const PreparedMesh mesh = prepare_scene_mesh(scene);
+      std::size_t portals = 0;
+      for (const Material& m : scene.materials) portals += m.portal ? 1 : 0;
+      const Bounds b = scene.bounds();
+      char box[256];
+      std::snprintf(box, sizeof box, "[%.4g, %.4g, %.4g] .. [%.4g, %.4g, %.4g] m", b.min.x, b.min.y,
+                    b.min.z, b.max.x, b.max.y, b.max.z);
+      std::cout << "scene: " << scene.file.string() << "\n"
+                << "materials: " << scene.materials.size() << " (" << portals << " portal)\n"
+                << "triangles: " << scene.geometry.triangles.size() << "\n"
+                << "vertices after preparation: " << mesh.positions.size() << " ("
+                << mesh.triangles.size() << " triangles, max_edge " << scene.precompute.max_edge
+                << " m)\n"
+                << "luminaires: " << luminaires.size() << "\n"
+                << "sensors: " << scene.sensor_count() << " in " << scene.sensors.size()
+                << " sets\n"
+                << "cameras: " << scene.cameras.size() << "\n"
+                << "bounds: " << box << "\n";
+      for (std::size_t i = 0; i < luminaires.size(); ++i) {
+        char line[256];
+        std::snprintf(line, sizeof line, "  luminaire %s: %.1f lm\n",
+                      scene.luminaires[i].name.c_str(),
+                      luminaires[i].distribution.flux_lm() * scene.luminaires[i].dimmer);
+        std::cout << line;
+      }
+      return 0;
+    };
+  });
+}
+
+}  // namespace relight

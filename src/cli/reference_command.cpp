@@ -1,0 +1,144 @@
+// `relight reference SCENE.json [--spp N] [--seed S] [--sensors-out FILE.csv]
+//   [--camera NAME] [--width W --height H] [-o IMAGE.exr|IMAGE.png]
+//   [--exposure EV] [--false-color lux|luminance [--range MIN:MAX]]`
+#include <chrono>
+#include <iostream>
+#include <memory>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/commands.h"
+#include "cli/reference_run.h"
+#include "common/input_error.h"
+#include "light/luminaire_frame.h"
+#include "render/reference_tracer.h"
+#include "render/sensor_report.h"
+#include "scene/scene_loader.h"
+#include "trace/traced_scene.h"
+
+namespace relight {
+
+namespace {
+
+struct ReferenceArgs {
+  std::string scene;
+  ReferenceRequest request;
+  std::string sensors_out, camera, output, false_color, range;
+  double exposure = 0;
+  std::uint64_t seed = 1;
+};
+
+}  // namespace
+
+void run_reference(const Scene& scene, const ReferenceRequest& request) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<PlacedLuminaire> luminaires = place_luminaires(scene);
+  // The reference traces the surfaces as they are: no subdivision for receivers.
+  PreparationSettings preparation;
+  preparation.max_edge = 0;
+  preparation.crease_deg = scene.precompute.crease_deg;
+  const PreparedMesh mesh = prepare_mesh(scene.geometry, preparation);
+  const TracedScene traced = build_traced_scene(mesh, scene.materials);
+  const ReferenceScene ref = make_reference_scene(scene, mesh, traced, luminaires);
+  ReferenceSettings settings;
+  settings.spp = request.spp;
+  settings.seed = request.seed;
+  settings.progress = request.progress;
+
+  // Validate the camera before spending time on sensors.
+  std::optional<Camera> camera;
+  if (!request.images.empty()) {
+    if (request.camera) {
+      const Camera* c = scene.find_camera(*request.camera);
+      if (!c) fail_input("--camera", "scene has no camera named \"" + *request.camera + "\"");
+      camera = *c;
+    } else {
+      camera = scene.cameras.empty() ? default_camera(scene.bounds()) : scene.cameras.front();
+    }
+  }
+
+  if (request.sensors && scene.sensor_count() > 0) {
+    const std::vector<Rgb> e = reference_sensor_illuminance(scene, ref, settings);
+    print_sensor_statistics(std::cout, sensor_statistics(scene, e));
+    if (request.sensors_out) {
+      write_sensor_csv(*request.sensors_out, scene, e);
+      std::cout << "wrote " << request.sensors_out->string() << "\n";
+    }
+  } else if (request.sensors_out) {
+    fail_input(scene.file.string(), "--sensors-out given but the scene has no sensors");
+  }
+
+  if (camera) {
+    const PinholeCamera pinhole = make_pinhole_camera(*camera, request.width, request.height);
+    const ReferenceImages images = reference_render(pinhole, ref, settings);
+    for (const ImageOutput& out : request.images) {
+      const bool lux =
+          out.display.false_color && out.display.false_color->quantity == Quantity::kIlluminance;
+      const DisplayReport report =
+          write_image(out.file, lux ? images.illuminance : images.luminance, out.display);
+      std::cout << "wrote " << out.file.string() << " (" << request.width << "x" << request.height
+                << ", " << request.spp << " spp, camera " << camera->name;
+      if (report.exposure_ev) std::cout << ", EV " << *report.exposure_ev;
+      std::cout << ")\n";
+    }
+  }
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::cout << "reference finished in " << seconds << " s\n";
+}
+
+std::optional<FalseColor> parse_false_color(const std::string& quantity, const std::string& range) {
+  if (quantity.empty()) {
+    if (!range.empty()) fail_input("--range", "needs --false-color lux|luminance");
+    return std::nullopt;
+  }
+  FalseColor f;
+  f.quantity = quantity == "lux" ? Quantity::kIlluminance : Quantity::kLuminance;
+  if (!range.empty()) {
+    const RangeArgument r = parse_range(range);
+    f.min = r.min;
+    f.max = r.max;
+  }
+  return f;
+}
+
+void add_reference_command(CLI::App& app, Action& action) {
+  auto args = std::make_shared<ReferenceArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "reference", "Monte Carlo path tracing of a scene: sensor illuminance and/or an image");
+  cmd->add_option("scene", args->scene, "scene JSON file")->required();
+  cmd->add_option("--spp", args->request.spp, "samples per sensor and per pixel")
+      ->check(CLI::Range(1, 1 << 24));
+  cmd->add_option("--seed", args->seed, "random seed (results are deterministic per seed)");
+  cmd->add_option("--sensors-out", args->sensors_out, "write sensor illuminance CSV here");
+  cmd->add_option("--camera", args->camera, "scene camera to render (default: the first)");
+  cmd->add_option("--width", args->request.width, "image width in pixels")
+      ->check(CLI::Range(1, 16384));
+  cmd->add_option("--height", args->request.height, "image height in pixels")
+      ->check(CLI::Range(1, 16384));
+  cmd->add_option("-o,--output", args->output, "image to write (.png or .exr)");
+  cmd->add_option("--exposure", args->exposure, "exposure EV100 for PNG (default: automatic)");
+  cmd->add_option("--false-color", args->false_color, "false colour view: lux or luminance")
+      ->check(CLI::IsMember({"lux", "luminance"}));
+  cmd->add_option("--range", args->range, "false colour range MIN:MAX in lx or cd/m2");
+  cmd->add_flag("!--no-progress", args->request.progress, "no progress bar");
+  cmd->callback([cmd, args, &action] {
+    action = [cmd, args] {
+      ReferenceRequest request = args->request;
+      request.seed = args->seed;
+      if (!args->sensors_out.empty()) request.sensors_out = args->sensors_out;
+      if (!args->camera.empty()) request.camera = args->camera;
+      if (!args->output.empty()) {
+        ImageOutput out{args->output, {}};
+        if (cmd->count("--exposure")) out.display.exposure_ev = args->exposure;
+        out.display.false_color = parse_false_color(args->false_color, args->range);
+        request.images.push_back(out);
+      }
+      request.sensors = request.sensors_out.has_value() || request.images.empty();
+      run_reference(load_scene(args->scene), request);
+      return 0;
+    };
+  });
+}
+
+}  // namespace relight

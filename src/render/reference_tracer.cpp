@@ -1,0 +1,173 @@
+#include "render/reference_tracer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "common/progress.h"
+#include "math/frame.h"
+#include "math/sampling.h"
+
+namespace relight {
+
+namespace {
+
+// Keeps the shadow ray from reaching a luminaire that sits on a surface.
+constexpr double kLightMargin = 1e-4;  // m
+
+Rgb direct_illuminance(const ReferenceScene& ref, Vec3 p, Vec3 n) {
+  Rgb e;
+  const Vec3 origin = offset_from_surface(p, n);
+  for (const PlacedLuminaire& l : ref.luminaires) {
+    const Vec3 d = l.position - origin;
+    const double dist2 = dot(d, d);
+    const double dist = std::sqrt(dist2);
+    if (dist <= kLightMargin) continue;
+    const Vec3 w = d / dist;
+    const double cos_theta = dot(n, w);
+    if (cos_theta <= 0) continue;
+    const Rgb intensity = l.intensity_toward(-w);
+    if (max_component(intensity) <= 0) continue;
+    if (ref.traced.opaque.occluded({origin, w, 0, dist - kLightMargin})) continue;
+    e += intensity * (cos_theta / dist2);
+  }
+  return e;
+}
+
+struct SurfaceHit {
+  Vec3 position;
+  Vec3 normal;
+  Rgb albedo;
+};
+
+// The first front-facing opaque surface along the ray; false for misses and back faces.
+bool trace_surface(const ReferenceScene& ref, const Ray& ray, SurfaceHit& out) {
+  const RayHit hit = ref.traced.opaque.intersect(ray);
+  if (!hit.hit()) return false;
+  const Vec3 n = geometric_normal(ref.mesh, hit.triangle);
+  if (dot(n, ray.direction) >= 0) return false;  // back sides absorb
+  out = {point_on_triangle(ref.mesh, hit.triangle, hit.u, hit.v), n,
+         ref.triangle_albedo[hit.triangle]};
+  return true;
+}
+
+Vec3 cosine_direction(Vec3 n, Pcg32& rng) {
+  const double u1 = rng.next_double(), u2 = rng.next_double();
+  return frame_from_normal(n).to_world(sample_cosine_hemisphere(u1, u2));
+}
+
+// Luminance arriving at `origin` from direction `dir` (light reflected by the scene).
+Rgb incident_luminance(const ReferenceScene& ref, Vec3 origin, Vec3 dir, Pcg32& rng,
+                       int max_depth) {
+  Rgb result, throughput{1, 1, 1};
+  Ray ray{origin, dir};
+  for (int depth = 0; depth < max_depth; ++depth) {
+    SurfaceHit s;
+    if (!trace_surface(ref, ray, s)) break;
+    // L = ρ/π E_direct + ρ · L_in(next): next-event estimation, then continue.
+    result += throughput * s.albedo * direct_illuminance(ref, s.position, s.normal) * (1 / kPi);
+    throughput = throughput * s.albedo;
+    const double survive = std::min(1.0, max_component(s.albedo));
+    if (survive <= 0 || rng.next_double() >= survive) break;
+    throughput *= 1 / survive;
+    ray = {offset_from_surface(s.position, s.normal), cosine_direction(s.normal, rng)};
+  }
+  return result;
+}
+
+// One-sample estimate of E at a front surface point: exact direct + π · L_in(cos-sampled).
+Rgb illuminance_sample(const ReferenceScene& ref, Vec3 p, Vec3 n, const Rgb& direct, Pcg32& rng,
+                       int max_depth) {
+  const Vec3 origin = offset_from_surface(p, n);
+  return direct + incident_luminance(ref, origin, cosine_direction(n, rng), rng, max_depth) * kPi;
+}
+
+}  // namespace
+
+ReferenceScene make_reference_scene(const Scene& scene, const PreparedMesh& mesh,
+                                    const TracedScene& traced,
+                                    const std::vector<PlacedLuminaire>& luminaires) {
+  ReferenceScene ref{mesh, traced, luminaires, {}};
+  ref.triangle_albedo.reserve(mesh.triangles.size());
+  for (std::uint32_t m : mesh.triangle_material) {
+    ref.triangle_albedo.push_back(scene.materials.at(m).albedo);
+  }
+  return ref;
+}
+
+std::vector<Rgb> reference_sensor_illuminance(const Scene& scene, const ReferenceScene& ref,
+                                              const ReferenceSettings& settings) {
+  struct Point {
+    Vec3 p, n;
+  };
+  std::vector<Point> points;
+  for (const SensorSet& s : scene.sensors) {
+    for (const Vec3& p : s.points) points.push_back({p, s.normal});
+  }
+  std::vector<Rgb> result(points.size());
+  Progress progress("reference sensors", points.size(), settings.progress);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size()), [&](const auto& range) {
+    for (std::size_t i = range.begin(); i != range.end(); ++i) {
+      Pcg32 rng(settings.seed, i);
+      const Rgb direct = direct_illuminance(ref, points[i].p, points[i].n);
+      Rgb indirect;
+      for (int s = 0; s < settings.spp; ++s) {
+        const Vec3 origin = offset_from_surface(points[i].p, points[i].n);
+        indirect += incident_luminance(ref, origin, cosine_direction(points[i].n, rng), rng,
+                                       settings.max_depth);
+      }
+      result[i] = direct + indirect * (kPi / settings.spp);
+      progress.advance();
+    }
+  });
+  progress.finish();
+  return result;
+}
+
+ReferenceImages reference_render(const PinholeCamera& camera, const ReferenceScene& ref,
+                                 const ReferenceSettings& settings) {
+  const int w = camera.width, h = camera.height;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  ReferenceImages out{{w, h, std::vector<Rgb>(static_cast<std::size_t>(w) * h)},
+                      {w, h, std::vector<Rgb>(static_cast<std::size_t>(w) * h)}};
+  // Sensor streams use indices below 2^40; pixel streams start above, so a pixel never
+  // repeats a sensor's random sequence.
+  constexpr std::uint64_t kPixelStreams = std::uint64_t{1} << 40;
+  Progress progress("reference image", static_cast<std::uint64_t>(h), settings.progress);
+  tbb::parallel_for(tbb::blocked_range<int>(0, h), [&](const tbb::blocked_range<int>& rows) {
+    for (int y = rows.begin(); y != rows.end(); ++y) {
+      for (int x = 0; x < w; ++x) {
+        const std::size_t index = static_cast<std::size_t>(y) * w + x;
+        Pcg32 rng(settings.seed, kPixelStreams + index);
+        Rgb e_sum, l_sum;
+        int covered = 0;
+        for (int s = 0; s < settings.spp; ++s) {
+          const double jx = rng.next_double(), jy = rng.next_double();
+          SurfaceHit hit;
+          if (!trace_surface(ref, {camera.eye, camera.direction(x + jx, y + jy)}, hit)) continue;
+          const Rgb direct = direct_illuminance(ref, hit.position, hit.normal);
+          const Rgb e =
+              illuminance_sample(ref, hit.position, hit.normal, direct, rng, settings.max_depth);
+          e_sum += e;
+          l_sum += hit.albedo * e * (1 / kPi);
+          ++covered;
+        }
+        if (covered == 0) {
+          out.luminance.pixels[index] = out.illuminance.pixels[index] = {nan, nan, nan};
+        } else {
+          // Pixels partly covering the background average over all samples (black there).
+          out.luminance.pixels[index] = l_sum / settings.spp;
+          out.illuminance.pixels[index] = e_sum / covered;
+        }
+      }
+      progress.advance();
+    }
+  });
+  progress.finish();
+  return out;
+}
+
+}  // namespace relight

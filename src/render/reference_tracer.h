@@ -1,0 +1,58 @@
+// `relight reference`: an independent Monte Carlo path tracer (ARCHITECTURE §4.7).
+// Diffuse surfaces that reflect on their front side (back sides absorb), point
+// luminaires with their full intensity distribution reached by next-event estimation,
+// cosine-weighted continuation and Russian roulette on the albedo, deterministic
+// per-sample random streams. It shares only the scene loader and the ray tracer with the
+// transfer code, so accuracy tests can catch transfer bugs.
+//
+// Estimators: at a surface point x of albedo ρ, outgoing luminance
+//   L(x) = ρ/π · E(x),  E(x) = E_direct(x) + π · E_ω~cos[L_in(x, ω)],
+// with E_direct = Σ_lights V · I(−ω) · cos θ / d². Sensors report E; pixels report L (and
+// E for false-colour illuminance views).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "light/luminaire_frame.h"
+#include "math/rgb.h"
+#include "render/camera.h"
+#include "render/image.h"
+#include "scene/mesh_preparation.h"
+#include "scene/scene.h"
+#include "trace/traced_scene.h"
+
+namespace relight {
+
+struct ReferenceSettings {
+  int spp = 64;  // samples per sensor / per pixel
+  std::uint64_t seed = 1;
+  int max_depth = 1000;  // safety bound; Russian roulette ends paths long before
+  bool progress = true;
+};
+
+// Everything the tracer reads; built once per scene.
+struct ReferenceScene {
+  const PreparedMesh& mesh;
+  const TracedScene& traced;
+  const std::vector<PlacedLuminaire>& luminaires;
+  std::vector<Rgb> triangle_albedo;
+};
+
+ReferenceScene make_reference_scene(const Scene& scene, const PreparedMesh& mesh,
+                                    const TracedScene& traced,
+                                    const std::vector<PlacedLuminaire>& luminaires);
+
+// Illuminance (lux per channel) at every sensor point, in scene order (set by set).
+std::vector<Rgb> reference_sensor_illuminance(const Scene& scene, const ReferenceScene& ref,
+                                              const ReferenceSettings& settings);
+
+struct ReferenceImages {
+  Image luminance;    // cd/m² per channel; NaN where no front surface is seen
+  Image illuminance;  // lux per channel at the seen surface; NaN likewise
+};
+
+ReferenceImages reference_render(const PinholeCamera& camera, const ReferenceScene& ref,
+                                 const ReferenceSettings& settings);
+
+}  // namespace relight

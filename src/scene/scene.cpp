@@ -1,0 +1,28 @@
+#include "scene/scene.h"
+
+namespace relight {
+
+Bounds Scene::bounds() const {
+  if (geometry.positions.empty()) return {};
+  Bounds b{geometry.positions.front(), geometry.positions.front()};
+  for (const Vec3& p : geometry.positions) {
+    b.min = min(b.min, p);
+    b.max = max(b.max, p);
+  }
+  return b;
+}
+
+std::size_t Scene::sensor_count() const {
+  std::size_t n = 0;
+  for (const SensorSet& s : sensors) n += s.points.size();
+  return n;
+}
+
+const Camera* Scene::find_camera(const std::string& name) const {
+  for (const Camera& c : cameras) {
+    if (c.name == name) return &c;
+  }
+  return nullptr;
+}
+
+}  // namespace relight

@@ -1,0 +1,81 @@
+// The scene as loaded from JSON (docs/scene-format.md): materials, world-space
+// triangles, luminaires, sensors, cameras and precompute settings. Metres, right-handed,
+// y up. Plain data; light/ turns luminaire distributions into evaluable photometry and
+// mesh_preparation.h turns the triangles into per-vertex receivers.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "math/rgb.h"
+#include "math/vec3.h"
+#include "scene/distribution_spec.h"
+#include "scene/triangle_soup.h"
+
+namespace relight {
+
+struct Material {
+  std::string name;
+  Rgb albedo{0.5, 0.5, 0.5};  // diffuse reflectance, linear, 0..1
+  bool portal = false;        // window glass: an opening to the exterior (daylight issue)
+};
+
+// A point luminaire with a type-C distribution. The photometric frame: γ = 0 along
+// `aim`, the C0 half-plane contains `c0`, and C angles increase counter-clockwise
+// seen from behind the luminaire (from above for a downlight): C90 = cross(c0, aim).
+struct Luminaire {
+  std::string name;
+  Vec3 position;
+  Vec3 aim{0, -1, 0};   // unit
+  Vec3 c0{1, 0, 0};     // unit, orthogonal to aim
+  Rgb color{1, 1, 1};   // chromaticity only: normalised so that luminance(color) == 1
+  double dimmer = 1.0;  // 0..1 multiplier on the photometry
+  DistributionSpec distribution;
+  std::string where;  // "FILE:JSON-PATH", for messages
+};
+
+struct SensorSet {
+  std::string name;
+  std::vector<Vec3> points;
+  Vec3 normal{0, 1, 0};  // unit; every point of the set faces this way
+  // Grid layout when the set came from a grid (index j*nu + i), 0 otherwise.
+  int nu = 0, nv = 0;
+};
+
+struct Camera {
+  std::string name;
+  Vec3 eye, target, up{0, 1, 0};
+  double fov_deg = 60;  // vertical field of view
+};
+
+struct PrecomputeSettings {
+  double max_edge = 0.25;   // m: mesh subdivision bound for per-vertex transfer
+  int sh_order = 8;         // SH bands for indirect luminaire transfer (l < sh_order)
+  double crease_deg = 30;   // smooth normals within this angle, split beyond
+  int gather_rays = 256;    // rays per receiver for the gather operator
+  double tolerance = 1e-4;  // relative change that ends the bounce iteration
+  int max_bounces = 100;
+  std::string direct = "exact";  // "exact" | "sh" (the lighting-design paper's mode)
+};
+
+struct Bounds {
+  Vec3 min{0, 0, 0}, max{0, 0, 0};
+};
+
+struct Scene {
+  std::filesystem::path file;  // the scene file (for messages and relative paths)
+  std::vector<Material> materials;
+  TriangleSoup geometry;  // world space; triangle_material indexes `materials`
+  std::vector<Luminaire> luminaires;
+  std::vector<SensorSet> sensors;
+  std::vector<Camera> cameras;
+  PrecomputeSettings precompute;
+
+  Bounds bounds() const;
+  std::size_t sensor_count() const;
+  const Camera* find_camera(const std::string& name) const;
+};
+
+}  // namespace relight

@@ -1,0 +1,328 @@
+#include "scene/scene_loader.h"
+
+#include <cmath>
+#include <map>
+#include <set>
+
+#include "common/input_error.h"
+#include "scene/mesh_import.h"
+#include "scene/primitives.h"
+
+namespace relight {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Loader {
+  Scene scene;
+  fs::path base_dir;
+  std::map<std::string, std::uint32_t> material_index;
+
+  std::uint32_t material_named(const JsonNode& node) {
+    const std::string name = node.string();
+    const auto it = material_index.find(name);
+    if (it == material_index.end()) node.fail("unknown material \"" + name + "\"");
+    return it->second;
+  }
+
+  std::uint32_t add_material(Material m) {
+    const auto index = static_cast<std::uint32_t>(scene.materials.size());
+    material_index.emplace(m.name, index);
+    scene.materials.push_back(std::move(m));
+    return index;
+  }
+
+  fs::path existing_file(const JsonNode& node) const {
+    const fs::path relative = node.string();
+    const fs::path path = relative.is_absolute() ? relative : base_dir / relative;
+    if (!fs::is_regular_file(path)) node.fail("file not found: " + path.string());
+    return path;
+  }
+
+  void load_materials(const JsonNode& node) {
+    if (!node.is_object()) node.fail("expected an object mapping names to materials");
+    for (const auto& [name, unused] : node.value().items()) {
+      const JsonNode m = node.at(name);
+      m.expect_keys({"albedo", "portal"});
+      Material material{name, m.at("albedo").rgb_in_unit_range(), false};
+      if (const auto portal = m.find("portal")) material.portal = portal->boolean();
+      add_material(std::move(material));
+    }
+  }
+
+  static Facing facing(const JsonNode& g) {
+    const auto n = g.find("normals");
+    if (!n) return Facing::kOutward;
+    const std::string s = n->string();
+    if (s == "outward") return Facing::kOutward;
+    if (s == "inward") return Facing::kInward;
+    n->fail("expected \"inward\" or \"outward\", got \"" + s + "\"");
+  }
+
+  static Vec3 rotate_xyz(Vec3 p, Vec3 deg) {
+    // Rotations about x, then y, then z (degrees, right-handed): R = Rz·Ry·Rx.
+    const double cx = std::cos(radians(deg.x)), sx = std::sin(radians(deg.x));
+    const double cy = std::cos(radians(deg.y)), sy = std::sin(radians(deg.y));
+    const double cz = std::cos(radians(deg.z)), sz = std::sin(radians(deg.z));
+    p = {p.x, cx * p.y - sx * p.z, sx * p.y + cx * p.z};
+    p = {cy * p.x + sy * p.z, p.y, -sy * p.x + cy * p.z};
+    return {cz * p.x - sz * p.y, sz * p.x + cz * p.y, p.z};
+  }
+
+  TriangleSoup load_mesh(const JsonNode& g) {
+    g.expect_keys({"type", "file", "translate", "rotate_deg", "scale", "material"});
+    const JsonNode file_node = g.at("file");
+    const ImportedMesh mesh = import_mesh(existing_file(file_node));
+    const Vec3 translate = g.find("translate") ? g.at("translate").vec3() : Vec3{};
+    const Vec3 rotate = g.find("rotate_deg") ? g.at("rotate_deg").vec3() : Vec3{};
+    Vec3 scale{1, 1, 1};
+    if (const auto s = g.find("scale")) {
+      if (s->value().is_array()) {
+        scale = s->vec3();
+        if (!(scale.x > 0 && scale.y > 0 && scale.z > 0)) s->fail("scale must be positive");
+      } else {
+        const double k = s->positive();
+        scale = {k, k, k};
+      }
+    }
+    TriangleSoup soup;
+    soup.positions.reserve(mesh.positions.size());
+    for (const Vec3& p : mesh.positions) {
+      const Vec3 scaled{p.x * scale.x, p.y * scale.y, p.z * scale.z};
+      soup.positions.push_back(rotate_xyz(scaled, rotate) + translate);
+    }
+    soup.triangles = mesh.triangles;
+    if (const auto m = g.find("material")) {
+      soup.triangle_material.assign(mesh.triangles.size(), material_named(*m));
+    } else {
+      // The file's own materials, named "FILE/NAME" in the scene.
+      std::vector<std::uint32_t> remap;
+      for (const ImportedMaterial& im : mesh.materials) {
+        const std::string name = file_node.string() + "/" + im.name;
+        const auto it = material_index.find(name);
+        remap.push_back(it != material_index.end() ? it->second
+                                                   : add_material({name, im.albedo, false}));
+      }
+      soup.triangle_material.reserve(mesh.triangle_material.size());
+      for (std::uint32_t m : mesh.triangle_material) soup.triangle_material.push_back(remap.at(m));
+    }
+    return soup;
+  }
+
+  void load_geometry(const JsonNode& node) {
+    for (const JsonNode& g : node.elements()) {
+      const std::string type = g.at("type").string();
+      if (type == "quad") {
+        g.expect_keys({"type", "corner", "u", "v", "material"});
+        const Vec3 u = g.at("u").vec3(), v = g.at("v").vec3();
+        if (length(cross(u, v)) < 1e-12) g.fail("quad edges u and v must span an area");
+        scene.geometry.append(
+            make_quad(g.at("corner").vec3(), u, v, material_named(g.at("material"))));
+      } else if (type == "box") {
+        g.expect_keys({"type", "min", "max", "normals", "material"});
+        const Vec3 lo = g.at("min").vec3(), hi = g.at("max").vec3();
+        if (!(hi.x > lo.x && hi.y > lo.y && hi.z > lo.z)) {
+          g.at("max").fail("box max must exceed min in every axis");
+        }
+        scene.geometry.append(make_box(lo, hi, facing(g), material_named(g.at("material"))));
+      } else if (type == "sphere") {
+        g.expect_keys({"type", "center", "radius", "normals", "subdivisions", "material"});
+        const int subdivisions = g.find("subdivisions") ? g.at("subdivisions").integer_in(0, 7) : 5;
+        scene.geometry.append(make_sphere(g.at("center").vec3(), g.at("radius").positive(),
+                                          facing(g), subdivisions,
+                                          material_named(g.at("material"))));
+      } else if (type == "mesh") {
+        scene.geometry.append(load_mesh(g));
+      } else {
+        g.at("type").fail("unknown geometry type \"" + type +
+                          "\" (expected quad, box, sphere or mesh)");
+      }
+    }
+  }
+
+  void load_luminaires(const JsonNode& node) {
+    std::set<std::string> names;
+    for (const JsonNode& l : node.elements()) {
+      l.expect_keys({"name", "position", "aim", "c0", "color", "dimmer", "distribution"});
+      Luminaire lum;
+      lum.where = l.where();
+      lum.name = l.at("name").string();
+      if (lum.name.empty()) l.at("name").fail("name must not be empty");
+      if (!names.insert(lum.name).second)
+        l.at("name").fail("duplicate luminaire \"" + lum.name + "\"");
+      lum.position = l.at("position").vec3();
+      if (const auto aim = l.find("aim")) lum.aim = aim->direction();
+      const Vec3 hint = l.find("c0") ? l.at("c0").direction() : default_c0(lum.aim);
+      const Vec3 c0 = hint - lum.aim * dot(hint, lum.aim);
+      if (length(c0) < 1e-6) l.at("c0").fail("c0 must not be parallel to aim");
+      lum.c0 = normalize(c0);
+      if (const auto c = l.find("color")) {
+        const Rgb color = c->rgb_non_negative();
+        if (!(luminance(color) > 0)) c->fail("colour must have a positive luminance");
+        lum.color = color / luminance(color);
+      }
+      if (const auto d = l.find("dimmer")) lum.dimmer = d->number_at_least(0);
+      lum.distribution = parse_distribution(l.at("distribution"), base_dir);
+      scene.luminaires.push_back(std::move(lum));
+    }
+  }
+
+  static Vec3 default_c0(Vec3 aim) {
+    // C0 along world +x, or -z for luminaires aimed along x.
+    return std::abs(aim.x) > 0.999 ? Vec3{0, 0, -1} : Vec3{1, 0, 0};
+  }
+
+  void load_sensors(const JsonNode& node) {
+    std::set<std::string> names;
+    for (const JsonNode& s : node.elements()) {
+      s.expect_keys({"name", "grid", "points", "normal"});
+      SensorSet set;
+      set.name = s.at("name").string();
+      if (!names.insert(set.name).second)
+        s.at("name").fail("duplicate sensor set \"" + set.name + "\"");
+      if (const auto n = s.find("normal")) set.normal = n->direction();
+      const bool grid = s.has("grid"), points = s.has("points");
+      if (grid == points) s.fail("a sensor set needs exactly one of \"grid\" or \"points\"");
+      if (grid) {
+        const JsonNode g = s.at("grid");
+        g.expect_keys({"corner", "u", "v", "nu", "nv"});
+        const Vec3 corner = g.at("corner").vec3(), u = g.at("u").vec3(), v = g.at("v").vec3();
+        set.nu = g.at("nu").integer_in(1, 100000);
+        set.nv = g.at("nv").integer_in(1, 100000);
+        if (static_cast<long long>(set.nu) * set.nv > 50'000'000)
+          g.fail("grid has too many points");
+        for (int j = 0; j < set.nv; ++j) {
+          for (int i = 0; i < set.nu; ++i) {
+            set.points.push_back(corner + u * ((i + 0.5) / set.nu) + v * ((j + 0.5) / set.nv));
+          }
+        }
+      } else {
+        for (const JsonNode& p : s.at("points").elements()) set.points.push_back(p.vec3());
+        if (set.points.empty()) s.at("points").fail("expected at least one point");
+      }
+      scene.sensors.push_back(std::move(set));
+    }
+  }
+
+  void load_cameras(const JsonNode& node) {
+    std::set<std::string> names;
+    for (const JsonNode& c : node.elements()) {
+      c.expect_keys({"name", "eye", "target", "up", "fov_deg"});
+      Camera cam;
+      cam.name = c.at("name").string();
+      if (!names.insert(cam.name).second)
+        c.at("name").fail("duplicate camera \"" + cam.name + "\"");
+      cam.eye = c.at("eye").vec3();
+      cam.target = c.at("target").vec3();
+      if (length(cam.target - cam.eye) < 1e-9) c.at("target").fail("target must differ from eye");
+      if (const auto up = c.find("up")) cam.up = up->direction();
+      if (length(cross(cam.up, cam.target - cam.eye)) < 1e-9)
+        c.at("up").fail("up is parallel to the view direction");
+      if (const auto f = c.find("fov_deg")) {
+        cam.fov_deg = f->positive();
+        if (cam.fov_deg >= 180) f->fail("fov_deg must be below 180");
+      }
+      scene.cameras.push_back(std::move(cam));
+    }
+  }
+
+  void load_precompute(const JsonNode& p) {
+    p.expect_keys({"max_edge", "sh_order", "crease_deg", "gather_rays", "tolerance", "max_bounces",
+                   "direct"});
+    PrecomputeSettings& s = scene.precompute;
+    if (const auto n = p.find("max_edge")) s.max_edge = n->positive();
+    if (const auto n = p.find("sh_order")) s.sh_order = n->integer_in(1, 32);
+    if (const auto n = p.find("crease_deg")) {
+      s.crease_deg = n->number_at_least(0);
+      if (s.crease_deg > 180) n->fail("crease_deg must be at most 180");
+    }
+    if (const auto n = p.find("gather_rays")) s.gather_rays = n->integer_in(1, 1 << 20);
+    if (const auto n = p.find("tolerance")) s.tolerance = n->positive();
+    if (const auto n = p.find("max_bounces")) s.max_bounces = n->integer_in(0, 100000);
+    if (const auto n = p.find("direct")) {
+      s.direct = n->string();
+      if (s.direct != "exact" && s.direct != "sh") n->fail("expected \"exact\" or \"sh\"");
+    }
+  }
+};
+
+}  // namespace
+
+DistributionSpec parse_distribution(const JsonNode& node, const fs::path& base_dir) {
+  DistributionSpec d;
+  d.where = node.where();
+  const std::string type = node.at("type").string();
+  auto resolve = [&](const JsonNode& f) {
+    const fs::path relative = f.string();
+    const fs::path path = relative.is_absolute() ? relative : base_dir / relative;
+    if (!fs::is_regular_file(path)) f.fail("file not found: " + path.string());
+    return path;
+  };
+  if (type == "isotropic") {
+    node.expect_keys({"type", "candela"});
+    d.type = DistributionType::kIsotropic;
+    d.candela = node.at("candela").number_at_least(0);
+  } else if (type == "cosine_power") {
+    node.expect_keys({"type", "candela", "exponent", "cutoff_deg"});
+    d.type = DistributionType::kCosinePower;
+    d.candela = node.at("candela").number_at_least(0);
+    d.exponent = node.at("exponent").number_at_least(0);
+    if (const auto c = node.find("cutoff_deg")) {
+      d.cutoff_deg = c->positive();
+      if (d.cutoff_deg > 180) c->fail("cutoff_deg must be at most 180");
+    }
+  } else if (type == "curve") {
+    node.expect_keys({"type", "gamma_deg", "candela"});
+    d.type = DistributionType::kCurve;
+    d.gamma_deg = node.at("gamma_deg").numbers();
+    d.curve_candela = node.at("candela").numbers();
+    if (d.gamma_deg.size() < 2) node.at("gamma_deg").fail("expected at least 2 control points");
+    if (d.gamma_deg.size() != d.curve_candela.size()) {
+      node.at("candela").fail("expected as many values as gamma_deg (" +
+                              std::to_string(d.gamma_deg.size()) + ")");
+    }
+    if (d.gamma_deg.front() != 0) node.at("gamma_deg").fail("the first control point must be at 0");
+    for (std::size_t i = 1; i < d.gamma_deg.size(); ++i) {
+      if (!(d.gamma_deg[i] > d.gamma_deg[i - 1])) node.at("gamma_deg").fail("angles must ascend");
+    }
+    if (d.gamma_deg.back() > 180) node.at("gamma_deg").fail("angles must not exceed 180");
+    for (double c : d.curve_candela) {
+      if (c < 0) node.at("candela").fail("intensities must not be negative");
+    }
+  } else if (type == "ies" || type == "ldt") {
+    node.expect_keys({"type", "file"});
+    d.type = type == "ies" ? DistributionType::kIes : DistributionType::kLdt;
+    d.file = resolve(node.at("file"));
+  } else {
+    node.at("type").fail("unknown distribution type \"" + type +
+                         "\" (expected isotropic, cosine_power, curve, ies or ldt)");
+  }
+  return d;
+}
+
+Scene scene_from_json(const nlohmann::json& document, const fs::path& file) {
+  const JsonNode root(document, file.string(), "/");
+  root.expect_keys(
+      {"description", "materials", "geometry", "luminaires", "sensors", "cameras", "precompute"});
+  Loader loader;
+  loader.scene.file = file;
+  loader.base_dir = file.has_parent_path() ? file.parent_path() : fs::path(".");
+  if (const auto n = root.find("description")) n->string();
+  if (const auto n = root.find("materials")) loader.load_materials(*n);
+  if (const auto n = root.find("geometry")) loader.load_geometry(*n);
+  if (const auto n = root.find("luminaires")) loader.load_luminaires(*n);
+  if (const auto n = root.find("sensors")) loader.load_sensors(*n);
+  if (const auto n = root.find("cameras")) loader.load_cameras(*n);
+  if (const auto n = root.find("precompute")) loader.load_precompute(*n);
+  for (const Vec3& p : loader.scene.geometry.positions) {
+    if (!is_finite(p)) root.at("geometry").fail("geometry has a non-finite coordinate");
+  }
+  return std::move(loader.scene);
+}
+
+Scene load_scene(const fs::path& file) {
+  return scene_from_json(read_json_file(file), file);
+}
+
+}  // namespace relight

@@ -1,0 +1,21 @@
+// Reads a scene JSON file (docs/scene-format.md) into a Scene, validating every value
+// and reporting "FILE:/json/pointer: reason" on bad input. Relative file paths resolve
+// against the scene file's folder.
+#pragma once
+
+#include <filesystem>
+
+#include "scene/json_node.h"
+#include "scene/scene.h"
+
+namespace relight {
+
+Scene load_scene(const std::filesystem::path& file);
+// The same from an already parsed document; `file` names it in messages and gives the
+// folder for relative paths.
+Scene scene_from_json(const nlohmann::json& document, const std::filesystem::path& file);
+
+// Parses a distribution object D (shared with run-time lighting states).
+DistributionSpec parse_distribution(const JsonNode& node, const std::filesystem::path& base_dir);
+
+}  // namespace relight

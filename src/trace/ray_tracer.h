@@ -1,0 +1,61 @@
+// Ray casting through Embree 3 (ARCHITECTURE §5): one BVH over a set of triangles,
+// single-ray rtcIntersect1 / rtcOccluded1, safe to call from many threads at once
+// (callers parallelise with oneTBB). Returned triangle ids are the caller's.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <vector>
+
+#include "math/vec3.h"
+#include "scene/triangle_soup.h"
+
+struct RTCDeviceTy;
+struct RTCSceneTy;
+
+namespace relight {
+
+inline constexpr std::uint32_t kNoHit = std::numeric_limits<std::uint32_t>::max();
+
+struct Ray {
+  Vec3 origin;
+  Vec3 direction;  // need not be unit; t is in units of |direction|
+  double t_near = 0;
+  double t_far = std::numeric_limits<double>::infinity();
+};
+
+struct RayHit {
+  std::uint32_t triangle = kNoHit;  // the caller's id of the hit triangle
+  double t = 0;
+  double u = 0, v = 0;  // barycentrics of vertices 1 and 2; vertex 0 has 1 - u - v
+  bool hit() const { return triangle != kNoHit; }
+};
+
+class RayTracer {
+ public:
+  // Builds the BVH over `triangles` (indices into `positions`); hit ids are ids[i]
+  // for triangles[i]. An empty set is valid and never hits.
+  RayTracer(const std::vector<Vec3>& positions, const std::vector<Triangle>& triangles,
+            const std::vector<std::uint32_t>& ids);
+  ~RayTracer();
+  RayTracer(RayTracer&&) noexcept;
+  RayTracer& operator=(RayTracer&&) noexcept;
+  RayTracer(const RayTracer&) = delete;
+  RayTracer& operator=(const RayTracer&) = delete;
+
+  RayHit intersect(const Ray& ray) const;
+  bool occluded(const Ray& ray) const;
+  std::size_t triangle_count() const { return ids_.size(); }
+
+ private:
+  struct Handles;
+  std::unique_ptr<Handles> handles_;
+  std::vector<std::uint32_t> ids_;
+};
+
+// Start point for a secondary ray leaving a surface at p with unit normal n, pushed off
+// the surface to avoid self-intersection in Embree's single precision.
+Vec3 offset_from_surface(Vec3 p, Vec3 n);
+
+}  // namespace relight

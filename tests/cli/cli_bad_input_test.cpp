@@ -1,0 +1,138 @@
+// The exit-code contract: bad input or arguments exit 2 with exactly one line
+// "error: FILE[:LINE|JSON-PATH]: reason" on stderr, never a crash.
+#include <gtest/gtest.h>
+
+#include "run_command.h"
+
+namespace relight {
+namespace {
+
+using testing::run_relight;
+using testing::TempDir;
+
+const char* kRoom = R"({
+  "materials": { "white": { "albedo": [0.7, 0.7, 0.7] } },
+  "geometry": [ { "type": "box", "min": [0,0,0], "max": [3,2.5,3], "normals": "inward",
+                  "material": "white" } ],
+  "luminaires": [ { "name": "down", "position": [1.5, 2.4, 1.5],
+                    "distribution": { "type": "DIST" } } ],
+  "sensors": [ { "name": "floor", "points": [[1.5, 0, 1.5]] } ]
+})";
+
+std::string room_with(const std::string& distribution) {
+  std::string s = kRoom;
+  s.replace(s.find("\"type\": \"DIST\""), 14, distribution);
+  return s;
+}
+
+// Exit 2, one line on stderr, starting "error: " + prefix.
+void expect_input_error(const testing::CommandResult& r, const std::string& prefix) {
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(r.err.rfind("error: " + prefix, 0), 0u) << r.err;
+  ASSERT_FALSE(r.err.empty());
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "more than one line: " << r.err;
+}
+
+TEST(CliBadInput, MalformedJson) {
+  TempDir dir;
+  const auto scene =
+      dir.write("s.json", "{ \"materials\": {\n  \"white\": { \"albedo\": [1,1,] }\n}\n");
+  expect_input_error(run_relight("info '" + scene.string() + "'"),
+                     scene.string() + ":2: malformed JSON");
+}
+
+TEST(CliBadInput, UnknownKey) {
+  TempDir dir;
+  std::string text = room_with(R"("type": "isotropic", "candela": 10, "lumens": 3)");
+  const auto scene = dir.write("s.json", text);
+  expect_input_error(run_relight("info '" + scene.string() + "'"),
+                     scene.string() + ":/luminaires/0/distribution/lumens: unknown key");
+}
+
+TEST(CliBadInput, MissingSceneFile) {
+  TempDir dir;
+  const auto scene = dir.path() / "absent.json";
+  expect_input_error(run_relight("reference '" + scene.string() + "'"),
+                     scene.string() + ": cannot open");
+}
+
+TEST(CliBadInput, MissingPhotometryFile) {
+  TempDir dir;
+  const auto scene = dir.write("s.json", room_with(R"("type": "ies", "file": "nowhere.ies")"));
+  expect_input_error(run_relight("info '" + scene.string() + "'"),
+                     scene.string() + ":/luminaires/0/distribution/file: file not found");
+}
+
+TEST(CliBadInput, NegativeSize) {
+  TempDir dir;
+  std::string text = room_with(R"("type": "isotropic", "candela": 10)");
+  text.replace(text.find("\"max\": [3,2.5,3]"), 16, "\"max\": [-3,2.5,3]");
+  const auto scene = dir.write("s.json", text);
+  expect_input_error(run_relight("info '" + scene.string() + "'"),
+                     scene.string() + ":/geometry/0/max: box max must exceed min");
+}
+
+TEST(CliBadInput, NotANumber) {
+  TempDir dir;
+  // JSON has no NaN literal: a NaN written as such is malformed JSON, and so is a
+  // literal that overflows a double.
+  const auto nan_scene = dir.write("nan.json", room_with(R"("type": "isotropic", "candela": NaN)"));
+  expect_input_error(run_relight("info '" + nan_scene.string() + "'"),
+                     nan_scene.string() + ":6: malformed JSON");
+  const auto inf_scene =
+      dir.write("inf.json", room_with(R"("type": "isotropic", "candela": 1e999)"));
+  expect_input_error(run_relight("info '" + inf_scene.string() + "'"),
+                     inf_scene.string() + ":6: malformed JSON: number out of range");
+}
+
+TEST(CliBadInput, TruncatedIes) {
+  TempDir dir;
+  dir.write("cut.ies",
+            "IESNA:LM-63-2002\n[TEST] truncated\nTILT=NONE\n1 1000 1 5 1 1 2 0 0 0\n1 1 10\n"
+            "0 22.5 45\n");
+  const auto scene = dir.write("s.json", room_with(R"("type": "ies", "file": "cut.ies")"));
+  const auto r = run_relight("info '" + scene.string() + "'");
+  expect_input_error(r, (dir.path() / "cut.ies").string() + ":");
+}
+
+TEST(CliBadInput, TruncatedLdt) {
+  TempDir dir;
+  dir.write("cut.ldt", "Maker\n1\n1\n1\n0\n19\n5\nreport\nname\n");
+  const auto scene = dir.write("s.json", room_with(R"("type": "ldt", "file": "cut.ldt")"));
+  expect_input_error(run_relight("info '" + scene.string() + "'"),
+                     (dir.path() / "cut.ldt").string() + ":");
+}
+
+TEST(CliBadInput, BrokenObj) {
+  TempDir dir;
+  dir.write("broken.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n");
+  std::string text = room_with(R"("type": "isotropic", "candela": 10)");
+  text.replace(text.find("\"geometry\": ["), 13,
+               R"("geometry": [ { "type": "mesh", "file": "broken.obj", "material": "white" },)");
+  const auto scene = dir.write("s.json", text);
+  expect_input_error(run_relight("info '" + scene.string() + "'"),
+                     (dir.path() / "broken.obj").string() + ":4:");
+}
+
+TEST(CliBadInput, BadArguments) {
+  TempDir dir;
+  const auto scene = dir.write("s.json", room_with(R"("type": "isotropic", "candela": 10)"));
+  const auto r = run_relight("reference '" + scene.string() + "' --spp 0");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err.rfind("error: relight reference: --spp", 0), 0u) << r.err;
+  const auto unknown_camera = run_relight("reference '" + scene.string() + "' --camera nope -o " +
+                                          (dir.path() / "x.png").string());
+  expect_input_error(unknown_camera, "--camera: scene has no camera named \"nope\"");
+  EXPECT_EQ(run_relight("frobnicate").exit_code, 2);
+}
+
+TEST(CliHelp, EverySubcommandHasHelp) {
+  for (const char* sub : {"reference", "info", "demo"}) {
+    const auto r = run_relight(std::string(sub) + " --help");
+    EXPECT_EQ(r.exit_code, 0) << sub;
+    EXPECT_NE(r.out.find("Usage"), std::string::npos) << sub << ": " << r.out;
+  }
+}
+
+}  // namespace
+}  // namespace relight
