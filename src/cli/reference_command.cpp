@@ -2,6 +2,7 @@
 //   [--camera NAME] [--width W --height H] [-o IMAGE.exr|IMAGE.png]
 //   [--exposure EV] [--false-color lux|luminance [--range MIN:MAX]]`
 #include <chrono>
+#include <cstdio>
 #include <iostream>
 #include <memory>
 
@@ -27,6 +28,12 @@ struct ReferenceArgs {
   double exposure = 0;
   std::uint64_t seed = 1;
 };
+
+void print_rate(const char* what, const ReferenceStats& s) {
+  std::printf("reference %s: %.3g Mrays in %.2f s (%.2f Mrays/s)\n", what, s.rays * 1e-6, s.seconds,
+              s.seconds > 0 ? s.rays * 1e-6 / s.seconds : 0.0);
+  std::fflush(stdout);
+}
 
 }  // namespace
 
@@ -58,7 +65,9 @@ void run_reference(const Scene& scene, const ReferenceRequest& request) {
   }
 
   if (request.sensors && scene.sensor_count() > 0) {
-    const std::vector<Rgb> e = reference_sensor_illuminance(scene, ref, settings);
+    ReferenceStats stats;
+    const std::vector<Rgb> e = reference_sensor_illuminance(scene, ref, settings, &stats);
+    print_rate("sensors", stats);
     print_sensor_statistics(std::cout, sensor_statistics(scene, e));
     if (request.sensors_out) {
       write_sensor_csv(*request.sensors_out, scene, e);
@@ -70,7 +79,9 @@ void run_reference(const Scene& scene, const ReferenceRequest& request) {
 
   if (camera) {
     const PinholeCamera pinhole = make_pinhole_camera(*camera, request.width, request.height);
-    const ReferenceImages images = reference_render(pinhole, ref, settings);
+    ReferenceStats stats;
+    const ReferenceImages images = reference_render(pinhole, ref, settings, &stats);
+    print_rate("image", stats);
     for (const ImageOutput& out : request.images) {
       const bool lux =
           out.display.false_color && out.display.false_color->quantity == Quantity::kIlluminance;

@@ -1,6 +1,7 @@
 #include "render/reference_tracer.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 
@@ -18,7 +19,16 @@ namespace {
 // Keeps the shadow ray from reaching a luminaire that sits on a surface.
 constexpr double kLightMargin = 1e-4;  // m
 
-Rgb direct_illuminance(const ReferenceScene& ref, Vec3 p, Vec3 n) {
+// Per-sample state: the random stream and a count of rays cast (for Mrays/s).
+struct PathContext {
+  const ReferenceScene& ref;
+  Pcg32 rng;
+  int max_depth;
+  std::uint64_t rays = 0;
+};
+
+Rgb direct_illuminance(PathContext& ctx, Vec3 p, Vec3 n) {
+  const ReferenceScene& ref = ctx.ref;
   Rgb e;
   const Vec3 origin = offset_from_surface(p, n);
   for (const PlacedLuminaire& l : ref.luminaires) {
@@ -31,6 +41,7 @@ Rgb direct_illuminance(const ReferenceScene& ref, Vec3 p, Vec3 n) {
     if (cos_theta <= 0) continue;
     const Rgb intensity = l.intensity_toward(-w);
     if (max_component(intensity) <= 0) continue;
+    ++ctx.rays;
     if (ref.traced.opaque.occluded({origin, w, 0, dist - kLightMargin})) continue;
     e += intensity * (cos_theta / dist2);
   }
@@ -44,7 +55,9 @@ struct SurfaceHit {
 };
 
 // The first front-facing opaque surface along the ray; false for misses and back faces.
-bool trace_surface(const ReferenceScene& ref, const Ray& ray, SurfaceHit& out) {
+bool trace_surface(PathContext& ctx, const Ray& ray, SurfaceHit& out) {
+  const ReferenceScene& ref = ctx.ref;
+  ++ctx.rays;
   const RayHit hit = ref.traced.opaque.intersect(ray);
   if (!hit.hit()) return false;
   const Vec3 n = geometric_normal(ref.mesh, hit.triangle);
@@ -60,29 +73,27 @@ Vec3 cosine_direction(Vec3 n, Pcg32& rng) {
 }
 
 // Luminance arriving at `origin` from direction `dir` (light reflected by the scene).
-Rgb incident_luminance(const ReferenceScene& ref, Vec3 origin, Vec3 dir, Pcg32& rng,
-                       int max_depth) {
+Rgb incident_luminance(PathContext& ctx, Vec3 origin, Vec3 dir) {
   Rgb result, throughput{1, 1, 1};
   Ray ray{origin, dir};
-  for (int depth = 0; depth < max_depth; ++depth) {
+  for (int depth = 0; depth < ctx.max_depth; ++depth) {
     SurfaceHit s;
-    if (!trace_surface(ref, ray, s)) break;
+    if (!trace_surface(ctx, ray, s)) break;
     // L = ρ/π E_direct + ρ · L_in(next): next-event estimation, then continue.
-    result += throughput * s.albedo * direct_illuminance(ref, s.position, s.normal) * (1 / kPi);
+    result += throughput * s.albedo * direct_illuminance(ctx, s.position, s.normal) * (1 / kPi);
     throughput = throughput * s.albedo;
     const double survive = std::min(1.0, max_component(s.albedo));
-    if (survive <= 0 || rng.next_double() >= survive) break;
+    if (survive <= 0 || ctx.rng.next_double() >= survive) break;
     throughput *= 1 / survive;
-    ray = {offset_from_surface(s.position, s.normal), cosine_direction(s.normal, rng)};
+    ray = {offset_from_surface(s.position, s.normal), cosine_direction(s.normal, ctx.rng)};
   }
   return result;
 }
 
-// One-sample estimate of E at a front surface point: exact direct + π · L_in(cos-sampled).
-Rgb illuminance_sample(const ReferenceScene& ref, Vec3 p, Vec3 n, const Rgb& direct, Pcg32& rng,
-                       int max_depth) {
-  const Vec3 origin = offset_from_surface(p, n);
-  return direct + incident_luminance(ref, origin, cosine_direction(n, rng), rng, max_depth) * kPi;
+// One-sample estimate of the reflected part of E at a front surface point: π · L_in(ω),
+// ω cosine-distributed about n.
+Rgb indirect_sample(PathContext& ctx, Vec3 p, Vec3 n) {
+  return incident_luminance(ctx, offset_from_surface(p, n), cosine_direction(n, ctx.rng)) * kPi;
 }
 
 }  // namespace
@@ -99,7 +110,8 @@ ReferenceScene make_reference_scene(const Scene& scene, const PreparedMesh& mesh
 }
 
 std::vector<Rgb> reference_sensor_illuminance(const Scene& scene, const ReferenceScene& ref,
-                                              const ReferenceSettings& settings) {
+                                              const ReferenceSettings& settings,
+                                              ReferenceStats* stats) {
   struct Point {
     Vec3 p, n;
   };
@@ -108,27 +120,27 @@ std::vector<Rgb> reference_sensor_illuminance(const Scene& scene, const Referenc
     for (const Vec3& p : s.points) points.push_back({p, s.normal});
   }
   std::vector<Rgb> result(points.size());
+  std::atomic<std::uint64_t> rays{0};
   Progress progress("reference sensors", points.size(), settings.progress);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size()), [&](const auto& range) {
     for (std::size_t i = range.begin(); i != range.end(); ++i) {
-      Pcg32 rng(settings.seed, i);
-      const Rgb direct = direct_illuminance(ref, points[i].p, points[i].n);
+      PathContext ctx{ref, Pcg32(settings.seed, i), settings.max_depth};
+      const Rgb direct = direct_illuminance(ctx, points[i].p, points[i].n);
       Rgb indirect;
-      for (int s = 0; s < settings.spp; ++s) {
-        const Vec3 origin = offset_from_surface(points[i].p, points[i].n);
-        indirect += incident_luminance(ref, origin, cosine_direction(points[i].n, rng), rng,
-                                       settings.max_depth);
-      }
-      result[i] = direct + indirect * (kPi / settings.spp);
+      for (int s = 0; s < settings.spp; ++s)
+        indirect += indirect_sample(ctx, points[i].p, points[i].n);
+      result[i] = direct + indirect / settings.spp;
+      rays += ctx.rays;
       progress.advance();
     }
   });
   progress.finish();
+  if (stats) *stats = {rays.load(), progress.seconds()};
   return result;
 }
 
 ReferenceImages reference_render(const PinholeCamera& camera, const ReferenceScene& ref,
-                                 const ReferenceSettings& settings) {
+                                 const ReferenceSettings& settings, ReferenceStats* stats) {
   const int w = camera.width, h = camera.height;
   const double nan = std::numeric_limits<double>::quiet_NaN();
   ReferenceImages out{{w, h, std::vector<Rgb>(static_cast<std::size_t>(w) * h)},
@@ -136,21 +148,21 @@ ReferenceImages reference_render(const PinholeCamera& camera, const ReferenceSce
   // Sensor streams use indices below 2^40; pixel streams start above, so a pixel never
   // repeats a sensor's random sequence.
   constexpr std::uint64_t kPixelStreams = std::uint64_t{1} << 40;
+  std::atomic<std::uint64_t> rays{0};
   Progress progress("reference image", static_cast<std::uint64_t>(h), settings.progress);
   tbb::parallel_for(tbb::blocked_range<int>(0, h), [&](const tbb::blocked_range<int>& rows) {
     for (int y = rows.begin(); y != rows.end(); ++y) {
       for (int x = 0; x < w; ++x) {
         const std::size_t index = static_cast<std::size_t>(y) * w + x;
-        Pcg32 rng(settings.seed, kPixelStreams + index);
+        PathContext ctx{ref, Pcg32(settings.seed, kPixelStreams + index), settings.max_depth};
         Rgb e_sum, l_sum;
         int covered = 0;
         for (int s = 0; s < settings.spp; ++s) {
-          const double jx = rng.next_double(), jy = rng.next_double();
+          const double jx = ctx.rng.next_double(), jy = ctx.rng.next_double();
           SurfaceHit hit;
-          if (!trace_surface(ref, {camera.eye, camera.direction(x + jx, y + jy)}, hit)) continue;
-          const Rgb direct = direct_illuminance(ref, hit.position, hit.normal);
-          const Rgb e =
-              illuminance_sample(ref, hit.position, hit.normal, direct, rng, settings.max_depth);
+          if (!trace_surface(ctx, {camera.eye, camera.direction(x + jx, y + jy)}, hit)) continue;
+          const Rgb e = direct_illuminance(ctx, hit.position, hit.normal) +
+                        indirect_sample(ctx, hit.position, hit.normal);
           e_sum += e;
           l_sum += hit.albedo * e * (1 / kPi);
           ++covered;
@@ -162,11 +174,13 @@ ReferenceImages reference_render(const PinholeCamera& camera, const ReferenceSce
           out.luminance.pixels[index] = l_sum / settings.spp;
           out.illuminance.pixels[index] = e_sum / covered;
         }
+        rays += ctx.rays;
       }
       progress.advance();
     }
   });
   progress.finish();
+  if (stats) *stats = {rays.load(), progress.seconds()};
   return out;
 }
 

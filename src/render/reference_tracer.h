@@ -43,9 +43,16 @@ ReferenceScene make_reference_scene(const Scene& scene, const PreparedMesh& mesh
                                     const TracedScene& traced,
                                     const std::vector<PlacedLuminaire>& luminaires);
 
+// Rays cast (closest-hit and shadow) and wall time of one estimate.
+struct ReferenceStats {
+  std::uint64_t rays = 0;
+  double seconds = 0;
+};
+
 // Illuminance (lux per channel) at every sensor point, in scene order (set by set).
 std::vector<Rgb> reference_sensor_illuminance(const Scene& scene, const ReferenceScene& ref,
-                                              const ReferenceSettings& settings);
+                                              const ReferenceSettings& settings,
+                                              ReferenceStats* stats = nullptr);
 
 struct ReferenceImages {
   Image luminance;    // cd/m² per channel; NaN where no front surface is seen
@@ -53,6 +60,7 @@ struct ReferenceImages {
 };
 
 ReferenceImages reference_render(const PinholeCamera& camera, const ReferenceScene& ref,
-                                 const ReferenceSettings& settings);
+                                 const ReferenceSettings& settings,
+                                 ReferenceStats* stats = nullptr);
 
 }  // namespace relight
