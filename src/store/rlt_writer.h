@@ -1,0 +1,82 @@
+// Builds a .rlt file from sections held by the caller (docs/rlt-format.md).
+//
+// Sections are added as spans of the caller's memory and streamed to disk by write():
+// transfer matrices of hundreds of MB are neither copied into the writer nor buffered
+// twice. The file appears atomically (ARCHITECTURE §4.8): a failed write leaves the
+// previous file, if any, untouched and no temporary behind.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "store/rlt_format.h"
+
+namespace relight {
+
+struct RltWriter {
+  // Adds a section; the bytes must stay alive and unchanged until write() returns.
+  // Program errors throw std::invalid_argument: a type already added, a name that is
+  // empty, longer than 31 bytes or not printable ASCII, flags above 24 bits, or a size
+  // that is not a whole number of elements.
+  void add_section(std::uint32_t type, std::string name, std::span<const std::byte> bytes,
+                   RltElement element = RltElement::bytes, std::uint32_t flags = 0);
+
+  void add_u16(std::uint32_t type, std::string name, std::span<const std::uint16_t> values,
+               std::uint32_t flags = 0) {
+    add_values(type, std::move(name), values, flags);
+  }
+  void add_u32(std::uint32_t type, std::string name, std::span<const std::uint32_t> values,
+               std::uint32_t flags = 0) {
+    add_values(type, std::move(name), values, flags);
+  }
+  void add_u64(std::uint32_t type, std::string name, std::span<const std::uint64_t> values,
+               std::uint32_t flags = 0) {
+    add_values(type, std::move(name), values, flags);
+  }
+  void add_f16(std::uint32_t type, std::string name, std::span<const RltHalf> values,
+               std::uint32_t flags = 0) {
+    add_values(type, std::move(name), values, flags);
+  }
+  void add_f32(std::uint32_t type, std::string name, std::span<const float> values,
+               std::uint32_t flags = 0) {
+    add_values(type, std::move(name), values, flags);
+  }
+  void add_f64(std::uint32_t type, std::string name, std::span<const double> values,
+               std::uint32_t flags = 0) {
+    add_values(type, std::move(name), values, flags);
+  }
+  // A text section (JSON metadata); the writer keeps its own copy.
+  void add_text(std::uint32_t type, std::string name, std::string text, std::uint32_t flags = 0);
+
+  // The size the file will have.
+  std::uint64_t file_size() const;
+
+  // Writes the file atomically through write_atomically. I/O errors throw
+  // std::runtime_error "cannot write FILE: ...".
+  void write(const std::filesystem::path& file) const;
+
+ private:
+  struct Section {
+    std::uint32_t type;
+    RltElement element;
+    std::uint32_t flags;
+    std::string name;
+    std::span<const std::byte> bytes;
+    std::shared_ptr<const std::string> owned;  // backs `bytes` for text sections
+  };
+
+  template <RltValue T>
+  void add_values(std::uint32_t type, std::string name, std::span<const T> values,
+                  std::uint32_t flags) {
+    add_section(type, std::move(name), std::as_bytes(values), RltElementOf<T>::value, flags);
+  }
+
+  std::vector<Section> sections_;
+};
+
+}  // namespace relight
