@@ -54,6 +54,9 @@ RayTracer::RayTracer(const std::vector<Vec3>& positions, const std::vector<Trian
   if (!handles_->device) throw std::runtime_error("Embree: cannot create a device");
   handles_->scene = rtcNewScene(handles_->device);
   rtcSetSceneBuildQuality(handles_->scene, RTC_BUILD_QUALITY_HIGH);
+  // Watertight triangle tests: without it about 1 ray in 10^5 slips through a shared
+  // edge, leaking light out of closed rooms (measured by the gather operator's tests).
+  rtcSetSceneFlags(handles_->scene, RTC_SCENE_FLAG_ROBUST);
   if (!triangles.empty()) {
     RTCGeometry geometry = rtcNewGeometry(handles_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
     auto* vertices = static_cast<float*>(

@@ -1,0 +1,230 @@
+// Builds the gather operator of ARCHITECTURE §4.3 (see gather_operator.h): rows are
+// traced independently in parallel (oneTBB, in fixed chunks of receivers), each row's
+// hits are merged per vertex in a per-thread accumulator and appended to its chunk's own
+// buffers, and the rows are then copied into one compressed row-major matrix — no lock is
+// taken per ray or per row, and the result does not depend on thread scheduling.
+#include "transfer/gather_operator.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstddef>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include "common/progress.h"
+#include "math/frame.h"
+#include "math/sampling.h"
+
+namespace relight {
+
+namespace {
+
+// Receivers per unit of parallel work: rows of one chunk share their hit buffers.
+constexpr std::size_t kChunkRows = 64;
+
+// The first two dimensions of the Sobol sequence (van der Corput and Sobol's second
+// generator matrix), each scrambled by a random XOR (Kollig & Keller 2002, "Efficient
+// multidimensional sampling"): a (0,2)-sequence, so any power-of-two prefix stratifies
+// every elementary interval, and the scramble decorrelates neighbouring receivers.
+std::uint32_t van_der_corput(std::uint32_t i, std::uint32_t scramble) {
+  i = (i << 16) | (i >> 16);
+  i = ((i & 0x00ff00ffu) << 8) | ((i & 0xff00ff00u) >> 8);
+  i = ((i & 0x0f0f0f0fu) << 4) | ((i & 0xf0f0f0f0u) >> 4);
+  i = ((i & 0x33333333u) << 2) | ((i & 0xccccccccu) >> 2);
+  i = ((i & 0x55555555u) << 1) | ((i & 0xaaaaaaaau) >> 1);
+  return i ^ scramble;
+}
+
+std::uint32_t sobol2(std::uint32_t i, std::uint32_t scramble) {
+  for (std::uint32_t v = 1u << 31; i != 0; i >>= 1, v ^= v >> 1) {
+    if (i & 1u) scramble ^= v;
+  }
+  return scramble;
+}
+
+double unit_interval(std::uint32_t bits) {
+  return bits * (1.0 / 4294967296.0);
+}
+
+// One thread's row accumulator: a dense weight per mesh vertex, the row that last
+// touched each vertex, and the vertices the current row touched. Merging duplicates this
+// way costs one sort of the distinct vertices, not of every barycentric weight.
+struct RowScratch {
+  explicit RowScratch(std::size_t vertices) : weight(vertices, 0.0), row_of(vertices, kNoRow) {}
+  static constexpr std::uint64_t kNoRow = std::numeric_limits<std::uint64_t>::max();
+  std::vector<double> weight;
+  std::vector<std::uint64_t> row_of;
+  std::vector<std::uint32_t> touched;
+
+  void add(std::uint64_t row, std::uint32_t vertex, double w) {
+    if (row_of[vertex] != row) {
+      row_of[vertex] = row;
+      weight[vertex] = 0;
+      touched.push_back(vertex);
+    }
+    weight[vertex] += w;
+  }
+};
+
+// The rows of one chunk of receivers, merged per vertex.
+struct ChunkRows {
+  std::vector<std::uint32_t> row_sizes;
+  std::vector<std::uint32_t> columns;
+  std::vector<float> values;
+};
+
+// Ray origins per receiver. A vertex on a crease (the foot of a wall, a room corner)
+// lies in the plane of the neighbouring faces too, so rays toward those faces would start
+// on them and slip out of the room. Vertices are therefore moved a little toward the middle
+// of their own triangles (toward the centroid of their one-ring, within the tangent plane)
+// before the usual push along the normal: by 1e-4 · max(|p|∞, 1) m (five times that push),
+// at most a quarter of the way to the centroid, far below any lighting gradient. Sensors
+// are used as given.
+std::vector<Vec3> ray_origins(const Receivers& receivers, const PreparedMesh& mesh) {
+  std::vector<Vec3> centroid_sum(receivers.vertex_count);
+  std::vector<std::uint32_t> triangles_at(receivers.vertex_count, 0);
+  for (const Triangle& t : mesh.triangles) {
+    const Vec3 centroid = (mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]]) / 3;
+    for (std::uint32_t v : t) {
+      centroid_sum[v] += centroid;
+      ++triangles_at[v];
+    }
+  }
+  std::vector<Vec3> origins(receivers.size());
+  for (std::size_t r = 0; r < receivers.size(); ++r) {
+    Vec3 p = receivers.positions[r];
+    const Vec3 n = receivers.normals[r];
+    if (r < receivers.vertex_count && triangles_at[r] > 0) {
+      const Vec3 toward = centroid_sum[r] / triangles_at[r] - p;
+      const Vec3 tangent = toward - n * dot(toward, n);
+      const double distance = length(tangent);
+      const double scale = std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z), 1.0});
+      const double step = std::min(1e-4 * scale, 0.25 * distance);
+      if (step > 0) p += tangent * (step / distance);
+    }
+    origins[r] = offset_from_surface(p, n);
+  }
+  return origins;
+}
+
+// True when the ray reaches the front side of an opaque triangle before any portal.
+bool front_hit(const PreparedMesh& mesh, const TracedScene& traced, const Ray& ray, RayHit& hit) {
+  hit = traced.opaque.intersect(ray);
+  if (!hit.hit()) return false;
+  const Triangle& t = mesh.triangles[hit.triangle];
+  const Vec3 a = mesh.positions[t[0]];
+  const Vec3 face = cross(mesh.positions[t[1]] - a, mesh.positions[t[2]] - a);
+  if (dot(face, ray.direction) >= 0) return false;  // back sides absorb
+  if (traced.portals.triangle_count() > 0 &&
+      traced.portals.occluded({ray.origin, ray.direction, 0, hit.t})) {
+    return false;  // through a window: the portal transfer's light, not a reflection
+  }
+  return true;
+}
+
+// Traces one receiver's rays and appends its merged row to `out`.
+void trace_row(const PreparedMesh& mesh, const TracedScene& traced, Vec3 origin, Vec3 normal,
+               std::size_t receiver, int rays, std::uint64_t seed, RowScratch& scratch,
+               ChunkRows& out) {
+  const Frame frame = frame_from_normal(normal);
+  Pcg32 rng(seed, receiver);
+  const std::uint32_t scramble_radius = rng.next_u32(), scramble_angle = rng.next_u32();
+  const double weight = 1.0 / rays;
+  scratch.touched.clear();
+  for (int i = 0; i < rays; ++i) {
+    const auto index = static_cast<std::uint32_t>(i);
+    const Vec3 local =
+        sample_cosine_hemisphere(unit_interval(van_der_corput(index, scramble_radius)),
+                                 unit_interval(sobol2(index, scramble_angle)));
+    const Ray ray{origin, frame.to_world(local)};
+    RayHit hit;
+    if (!front_hit(mesh, traced, ray, hit)) continue;
+    const Triangle& t = mesh.triangles[hit.triangle];
+    scratch.add(receiver, t[0], (1 - hit.u - hit.v) * weight);
+    scratch.add(receiver, t[1], hit.u * weight);
+    scratch.add(receiver, t[2], hit.v * weight);
+  }
+  std::sort(scratch.touched.begin(), scratch.touched.end());
+  for (std::uint32_t vertex : scratch.touched) {
+    out.columns.push_back(vertex);
+    out.values.push_back(static_cast<float>(scratch.weight[vertex]));
+  }
+  out.row_sizes.push_back(static_cast<std::uint32_t>(scratch.touched.size()));
+}
+
+}  // namespace
+
+GatherOperator build_gather_operator(const Receivers& receivers, const PreparedMesh& mesh,
+                                     const TracedScene& traced, int rays_per_vertex,
+                                     int rays_per_sensor, std::uint64_t seed, bool progress) {
+  if (rays_per_vertex < 1 || rays_per_sensor < 1) {
+    throw std::invalid_argument("gather operator: rays per receiver must be at least 1");
+  }
+  if (receivers.vertex_count != mesh.positions.size() ||
+      receivers.normals.size() != receivers.size()) {
+    throw std::invalid_argument("gather operator: receivers do not match the prepared mesh");
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const std::size_t rows = receivers.size();
+  const std::size_t chunk_count = (rows + kChunkRows - 1) / kChunkRows;
+  std::vector<ChunkRows> chunks(chunk_count);
+  const std::vector<Vec3> origins = ray_origins(receivers, mesh);
+  Progress bar("gather operator", rows, progress);
+  tbb::enumerable_thread_specific<RowScratch> scratches(receivers.vertex_count);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunk_count), [&](const auto& range) {
+    RowScratch& scratch = scratches.local();
+    for (std::size_t c = range.begin(); c != range.end(); ++c) {
+      const std::size_t first = c * kChunkRows, last = std::min(rows, first + kChunkRows);
+      ChunkRows& out = chunks[c];
+      out.row_sizes.reserve(last - first);
+      for (std::size_t r = first; r < last; ++r) {
+        const int rays = r < receivers.vertex_count ? rays_per_vertex : rays_per_sensor;
+        trace_row(mesh, traced, origins[r], receivers.normals[r], r, rays, seed, scratch, out);
+      }
+      bar.advance(last - first);
+    }
+  });
+  bar.finish();
+
+  // Assemble: row offsets by a prefix sum, then every chunk copies into its own span.
+  using Index = Eigen::SparseMatrix<float, Eigen::RowMajor>::StorageIndex;
+  std::vector<std::size_t> chunk_offsets(chunk_count + 1, 0);
+  for (std::size_t c = 0; c < chunk_count; ++c) {
+    chunk_offsets[c + 1] = chunk_offsets[c] + chunks[c].columns.size();
+  }
+  const std::size_t nonzeros = chunk_offsets.back();
+  if (nonzeros > static_cast<std::size_t>(std::numeric_limits<Index>::max())) {
+    throw std::invalid_argument("gather operator: more than 2^31 - 1 entries");
+  }
+  GatherOperator result;
+  result.matrix.resize(static_cast<Eigen::Index>(rows),
+                       static_cast<Eigen::Index>(receivers.vertex_count));
+  result.matrix.resizeNonZeros(static_cast<Eigen::Index>(nonzeros));
+  Index* outer = result.matrix.outerIndexPtr();
+  Index* inner = result.matrix.innerIndexPtr();
+  float* values = result.matrix.valuePtr();
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunk_count), [&](const auto& range) {
+    for (std::size_t c = range.begin(); c != range.end(); ++c) {
+      const ChunkRows& chunk = chunks[c];
+      std::size_t offset = chunk_offsets[c];
+      for (std::size_t i = 0; i < chunk.row_sizes.size(); ++i) {
+        outer[c * kChunkRows + i] = static_cast<Index>(offset);
+        offset += chunk.row_sizes[i];
+      }
+      std::copy(chunk.columns.begin(), chunk.columns.end(), inner + chunk_offsets[c]);
+      std::copy(chunk.values.begin(), chunk.values.end(), values + chunk_offsets[c]);
+    }
+  });
+  outer[rows] = static_cast<Index>(nonzeros);
+  result.rays = static_cast<std::uint64_t>(receivers.vertex_count) * rays_per_vertex +
+                static_cast<std::uint64_t>(receivers.sensor_count) * rays_per_sensor;
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace relight
