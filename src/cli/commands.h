@@ -15,5 +15,9 @@ using Action = std::function<int()>;
 void add_reference_command(CLI::App& app, Action& action);
 void add_info_command(CLI::App& app, Action& action);
 void add_demo_command(CLI::App& app, Action& action);
+void add_precompute_command(CLI::App& app, Action& action);
+void add_render_command(CLI::App& app, Action& action);
+void add_probe_command(CLI::App& app, Action& action);
+void add_bench_command(CLI::App& app, Action& action);
 
 }  // namespace relight

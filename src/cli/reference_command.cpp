@@ -10,6 +10,7 @@
 
 #include "cli/commands.h"
 #include "cli/reference_run.h"
+#include "cli/view_args.h"
 #include "common/input_error.h"
 #include "light/luminaire_frame.h"
 #include "render/reference_tracer.h"
@@ -24,8 +25,8 @@ namespace {
 struct ReferenceArgs {
   std::string scene;
   ReferenceRequest request;
-  std::string sensors_out, camera, output, false_color, range;
-  double exposure = 0;
+  std::string sensors_out;
+  ViewArgs view;
   std::uint64_t seed = 1;
 };
 
@@ -54,15 +55,7 @@ void run_reference(const Scene& scene, const ReferenceRequest& request) {
 
   // Validate the camera before spending time on sensors.
   std::optional<Camera> camera;
-  if (!request.images.empty()) {
-    if (request.camera) {
-      const Camera* c = scene.find_camera(*request.camera);
-      if (!c) fail_input("--camera", "scene has no camera named \"" + *request.camera + "\"");
-      camera = *c;
-    } else {
-      camera = scene.cameras.empty() ? default_camera(scene.bounds()) : scene.cameras.front();
-    }
-  }
+  if (!request.images.empty()) camera = choose_camera(scene, request.camera, scene.bounds());
 
   if (request.sensors && scene.sensor_count() > 0) {
     ReferenceStats stats;
@@ -98,21 +91,6 @@ void run_reference(const Scene& scene, const ReferenceRequest& request) {
   std::cout << "reference finished in " << seconds << " s\n";
 }
 
-std::optional<FalseColor> parse_false_color(const std::string& quantity, const std::string& range) {
-  if (quantity.empty()) {
-    if (!range.empty()) fail_input("--range", "needs --false-color lux|luminance");
-    return std::nullopt;
-  }
-  FalseColor f;
-  f.quantity = quantity == "lux" ? Quantity::kIlluminance : Quantity::kLuminance;
-  if (!range.empty()) {
-    const RangeArgument r = parse_range(range);
-    f.min = r.min;
-    f.max = r.max;
-  }
-  return f;
-}
-
 void add_reference_command(CLI::App& app, Action& action) {
   auto args = std::make_shared<ReferenceArgs>();
   CLI::App* cmd = app.add_subcommand(
@@ -122,28 +100,18 @@ void add_reference_command(CLI::App& app, Action& action) {
       ->check(CLI::Range(1, 1 << 24));
   cmd->add_option("--seed", args->seed, "random seed (results are deterministic per seed)");
   cmd->add_option("--sensors-out", args->sensors_out, "write sensor illuminance CSV here");
-  cmd->add_option("--camera", args->camera, "scene camera to render (default: the first)");
-  cmd->add_option("--width", args->request.width, "image width in pixels")
-      ->check(CLI::Range(1, 16384));
-  cmd->add_option("--height", args->request.height, "image height in pixels")
-      ->check(CLI::Range(1, 16384));
-  cmd->add_option("-o,--output", args->output, "image to write (.png or .exr)");
-  cmd->add_option("--exposure", args->exposure, "exposure EV100 for PNG (default: automatic)");
-  cmd->add_option("--false-color", args->false_color, "false colour view: lux or luminance")
-      ->check(CLI::IsMember({"lux", "luminance"}));
-  cmd->add_option("--range", args->range, "false colour range MIN:MAX in lx or cd/m2");
+  add_view_options(*cmd, args->view);
   cmd->add_flag("!--no-progress", args->request.progress, "no progress bar");
-  cmd->callback([cmd, args, &action] {
-    action = [cmd, args] {
+  cmd->callback([args, &action] {
+    action = [args] {
       ReferenceRequest request = args->request;
       request.seed = args->seed;
       if (!args->sensors_out.empty()) request.sensors_out = args->sensors_out;
-      if (!args->camera.empty()) request.camera = args->camera;
-      if (!args->output.empty()) {
-        ImageOutput out{args->output, {}};
-        if (cmd->count("--exposure")) out.display.exposure_ev = args->exposure;
-        out.display.false_color = parse_false_color(args->false_color, args->range);
-        request.images.push_back(out);
+      request.width = args->view.width;
+      request.height = args->view.height;
+      if (!args->view.camera.empty()) request.camera = args->view.camera;
+      if (!args->view.output.empty()) {
+        request.images.push_back({args->view.output, display_options(args->view)});
       }
       request.sensors = request.sensors_out.has_value() || request.images.empty();
       run_reference(load_scene(args->scene), request);

@@ -32,7 +32,4 @@ struct ReferenceRequest {
 
 void run_reference(const Scene& scene, const ReferenceRequest& request);
 
-// The CLI's --false-color lux|luminance and --range MIN:MAX (empty strings: not given).
-std::optional<FalseColor> parse_false_color(const std::string& quantity, const std::string& range);
-
 }  // namespace relight

@@ -14,13 +14,13 @@ enum class DistributionType { kIsotropic, kCosinePower, kCurve, kIes, kLdt };
 
 struct DistributionSpec {
   DistributionType type = DistributionType::kIsotropic;
-  double candela = 0;         // isotropic, cosine_power: peak intensity (cd)
-  double exponent = 1;        // cosine_power: I = candela * cos^exponent(γ)
-  double cutoff_deg = 90;     // cosine_power: zero beyond this γ
-  std::vector<double> gamma_deg;       // curve: control points, ascending from 0
-  std::vector<double> curve_candela;   // curve: intensity at each control point (cd)
-  std::filesystem::path file;          // ies, ldt: resolved against the scene's folder
-  std::string where;                   // "FILE:JSON-PATH" of the entry, for messages
+  double candela = 0;                 // isotropic, cosine_power: peak intensity (cd)
+  double exponent = 1;                // cosine_power: I = candela * cos^exponent(γ)
+  double cutoff_deg = 90;             // cosine_power: zero beyond this γ
+  std::vector<double> gamma_deg;      // curve: control points, ascending from 0
+  std::vector<double> curve_candela;  // curve: intensity at each control point (cd)
+  std::filesystem::path file;         // ies, ldt: resolved against the scene's folder
+  std::string where;                  // "FILE:JSON-PATH" of the entry, for messages
 };
 
 }  // namespace relight

@@ -51,10 +51,13 @@ struct Camera {
 };
 
 struct PrecomputeSettings {
-  double max_edge = 0.25;   // m: mesh subdivision bound for per-vertex transfer
-  int sh_order = 8;         // SH bands for indirect luminaire transfer (l < sh_order)
-  double crease_deg = 30;   // smooth normals within this angle, split beyond
-  int gather_rays = 256;    // rays per receiver for the gather operator
+  double max_edge = 0.25;  // m: mesh subdivision bound for per-vertex transfer
+  int sh_order = 8;        // SH bands for indirect luminaire transfer (l < sh_order)
+  double crease_deg = 30;  // smooth normals within this angle, split beyond
+  int gather_rays = 256;   // rays per vertex for the gather operator
+  // Rays per sensor: a sensor's reading is its own gather row, not smoothed by
+  // interpolation between vertices, so it gets more rays (sensors are few).
+  int sensor_gather_rays = 4096;
   double tolerance = 1e-4;  // relative change that ends the bounce iteration
   int max_bounces = 100;
   std::string direct = "exact";  // "exact" | "sh" (the lighting-design paper's mode)

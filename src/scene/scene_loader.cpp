@@ -238,6 +238,9 @@ struct Loader {
       if (s.crease_deg > 180) n->fail("crease_deg must be at most 180");
     }
     if (const auto n = p.find("gather_rays")) s.gather_rays = n->integer_in(1, 1 << 20);
+    if (const auto n = p.find("sensor_gather_rays")) {
+      s.sensor_gather_rays = n->integer_in(1, 1 << 24);
+    }
     if (const auto n = p.find("tolerance")) s.tolerance = n->positive();
     if (const auto n = p.find("max_bounces")) s.max_bounces = n->integer_in(0, 100000);
     if (const auto n = p.find("direct")) {

@@ -1,0 +1,98 @@
+// `relight bench SCENE.rlt [--frames N]`: times the run-time weighted sum and, in the
+// same run, a plain parallel streaming read of as many bytes, so the ratio
+// effective_gbps / stream_gbps speaks for itself on a shared machine. One JSON line.
+#include <algorithm>
+#include <chrono>
+#include <iostream>
+#include <memory>
+#include <numeric>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "cli/commands.h"
+#include "cli/relit_scene.h"
+
+namespace relight {
+
+namespace {
+
+struct BenchArgs {
+  std::string rlt;
+  int frames = 50;
+};
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+template <class F>
+std::vector<double> time_ms(int frames, F&& f) {
+  std::vector<double> ms;
+  for (int i = 0; i < frames; ++i) {
+    const auto start = std::chrono::steady_clock::now();
+    f(i);
+    ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                     .count());
+  }
+  return ms;
+}
+
+int run_bench(const BenchArgs& args) {
+  RelitScene relit = relight_transfer_file(args.rlt, std::nullopt);
+  Relighter& relighter = *relit.relighter;
+  LightingState state = relighter.state();
+  const std::size_t bytes = relighter.transfer_bytes();
+
+  // A frame: a dimmer change (new weights) and the full weighted sum.
+  relighter.relight(relit.irradiance);  // warm
+  const double frame_ms = median(time_ms(args.frames, [&](int i) {
+    for (LuminaireState& l : state.luminaires) l.dimmer = 0.5 + 0.5 * ((i % 2) == 0);
+    relighter.set_state(state);
+    relighter.relight(relit.irradiance);
+  }));
+
+  // The same number of bytes read by a plain parallel reduction: the machine's streaming
+  // rate. Integer addition is associative, so the compiler vectorises it and the loop is
+  // bound by memory, not by a floating-point add chain.
+  std::vector<std::uint64_t> buffer(std::max<std::size_t>(bytes / sizeof(std::uint64_t), 1), 1);
+  auto stream = [&] {
+    return tbb::parallel_reduce(
+        tbb::blocked_range<std::size_t>(0, buffer.size(), 1 << 14), std::uint64_t{0},
+        [&](const auto& r, std::uint64_t sum) {
+          return std::accumulate(buffer.begin() + r.begin(), buffer.begin() + r.end(), sum);
+        },
+        std::plus<std::uint64_t>());
+  };
+  volatile std::uint64_t sink = stream();  // warm
+  const double stream_ms = median(time_ms(args.frames, [&](int) { sink = stream(); }));
+  (void)sink;
+
+  const double effective = bytes / (frame_ms * 1e-3) / 1e9;
+  const double streaming = buffer.size() * sizeof(std::uint64_t) / (stream_ms * 1e-3) / 1e9;
+  const nlohmann::json line = {{"receivers", relighter.receivers()},
+                               {"luminaires", relit.transfer->scene.luminaires.size()},
+                               {"transfer_bytes", bytes},
+                               {"frames", args.frames},
+                               {"median_ms", frame_ms},
+                               {"effective_gbps", effective},
+                               {"stream_gbps", streaming},
+                               {"ratio", effective / streaming}};
+  std::cout << line.dump() << "\n";
+  return 0;
+}
+
+}  // namespace
+
+void add_bench_command(CLI::App& app, Action& action) {
+  auto args = std::make_shared<BenchArgs>();
+  CLI::App* cmd = app.add_subcommand("bench", "Time relighting of a precomputed scene");
+  cmd->add_option("scene", args->rlt, "precomputed .rlt file")->required();
+  cmd->add_option("--frames", args->frames, "frames to time")->check(CLI::Range(1, 100000));
+  cmd->callback([args, &action] { action = [args] { return run_bench(*args); }; });
+}
+
+}  // namespace relight

@@ -1,0 +1,73 @@
+// `relight precompute SCENE.json -o SCENE.rlt`: the expensive step, once per static
+// scene; prints a summary of rays, rates, time per phase and bytes stored.
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/commands.h"
+#include "runtime/transfer_file.h"
+#include "scene/scene_loader.h"
+#include "transfer/precompute.h"
+
+namespace relight {
+
+namespace {
+
+struct PrecomputeArgs {
+  std::string scene, output;
+  std::uint64_t seed = 1;
+  bool progress = true;
+};
+
+}  // namespace
+
+void run_precompute(const std::filesystem::path& scene_file, const std::filesystem::path& output,
+                    const PrecomputeOptions& options) {
+  const nlohmann::json document = read_json_file(scene_file);
+  const Scene scene = scene_from_json(document, scene_file);
+  const Precomputed p = precompute_transfer(scene, options);
+  write_transfer_file(output, p, document, scene_file);
+
+  std::uint64_t rays = 0;
+  double seconds = 0;
+  std::printf("precompute %s: %zu vertices, %zu sensors, %zu luminaires, sh_order %d, direct %s\n",
+              scene_file.string().c_str(), p.receivers.vertex_count, p.receivers.sensor_count,
+              p.luminaires.size(), p.sh_order, p.direct_mode.c_str());
+  for (const PhaseTiming& t : p.phases) {
+    rays += t.rays;
+    seconds += t.seconds;
+    if (t.rays > 0) {
+      std::printf("  %-18s %8.2f s  %10.3g rays  %6.2f Mrays/s\n", t.name.c_str(), t.seconds,
+                  double(t.rays), t.rays * 1e-6 / std::max(t.seconds, 1e-9));
+    } else {
+      std::printf("  %-18s %8.2f s\n", t.name.c_str(), t.seconds);
+    }
+  }
+  std::printf("  bounces: %d (tolerance %g)\n", p.bounces, scene.precompute.tolerance);
+  std::printf("  total %.2f s, %.3g rays, %.2f Mrays/s\n", seconds, double(rays),
+              rays * 1e-6 / std::max(seconds, 1e-9));
+  std::printf("wrote %s (%.2f MB)\n", output.string().c_str(),
+              std::filesystem::file_size(output) / 1e6);
+}
+
+void add_precompute_command(CLI::App& app, Action& action) {
+  auto args = std::make_shared<PrecomputeArgs>();
+  CLI::App* cmd = app.add_subcommand("precompute", "Precompute radiance transfer into a .rlt file");
+  cmd->add_option("scene", args->scene, "scene JSON file")->required();
+  cmd->add_option("-o,--output", args->output, ".rlt file to write")->required();
+  cmd->add_option("--seed", args->seed, "random seed of the gather rays");
+  cmd->add_flag("!--no-progress", args->progress, "no progress bars");
+  cmd->callback([args, &action] {
+    action = [args] {
+      PrecomputeOptions options;
+      options.seed = args->seed;
+      options.progress = args->progress;
+      run_precompute(args->scene, args->output, options);
+      return 0;
+    };
+  });
+}
+
+}  // namespace relight

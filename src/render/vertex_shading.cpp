@@ -1,0 +1,58 @@
+#include "render/vertex_shading.h"
+
+#include <limits>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+namespace relight {
+
+ShadedImages shade_vertices(const PinholeCamera& camera, const VertexShadingInput& in,
+                            int samples_per_axis) {
+  const int w = camera.width, h = camera.height;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  ShadedImages out{make_image(w, h), make_image(w, h)};
+  const int spp = samples_per_axis * samples_per_axis;
+  auto vertex_rgb = [](std::span<const float> values, std::uint32_t v) {
+    return Rgb{values[3 * v], values[3 * v + 1], values[3 * v + 2]};
+  };
+  tbb::parallel_for(tbb::blocked_range<int>(0, h), [&](const tbb::blocked_range<int>& rows) {
+    for (int y = rows.begin(); y != rows.end(); ++y) {
+      for (int x = 0; x < w; ++x) {
+        Rgb l_sum, e_sum;
+        int covered = 0;
+        for (int s = 0; s < spp; ++s) {
+          const double sx = (s % samples_per_axis + 0.5) / samples_per_axis;
+          const double sy = (s / samples_per_axis + 0.5) / samples_per_axis;
+          const Vec3 dir = camera.direction(x + sx, y + sy);
+          const RayHit hit = in.tracer.intersect({camera.eye, dir});
+          if (!hit.hit()) continue;
+          const Triangle& t = in.triangles[hit.triangle];
+          const Vec3 a = in.positions[t[0]], b = in.positions[t[1]], c = in.positions[t[2]];
+          if (dot(cross(b - a, c - a), dir) >= 0) continue;  // back faces absorb: black
+          const double bary[3] = {1 - hit.u - hit.v, hit.u, hit.v};
+          Rgb e, l;
+          for (int k = 0; k < 3; ++k) {
+            const Rgb ek = vertex_rgb(in.irradiance, t[k]);
+            e += ek * bary[k];
+            l += vertex_rgb(in.vertex_albedo, t[k]) * ek * (bary[k] / kPi);
+          }
+          e_sum += e;
+          l_sum += l;
+          ++covered;
+        }
+        Rgb& lum = out.luminance.at(x, y);
+        Rgb& ill = out.illuminance.at(x, y);
+        if (covered == 0) {
+          lum = ill = {nan, nan, nan};
+        } else {
+          lum = l_sum / spp;
+          ill = e_sum / covered;
+        }
+      }
+    }
+  });
+  return out;
+}
+
+}  // namespace relight

@@ -1,0 +1,35 @@
+// Images from per-vertex results (the lighting-design paper's display step, Eq. 18 then
+// Gouraud shading): a primary ray per sub-pixel finds the visible triangle, and the
+// vertex values are interpolated with the hit's barycentrics — the same interpolation the
+// gather operator assumes, so an image shows exactly what the transfer computed.
+// Luminance of a vertex is albedo/π · E (diffuse); back faces show black.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "render/camera.h"
+#include "render/image.h"
+#include "scene/triangle_soup.h"
+#include "trace/ray_tracer.h"
+
+namespace relight {
+
+struct VertexShadingInput {
+  const RayTracer& tracer;             // ids are indices into `triangles`
+  const std::vector<Vec3>& positions;  // per vertex
+  const std::vector<Triangle>& triangles;
+  std::span<const float> vertex_albedo;  // 3 per vertex
+  std::span<const float> irradiance;     // 3 per vertex (lux), at least 3·vertices
+};
+
+struct ShadedImages {
+  Image luminance;    // cd/m² per channel; NaN where no front surface is seen
+  Image illuminance;  // lux per channel; NaN likewise
+};
+
+// `samples_per_axis`² stratified primary rays per pixel.
+ShadedImages shade_vertices(const PinholeCamera& camera, const VertexShadingInput& input,
+                            int samples_per_axis = 2);
+
+}  // namespace relight

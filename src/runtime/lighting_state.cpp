@@ -1,0 +1,101 @@
+#include "runtime/lighting_state.h"
+
+#include <cmath>
+
+#include "common/input_error.h"
+#include "light/color_temperature.h"
+#include "scene/json_node.h"
+#include "scene/scene_loader.h"
+
+namespace relight {
+
+LightingState default_lighting_state(const Scene& scene) {
+  LightingState s;
+  for (const Luminaire& l : scene.luminaires) {
+    s.luminaires.push_back({true, l.dimmer, l.color, l.aim, l.c0, l.distribution});
+  }
+  return s;
+}
+
+namespace {
+
+std::size_t luminaire_index(const Scene& scene, const JsonNode& where, const std::string& name) {
+  for (std::size_t i = 0; i < scene.luminaires.size(); ++i) {
+    if (scene.luminaires[i].name == name) return i;
+  }
+  where.fail("no luminaire named \"" + name + "\" in the precomputed scene");
+}
+
+// Keeps c0 orthogonal to a new aim: the C0 plane turns with the luminaire.
+Vec3 reorthogonalised_c0(Vec3 c0, Vec3 aim) {
+  Vec3 t = c0 - aim * dot(c0, aim);
+  if (length(t) < 1e-6) t = std::abs(aim.x) > 0.999 ? Vec3{0, 0, -1} : Vec3{1, 0, 0};
+  t = t - aim * dot(t, aim);
+  return normalize(t);
+}
+
+void apply_luminaire(LuminaireState& s, const Luminaire& scene_luminaire, const JsonNode& node,
+                     const std::filesystem::path& base_dir) {
+  node.expect_keys(
+      {"on", "dimmer", "color", "cct_kelvin", "aim", "target", "c0", "distribution", "position"});
+  if (const auto p = node.find("position")) {
+    if (length(p->vec3() - scene_luminaire.position) > 1e-9) {
+      p->fail(
+          "a luminaire's position is fixed by the precompute: move it in the scene and run "
+          "relight precompute again");
+    }
+  }
+  if (const auto on = node.find("on")) s.on = on->boolean();
+  if (const auto d = node.find("dimmer")) s.dimmer = d->number_at_least(0);
+  if (node.has("color") && node.has("cct_kelvin")) node.fail("give either color or cct_kelvin");
+  if (const auto c = node.find("color")) {
+    const Rgb color = c->rgb_non_negative();
+    if (!(luminance(color) > 0)) c->fail("colour must have a positive luminance");
+    s.color = color / luminance(color);
+  }
+  if (const auto k = node.find("cct_kelvin")) {
+    const double kelvin = k->number();
+    if (kelvin < kMinCctKelvin || kelvin > kMaxCctKelvin) {
+      k->fail("colour temperature must lie in 1667..25000 K");
+    }
+    s.color = cct_to_rgb(kelvin);
+  }
+  if (node.has("aim") && node.has("target")) node.fail("give either aim or target");
+  if (const auto a = node.find("aim")) s.aim = a->direction();
+  if (const auto t = node.find("target")) {
+    const Vec3 d = t->vec3() - scene_luminaire.position;
+    if (length(d) < 1e-9) t->fail("target coincides with the luminaire");
+    s.aim = normalize(d);
+  }
+  if (const auto c = node.find("c0")) {
+    s.c0 = c->direction();
+    if (length(cross(s.c0, s.aim)) < 1e-6) c->fail("c0 must not be parallel to aim");
+  }
+  s.c0 = reorthogonalised_c0(s.c0, s.aim);
+  if (const auto d = node.find("distribution")) s.distribution = parse_distribution(*d, base_dir);
+}
+
+}  // namespace
+
+void apply_lighting_state(LightingState& state, const Scene& scene, const nlohmann::json& document,
+                          const std::string& where, const std::filesystem::path& base_dir) {
+  const JsonNode root(document, where, "/");
+  root.expect_keys({"luminaires"});
+  if (const auto lums = root.find("luminaires")) {
+    if (!lums->is_object()) lums->fail("expected an object mapping luminaire names to states");
+    for (const auto& [name, unused] : lums->value().items()) {
+      const JsonNode node = lums->at(name);
+      const std::size_t i = luminaire_index(scene, node, name);
+      apply_luminaire(state.luminaires[i], scene.luminaires[i], node, base_dir);
+    }
+  }
+}
+
+LightingState load_lighting_state(const Scene& scene, const std::filesystem::path& file) {
+  LightingState state = default_lighting_state(scene);
+  apply_lighting_state(state, scene, read_json_file(file), file.string(),
+                       file.has_parent_path() ? file.parent_path() : std::filesystem::path("."));
+  return state;
+}
+
+}  // namespace relight

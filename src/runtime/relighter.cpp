@@ -1,0 +1,145 @@
+#include "runtime/relighter.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "math/sh.h"
+#include "runtime/luminaire_sh.h"
+#include "transfer/transfer_blocks.h"
+
+namespace relight {
+
+namespace {
+
+bool same_distribution(const DistributionSpec& a, const DistributionSpec& b) {
+  return a.type == b.type && a.candela == b.candela && a.exponent == b.exponent &&
+         a.cutoff_deg == b.cutoff_deg && a.gamma_deg == b.gamma_deg &&
+         a.curve_candela == b.curve_candela && a.file == b.file;
+}
+
+}  // namespace
+
+Relighter::Relighter(TransferView transfer, const Scene& scene, RelighterSettings settings)
+    : transfer_(std::move(transfer)), scene_(scene), settings_(settings) {
+  if (transfer_.luminaires.size() != scene.luminaires.size()) {
+    throw std::invalid_argument("Relighter: transfer and scene disagree on luminaires");
+  }
+  luminaires_.resize(scene.luminaires.size());
+  state_ = default_lighting_state(scene);
+  for (std::size_t j = 0; j < luminaires_.size(); ++j) {
+    update_luminaire(j, state_.luminaires[j], true);
+  }
+}
+
+void Relighter::set_state(const LightingState& state) {
+  for (std::size_t j = 0; j < luminaires_.size(); ++j) {
+    const LuminaireState& now = state_.luminaires[j];
+    const LuminaireState& next = state.luminaires.at(j);
+    const bool geometry_changed = !(now.aim == next.aim) || !(now.c0 == next.c0) ||
+                                  !same_distribution(now.distribution, next.distribution);
+    update_luminaire(j, next, geometry_changed);
+  }
+  state_ = state;
+}
+
+void Relighter::update_luminaire(std::size_t j, const LuminaireState& s, bool geometry_changed) {
+  Luminaire& l = luminaires_[j];
+  const int k = sh_count(transfer_.sh_order);
+  if (geometry_changed) {
+    l.distribution = load_distribution(s.distribution);
+    l.sh = luminaire_world_sh(l.distribution, s.aim, s.c0,
+                              LuminaireShSettings{transfer_.sh_order, settings_.window});
+    if (!transfer_.direct_sh_mode) {
+      // Exact direct: the current distribution evaluated toward every receiver.
+      const LuminaireTransferView& v = transfer_.luminaires[j];
+      const Vec3 c90 = cross(s.c0, s.aim);
+      l.direct.resize(transfer_.receivers);
+      tbb::parallel_for(
+          tbb::blocked_range<std::size_t>(0, transfer_.receivers), [&](const auto& range) {
+            for (std::size_t r = range.begin(); r != range.end(); ++r) {
+              if (v.factor[r] == 0) {
+                l.direct[r] = 0;
+                continue;
+              }
+              const Vec3 w{v.dir_x[r], v.dir_y[r], v.dir_z[r]};
+              const Vec3 local{dot(w, s.c0), dot(w, c90), dot(w, s.aim)};
+              l.direct[r] = static_cast<float>(l.distribution.intensity(local) * v.factor[r]);
+            }
+          });
+    }
+  }
+  const Rgb rgb = s.on ? s.color * s.dimmer : Rgb{};
+  l.rgb[0] = static_cast<float>(rgb.r);
+  l.rgb[1] = static_cast<float>(rgb.g);
+  l.rgb[2] = static_cast<float>(rgb.b);
+  l.active = s.on && max_component(rgb) > 0;
+  l.weights.resize(static_cast<std::size_t>(3 * k));
+  for (int b = 0; b < k; ++b) {
+    for (int c = 0; c < 3; ++c) {
+      l.weights[static_cast<std::size_t>(3 * b + c)] =
+          static_cast<float>(l.sh[static_cast<std::size_t>(b)] * l.rgb[c]);
+    }
+  }
+  if (transfer_.direct_sh_mode) l.direct_weights = l.weights;
+}
+
+void Relighter::relight(std::span<float> out) const {
+  const std::size_t n = transfer_.receivers;
+  if (out.size() != 3 * n) throw std::invalid_argument("Relighter: output size mismatch");
+  const auto k = static_cast<std::size_t>(sh_count(transfer_.sh_order));
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, block_count(n)), [&](const auto& blocks) {
+    for (std::size_t b = blocks.begin(); b != blocks.end(); ++b) {
+      alignas(64) float acc[3][kBlock] = {};
+      const std::size_t base = b * kBlock;
+      const std::size_t count = std::min(kBlock, n - base);
+      for (std::size_t j = 0; j < luminaires_.size(); ++j) {
+        const Luminaire& l = luminaires_[j];
+        if (!l.active) continue;
+        const LuminaireTransferView& v = transfer_.luminaires[j];
+        if (transfer_.direct_sh_mode) {
+          const float* s = v.direct_sh.data() + b * k * kBlock;
+          for (std::size_t basis = 0; basis < k; ++basis) {
+            const float* t = s + basis * kBlock;
+            for (int c = 0; c < 3; ++c) {
+              const float w = l.direct_weights[3 * basis + c];
+              for (std::size_t i = 0; i < kBlock; ++i) acc[c][i] += w * t[i];
+            }
+          }
+        } else {
+          const float* d = l.direct.data() + base;
+          for (int c = 0; c < 3; ++c) {
+            for (std::size_t i = 0; i < count; ++i) acc[c][i] += l.rgb[c] * d[i];
+          }
+        }
+        const float* t = v.indirect.data() + b * k * 3 * kBlock;
+        for (std::size_t basis = 0; basis < k; ++basis) {
+          for (int c = 0; c < 3; ++c) {
+            const float w = l.weights[3 * basis + c];
+            const float* tc = t + (3 * basis + c) * kBlock;
+            for (std::size_t i = 0; i < kBlock; ++i) acc[c][i] += w * tc[i];
+          }
+        }
+      }
+      for (std::size_t i = 0; i < count; ++i) {
+        for (int c = 0; c < 3; ++c) out[3 * (base + i) + c] = acc[c][i];
+      }
+    }
+  });
+}
+
+std::size_t Relighter::transfer_bytes() const {
+  std::size_t bytes = 0;
+  for (std::size_t j = 0; j < luminaires_.size(); ++j) {
+    if (!luminaires_[j].active) continue;
+    const LuminaireTransferView& v = transfer_.luminaires[j];
+    bytes += v.indirect.size_bytes();
+    bytes += transfer_.direct_sh_mode ? v.direct_sh.size_bytes()
+                                      : luminaires_[j].direct.size() * sizeof(float);
+  }
+  return bytes;
+}
+
+}  // namespace relight

@@ -1,0 +1,188 @@
+#include "runtime/transfer_file.h"
+
+#include <stdexcept>
+
+#include "common/input_error.h"
+#include "math/sh.h"
+#include "scene/scene_loader.h"
+#include "store/rlt_writer.h"
+#include "transfer/transfer_blocks.h"
+
+namespace relight {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr std::uint32_t kMetadata = rlt_fourcc("META");
+constexpr std::uint32_t kMeshPositions = rlt_fourcc("MPOS");
+constexpr std::uint32_t kMeshNormals = rlt_fourcc("MNRM");
+constexpr std::uint32_t kVertexAlbedo = rlt_fourcc("MALB");
+constexpr std::uint32_t kTriangles = rlt_fourcc("MTRI");
+constexpr std::uint32_t kPortalTriangles = rlt_fourcc("MPRT");
+
+// Per-luminaire sections: two type characters, then the luminaire index in the upper
+// 16 bits ("DX" + j: direction x, "DY", "DZ", "DF": direct factor, "TI": indirect SH
+// transfer, "TD": SH-basis direct in "sh" mode).
+constexpr std::uint32_t luminaire_section(char a, char b, std::size_t j) {
+  return static_cast<std::uint32_t>(static_cast<unsigned char>(a)) |
+         static_cast<std::uint32_t>(static_cast<unsigned char>(b)) << 8 |
+         static_cast<std::uint32_t>(j) << 16;
+}
+
+std::string section_name(const char* what, std::size_t j) {
+  return std::string(what) + " " + std::to_string(j);
+}
+
+}  // namespace
+
+void write_transfer_file(const fs::path& file, const Precomputed& p,
+                         const nlohmann::json& scene_document, const fs::path& scene_file) {
+  if (p.luminaires.size() > 0xFFFF) throw std::invalid_argument("too many luminaires");
+  nlohmann::json scene = scene_document;
+  scene.erase("geometry");
+  nlohmann::json phases = nlohmann::json::array();
+  for (const PhaseTiming& t : p.phases) {
+    phases.push_back({{"name", t.name}, {"seconds", t.seconds}, {"rays", t.rays}});
+  }
+  const nlohmann::json metadata = {
+      {"format", "relight transfer"},
+      {"scene_file", fs::absolute(scene_file).lexically_normal().string()},
+      {"scene", scene},
+      {"sh_order", p.sh_order},
+      {"direct", p.direct_mode},
+      {"bounces", p.bounces},
+      {"vertices", p.receivers.vertex_count},
+      {"sensors", p.receivers.sensor_count},
+      {"triangles", p.mesh.triangles.size()},
+      {"luminaires", p.luminaires.size()},
+      {"phases", phases}};
+
+  std::vector<float> positions, normals, albedo;
+  for (std::size_t v = 0; v < p.receivers.vertex_count; ++v) {
+    for (int c = 0; c < 3; ++c) {
+      positions.push_back(static_cast<float>(p.mesh.positions[v][c]));
+      normals.push_back(static_cast<float>(p.mesh.normals[v][c]));
+    }
+    const Rgb a = p.receivers.albedo[v];
+    albedo.insert(albedo.end(),
+                  {static_cast<float>(a.r), static_cast<float>(a.g), static_cast<float>(a.b)});
+  }
+  std::vector<std::uint32_t> triangles;
+  triangles.reserve(3 * p.mesh.triangles.size());
+  for (const Triangle& t : p.mesh.triangles) triangles.insert(triangles.end(), t.begin(), t.end());
+
+  RltWriter w;
+  w.add_text(kMetadata, "metadata", metadata.dump());
+  w.add_f32(kMeshPositions, "mesh positions", positions);
+  w.add_f32(kMeshNormals, "mesh normals", normals);
+  w.add_f32(kVertexAlbedo, "vertex albedo", albedo);
+  w.add_u32(kTriangles, "triangles", triangles);
+  w.add_u32(kPortalTriangles, "portal triangles", p.triangle_is_portal);
+  for (std::size_t j = 0; j < p.luminaires.size(); ++j) {
+    const LuminaireTransfer& l = p.luminaires[j];
+    w.add_f32(luminaire_section('D', 'X', j), section_name("direct dir x", j), l.direct.dir_x);
+    w.add_f32(luminaire_section('D', 'Y', j), section_name("direct dir y", j), l.direct.dir_y);
+    w.add_f32(luminaire_section('D', 'Z', j), section_name("direct dir z", j), l.direct.dir_z);
+    w.add_f32(luminaire_section('D', 'F', j), section_name("direct factor", j), l.direct.factor);
+    w.add_f32(luminaire_section('T', 'I', j), section_name("indirect sh", j), l.indirect_blocks);
+    if (!l.direct_sh_blocks.empty()) {
+      w.add_f32(luminaire_section('T', 'D', j), section_name("direct sh", j), l.direct_sh_blocks);
+    }
+  }
+  try {
+    w.write(file);
+  } catch (const std::runtime_error& e) {
+    fail_input(file.string(), e.what());
+  }
+}
+
+TransferView in_memory_view(const Precomputed& p) {
+  TransferView v;
+  v.receivers = p.receivers.size();
+  v.sh_order = p.sh_order;
+  v.direct_sh_mode = p.direct_mode == "sh";
+  for (const LuminaireTransfer& l : p.luminaires) {
+    v.luminaires.push_back({l.direct.dir_x, l.direct.dir_y, l.direct.dir_z, l.direct.factor,
+                            l.indirect_blocks, l.direct_sh_blocks});
+  }
+  return v;
+}
+
+Bounds TransferFile::bounds() const {
+  if (positions.empty()) return {};
+  Bounds b{positions.front(), positions.front()};
+  for (const Vec3& p : positions) {
+    b.min = min(b.min, p);
+    b.max = max(b.max, p);
+  }
+  return b;
+}
+
+TransferFile open_transfer_file(const fs::path& file) {
+  TransferFile t{RltFile::open(file), {}, {}, {}, {}, {}, {}, 0, 0, {}};
+  const std::string where = file.string();
+  try {
+    t.metadata = nlohmann::json::parse(t.file.text(kMetadata));
+  } catch (const nlohmann::json::exception& e) {
+    fail_input(where, std::string("metadata is not valid JSON: ") + e.what());
+  }
+  const nlohmann::json& m = t.metadata;
+  if (m.value("format", "") != "relight transfer") fail_input(where, "not a relight transfer file");
+  const fs::path scene_file = m.at("scene_file").get<std::string>();
+  t.scene = scene_from_json(m.at("scene"), scene_file);
+  t.vertex_count = m.at("vertices").get<std::size_t>();
+  t.sensor_count = m.at("sensors").get<std::size_t>();
+  const std::size_t receivers = t.vertex_count + t.sensor_count;
+  if (t.sensor_count != t.scene.sensor_count() ||
+      m.at("luminaires").get<std::size_t>() != t.scene.luminaires.size()) {
+    fail_input(where, "metadata disagrees with its scene description");
+  }
+
+  const auto positions = t.file.view<float>(kMeshPositions);
+  const auto triangles = t.file.view<std::uint32_t>(kTriangles);
+  const auto portal = t.file.view<std::uint32_t>(kPortalTriangles);
+  t.vertex_albedo = t.file.view<float>(kVertexAlbedo);
+  if (positions.size() != 3 * t.vertex_count || t.vertex_albedo.size() != 3 * t.vertex_count ||
+      triangles.size() % 3 != 0 || portal.size() != triangles.size() / 3) {
+    fail_input(where, "mesh sections have inconsistent sizes");
+  }
+  t.positions.reserve(t.vertex_count);
+  for (std::size_t v = 0; v < t.vertex_count; ++v) {
+    t.positions.push_back({positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]});
+  }
+  t.triangles.reserve(triangles.size() / 3);
+  for (std::size_t i = 0; i < triangles.size(); i += 3) {
+    const Triangle tri{triangles[i], triangles[i + 1], triangles[i + 2]};
+    for (std::uint32_t v : tri) {
+      if (v >= t.vertex_count) fail_input(where, "a triangle refers to a missing vertex");
+    }
+    if (portal[i / 3] == 0) t.opaque_triangles.push_back(static_cast<std::uint32_t>(i / 3));
+    t.triangles.push_back(tri);
+  }
+
+  t.view.receivers = receivers;
+  t.view.sh_order = m.at("sh_order").get<int>();
+  t.view.direct_sh_mode = m.at("direct").get<std::string>() == "sh";
+  if (t.view.sh_order < 1 || t.view.sh_order > 32) fail_input(where, "sh_order out of range");
+  const std::size_t k = static_cast<std::size_t>(sh_count(t.view.sh_order));
+  for (std::size_t j = 0; j < t.scene.luminaires.size(); ++j) {
+    LuminaireTransferView v;
+    v.dir_x = t.file.view<float>(luminaire_section('D', 'X', j));
+    v.dir_y = t.file.view<float>(luminaire_section('D', 'Y', j));
+    v.dir_z = t.file.view<float>(luminaire_section('D', 'Z', j));
+    v.factor = t.file.view<float>(luminaire_section('D', 'F', j));
+    v.indirect = t.file.view<float>(luminaire_section('T', 'I', j));
+    if (t.view.direct_sh_mode) v.direct_sh = t.file.view<float>(luminaire_section('T', 'D', j));
+    if (v.dir_x.size() != receivers || v.dir_y.size() != receivers || v.dir_z.size() != receivers ||
+        v.factor.size() != receivers || v.indirect.size() != blocked_floats(receivers, k, 3) ||
+        (t.view.direct_sh_mode && v.direct_sh.size() != blocked_floats(receivers, k, 1))) {
+      fail_input(where, "transfer of luminaire \"" + t.scene.luminaires[j].name +
+                            "\" has inconsistent sizes");
+    }
+    t.view.luminaires.push_back(v);
+  }
+  return t;
+}
+
+}  // namespace relight

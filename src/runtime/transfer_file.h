@@ -1,0 +1,45 @@
+// The precomputed scene as a .rlt file (docs/rlt-format.md, "Sections of a transfer
+// file"): metadata JSON (the scene without its geometry, settings, statistics), the
+// prepared mesh for rendering, and per-luminaire transfer, each quantity one section
+// holding all luminaires back to back. Opening maps the file and exposes the transfer as
+// spans for the Relighter: no copy, no parse of the large arrays.
+#pragma once
+
+#include <filesystem>
+#include <span>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "runtime/relighter.h"
+#include "scene/scene.h"
+#include "store/rlt_file.h"
+#include "transfer/precompute.h"
+
+namespace relight {
+
+// `scene_document` is the scene JSON as loaded from `scene_file`.
+void write_transfer_file(const std::filesystem::path& file, const Precomputed& precomputed,
+                         const nlohmann::json& scene_document,
+                         const std::filesystem::path& scene_file);
+
+struct TransferFile {
+  RltFile file;
+  nlohmann::json metadata;
+  Scene scene;  // materials, luminaires, sensors, cameras (geometry lives in the mesh below)
+  std::vector<Vec3> positions;
+  std::vector<Triangle> triangles;
+  std::vector<std::uint32_t> opaque_triangles;  // indices of non-portal triangles
+  std::span<const float> vertex_albedo;         // 3 per vertex
+  std::size_t vertex_count = 0, sensor_count = 0;
+  TransferView view;
+
+  Bounds bounds() const;
+};
+
+TransferFile open_transfer_file(const std::filesystem::path& file);
+
+// Views of a precompute still in memory (tests, the demo): same layout as the file.
+TransferView in_memory_view(const Precomputed& precomputed);
+
+}  // namespace relight

@@ -1,0 +1,41 @@
+// Direct light from a luminaire, precomputed as geometry only (ARCHITECTURE §4.2):
+// per receiver the unit direction ω from the luminaire's photometric centre and the
+// factor g = V · max(0, n·(−ω)) / d², V the visible fraction of the luminous opening (1 or
+// 0 for a point source). At run time E_direct = colour · dimmer · I(ω in the current
+// photometric frame) · g, evaluated exactly from the current distribution and aim: no SH
+// truncation and no ringing in direct light (going past the lighting-design paper, whose
+// direct light is the SH series itself; its mode is kept as "direct": "sh").
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "light/photometric_web.h"
+#include "trace/traced_scene.h"
+#include "transfer/receivers.h"
+
+namespace relight {
+
+struct DirectGeometry {
+  // Structure of arrays, one entry per receiver.
+  std::vector<float> dir_x, dir_y, dir_z;  // unit direction from the luminaire to the receiver
+  std::vector<float> factor;               // V · cos θ_receiver / d²  (1/m²)
+  std::uint64_t rays = 0;
+};
+
+struct OpeningFrame {
+  Vec3 aim, c0, c90;  // photometric frame at precompute time
+};
+
+// Points on (or in) the luminous opening, relative to the photometric centre: a
+// stratified pattern of about `samples` points over the opening's extent (length along
+// C0, width along C90, height along the aim, elliptical in plan for round shapes). A
+// point opening or samples <= 1 gives the centre only.
+std::vector<Vec3> opening_sample_offsets(const LuminousOpening& opening, const OpeningFrame& frame,
+                                         int samples);
+
+DirectGeometry compute_direct_geometry(const Receivers& receivers, const TracedScene& traced,
+                                       Vec3 luminaire_position,
+                                       const std::vector<Vec3>& opening_offsets, bool progress);
+
+}  // namespace relight

@@ -1,0 +1,88 @@
+#include "transfer/precompute.h"
+
+#include <chrono>
+
+#include "light/luminaire_frame.h"
+#include "math/sh.h"
+#include "trace/traced_scene.h"
+#include "transfer/bounce_solver.h"
+#include "transfer/gather_operator.h"
+#include "transfer/sh_direct.h"
+#include "transfer/transfer_blocks.h"
+
+namespace relight {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+Precomputed precompute_transfer(const Scene& scene, const PrecomputeOptions& options) {
+  using Clock = std::chrono::steady_clock;
+  Precomputed out;
+  out.sh_order = scene.precompute.sh_order;
+  out.direct_mode = scene.precompute.direct;
+
+  auto start = Clock::now();
+  out.mesh = prepare_scene_mesh(scene);
+  out.receivers = make_receivers(scene, out.mesh);
+  for (std::uint32_t m : out.mesh.triangle_material) {
+    out.triangle_is_portal.push_back(scene.materials.at(m).portal ? 1 : 0);
+  }
+  const TracedScene traced = build_traced_scene(out.mesh, scene.materials);
+  out.phases.push_back({"prepare", seconds_since(start), 0});
+
+  const GatherOperator gather =
+      build_gather_operator(out.receivers, out.mesh, traced, scene.precompute.gather_rays,
+                            scene.precompute.sensor_gather_rays, options.seed, options.progress);
+  out.phases.push_back({"gather operator", gather.seconds, gather.rays});
+
+  // Direct geometry per luminaire, and its SH-basis direct columns side by side.
+  start = Clock::now();
+  std::uint64_t direct_rays = 0;
+  const int k = sh_count(out.sh_order);
+  const auto n = static_cast<Eigen::Index>(out.receivers.size());
+  const auto luminaire_count = static_cast<Eigen::Index>(scene.luminaires.size());
+  Eigen::MatrixXf direct_columns(n, k * luminaire_count);
+  for (Eigen::Index j = 0; j < luminaire_count; ++j) {
+    const Luminaire& l = scene.luminaires[static_cast<std::size_t>(j)];
+    const PlacedLuminaire placed = place_luminaire(l);
+    const std::vector<Vec3> offsets =
+        opening_sample_offsets(placed.distribution.opening(), {placed.aim, placed.c0, placed.c90},
+                               options.opening_samples);
+    LuminaireTransfer t;
+    t.direct =
+        compute_direct_geometry(out.receivers, traced, l.position, offsets, options.progress);
+    direct_rays += t.direct.rays;
+    direct_columns.middleCols(j * k, k) = sh_basis_direct(t.direct, out.sh_order);
+    if (out.direct_mode == "sh") {
+      const Eigen::MatrixXf column_block = direct_columns.middleCols(j * k, k);
+      t.direct_sh_blocks = pack_blocks({&column_block});
+    }
+    out.luminaires.push_back(std::move(t));
+  }
+  out.phases.push_back({"direct visibility", seconds_since(start), direct_rays});
+
+  BounceSettings bounce;
+  bounce.tolerance = scene.precompute.tolerance;
+  bounce.max_bounces = scene.precompute.max_bounces;
+  const BounceResult result =
+      solve_bounces(gather, out.receivers, direct_columns, bounce, options.progress);
+  out.bounces = result.bounces;
+  out.phases.push_back({"bounces", result.seconds, 0});
+
+  start = Clock::now();
+  for (Eigen::Index j = 0; j < luminaire_count; ++j) {
+    const Eigen::MatrixXf r = result.indirect[0].middleCols(j * k, k);
+    const Eigen::MatrixXf g = result.indirect[1].middleCols(j * k, k);
+    const Eigen::MatrixXf b = result.indirect[2].middleCols(j * k, k);
+    out.luminaires[static_cast<std::size_t>(j)].indirect_blocks = pack_blocks({&r, &g, &b});
+  }
+  out.phases.push_back({"pack", seconds_since(start), 0});
+  return out;
+}
+
+}  // namespace relight
