@@ -1,6 +1,8 @@
-// `relight demo [-o DIR]`: writes the built-in furnished room as a scene file, renders
-// it with the reference path tracer (luminance PNG + EXR, false-colour illuminance PNG,
-// work-plane sensor CSV) and says where the files are.
+// `relight demo [-o DIR]`: the built-in furnished room on the precomputed path. Writes
+// the scene, precomputes it once (cached beside the images, reused while the scene is
+// unchanged), relights it under two lighting states written as state files, renders
+// and probes each, and says where the files are. `--reference` also renders the same
+// room with the independent path tracer for comparison.
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -9,9 +11,12 @@
 
 #include "cli/commands.h"
 #include "cli/demo_room.h"
+#include "cli/precompute_run.h"
 #include "cli/reference_run.h"
+#include "cli/relit_scene.h"
 #include "common/atomic_file.h"
 #include "common/input_error.h"
+#include "render/sensor_report.h"
 #include "scene/scene_loader.h"
 
 namespace relight {
@@ -22,10 +27,40 @@ namespace {
 
 struct DemoArgs {
   std::string out = "relight-demo";
-  int spp = 32;
   int width = 640, height = 400;
+  bool reference = false;
+  int spp = 32;
   bool progress = true;
 };
+
+// Two light scenes a designer might set up: a dim warm evening and a bright work light
+// with the wall washer re-aimed at the accent wall.
+const char* kEvening = R"({
+  "luminaires": {
+    "downlight left":  { "dimmer": 0.3, "cct_kelvin": 2700 },
+    "downlight right": { "dimmer": 0.3, "cct_kelvin": 2700 },
+    "wall washer":     { "on": false },
+    "pendant":         { "dimmer": 1.0, "cct_kelvin": 2200 }
+  }
+})";
+const char* kWork = R"({
+  "luminaires": {
+    "downlight left":  { "cct_kelvin": 4000 },
+    "downlight right": { "cct_kelvin": 4000 },
+    "wall washer":     { "target": [4.9, 1.0, 0.4], "cct_kelvin": 4000 },
+    "pendant":         { "on": false }
+  }
+})";
+
+bool cached_precompute_matches(const fs::path& rlt, const nlohmann::json& document) {
+  if (!fs::exists(rlt)) return false;
+  try {
+    const TransferFile t = open_transfer_file(rlt);
+    return t.metadata.value("scene_digest", "") == scene_digest(document);
+  } catch (const InputError&) {
+    return false;  // stale or damaged cache: precompute again
+  }
+}
 
 int run_demo(const DemoArgs& args) {
   const fs::path dir = args.out;
@@ -35,29 +70,63 @@ int run_demo(const DemoArgs& args) {
   const fs::path scene_file = dir / "demo-room.json";
   const nlohmann::json document = demo_room_scene();
   write_text_atomically(scene_file, document.dump(2) + "\n");
-  const Scene scene = scene_from_json(document, scene_file);
-  std::cout << "relight demo: furnished room, " << scene.geometry.triangles.size() << " triangles, "
-            << scene.luminaires.size() << " luminaires\n";
 
-  ReferenceRequest request;
-  request.spp = args.spp;
-  request.width = args.width;
-  request.height = args.height;
-  request.progress = args.progress;
-  request.sensors_out = dir / "work-plane.csv";
-  request.images = {{dir / "room.png", {}}, {dir / "room.exr", {}}, {dir / "room-lux.png", {}}};
-  FalseColor lux;
-  lux.quantity = Quantity::kIlluminance;
-  request.images.back().display.false_color = lux;
-  run_reference(scene, request);
+  const fs::path rlt = dir / "demo-room.rlt";
+  if (cached_precompute_matches(rlt, document)) {
+    std::cout << "using the cached precompute " << rlt.string() << "\n";
+  } else {
+    PrecomputeOptions options;
+    options.progress = args.progress;
+    run_precompute(document, scene_file, rlt, options);
+  }
+
+  RelitScene relit = relight_transfer_file(rlt, std::nullopt);
+  const Scene& scene = relit.transfer->scene;
+  const Camera& camera = scene.cameras.front();
+  for (const auto& [name, text] : {std::pair{"evening", kEvening}, std::pair{"work", kWork}}) {
+    const fs::path state_file = dir / (std::string(name) + ".json");
+    write_text_atomically(state_file, text);
+    relit.apply(load_lighting_state(scene, state_file));
+    const ShadedImages images = relit.render(camera, args.width, args.height);
+    const fs::path png = dir / ("room-" + std::string(name) + ".png");
+    const fs::path lux = dir / ("room-" + std::string(name) + "-lux.png");
+    const fs::path csv = dir / ("work-plane-" + std::string(name) + ".csv");
+    write_image(png, images.luminance, {});
+    DisplayOptions false_color;
+    false_color.false_color = FalseColor{};
+    false_color.false_color->quantity = Quantity::kIlluminance;
+    write_image(lux, images.illuminance, false_color);
+    const std::vector<Rgb> e = relit.sensor_irradiance();
+    write_sensor_csv(csv, scene, e);
+    std::cout << name << ": ";
+    print_sensor_statistics(std::cout, sensor_statistics(scene, e));
+  }
+
+  if (args.reference) {
+    ReferenceRequest request;
+    request.spp = args.spp;
+    request.width = args.width;
+    request.height = args.height;
+    request.progress = args.progress;
+    request.sensors_out = dir / "work-plane-reference.csv";
+    request.images = {{dir / "reference.png", {}}, {dir / "reference.exr", {}}};
+    run_reference(scene_from_json(document, scene_file), request);
+  }
 
   std::cout << "\ndemo files in " << fs::absolute(dir).lexically_normal().string() << ":\n"
-            << "  demo-room.json  the scene (edit it and run: relight reference "
-            << scene_file.string() << " -o room.png)\n"
-            << "  room.png        luminance, tone-mapped\n"
-            << "  room.exr        luminance in cd/m2 (HDR)\n"
-            << "  room-lux.png    illuminance in lux, false colour with legend\n"
-            << "  work-plane.csv  work-plane illuminance per sensor\n";
+            << "  demo-room.json           the scene\n"
+            << "  demo-room.rlt            its precomputed transfer (reused while the scene is "
+               "unchanged)\n"
+            << "  evening.json, work.json  two lighting states\n"
+            << "  room-evening.png         the room under each state, tone-mapped\n"
+            << "  room-work.png\n"
+            << "  room-*-lux.png           illuminance in lux, false colour with legend\n"
+            << "  work-plane-*.csv         work-plane illuminance per sensor\n";
+  if (args.reference) {
+    std::cout << "  reference.png/.exr       the same room by the reference path tracer\n";
+  }
+  std::cout << "try: relight render " << rlt.string() << " --state " << (dir / "work.json").string()
+            << " --false-color lux -o my-view.png\n";
   return 0;
 }
 
@@ -65,18 +134,19 @@ int run_demo(const DemoArgs& args) {
 
 void add_demo_command(CLI::App& app, Action& action) {
   auto args = std::make_shared<DemoArgs>();
-  CLI::App* cmd = app.add_subcommand("demo", "Render the built-in furnished room");
+  CLI::App* cmd = app.add_subcommand("demo", "Precompute, relight and render the built-in room");
   cmd->add_option("-o,--output", args->out, "output folder")->capture_default_str();
-  cmd->add_option("--spp", args->spp, "samples per pixel")
-      ->check(CLI::Range(1, 1 << 20))
-      ->capture_default_str();
   cmd->add_option("--width", args->width, "image width")
       ->check(CLI::Range(16, 8192))
       ->capture_default_str();
   cmd->add_option("--height", args->height, "image height")
       ->check(CLI::Range(16, 8192))
       ->capture_default_str();
-  cmd->add_flag("!--no-progress", args->progress, "no progress bar");
+  cmd->add_flag("--reference", args->reference, "also render with the reference path tracer");
+  cmd->add_option("--spp", args->spp, "reference samples per pixel")
+      ->check(CLI::Range(1, 1 << 20))
+      ->capture_default_str();
+  cmd->add_flag("!--no-progress", args->progress, "no progress bars");
   cmd->callback([args, &action] { action = [args] { return run_demo(*args); }; });
 }
 

@@ -4,9 +4,13 @@
 #include <filesystem>
 #include <memory>
 
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.h"
+#include "cli/precompute_run.h"
+#include "common/input_error.h"
 #include "runtime/transfer_file.h"
 #include "scene/scene_loader.h"
 #include "transfer/precompute.h"
@@ -23,9 +27,15 @@ struct PrecomputeArgs {
 
 }  // namespace
 
-void run_precompute(const std::filesystem::path& scene_file, const std::filesystem::path& output,
-                    const PrecomputeOptions& options) {
-  const nlohmann::json document = read_json_file(scene_file);
+void run_precompute(const nlohmann::json& document, const std::filesystem::path& scene_file,
+                    const std::filesystem::path& output, const PrecomputeOptions& options) {
+  // Refuse an unwritable destination before the long computation, not after it.
+  const std::filesystem::path folder =
+      output.has_parent_path() ? output.parent_path() : std::filesystem::path(".");
+  if (!std::filesystem::is_directory(folder) || ::access(folder.c_str(), W_OK) != 0) {
+    fail_input(output.string(),
+               "cannot write: folder " + folder.string() + " does not exist or is not writable");
+  }
   const Scene scene = scene_from_json(document, scene_file);
   const Precomputed p = precompute_transfer(scene, options);
   write_transfer_file(output, p, document, scene_file);
@@ -64,7 +74,7 @@ void add_precompute_command(CLI::App& app, Action& action) {
       PrecomputeOptions options;
       options.seed = args->seed;
       options.progress = args->progress;
-      run_precompute(args->scene, args->output, options);
+      run_precompute(read_json_file(args->scene), args->scene, args->output, options);
       return 0;
     };
   });

@@ -7,10 +7,15 @@ RelitScene relight_transfer_file(const std::filesystem::path& rlt,
   RelitScene r;
   r.transfer = std::make_unique<TransferFile>(open_transfer_file(rlt));
   r.relighter = std::make_unique<Relighter>(r.transfer->view, r.transfer->scene);
-  if (state_file) r.relighter->set_state(load_lighting_state(r.transfer->scene, *state_file));
   r.irradiance.resize(3 * r.relighter->receivers());
-  r.relighter->relight(r.irradiance);
+  r.apply(state_file ? load_lighting_state(r.transfer->scene, *state_file)
+                     : default_lighting_state(r.transfer->scene));
   return r;
+}
+
+void RelitScene::apply(const LightingState& state) {
+  relighter->set_state(state);
+  relighter->relight(irradiance);
 }
 
 std::vector<Rgb> RelitScene::sensor_irradiance() const {
@@ -20,6 +25,18 @@ std::vector<Rgb> RelitScene::sensor_irradiance() const {
     out.push_back({irradiance[r], irradiance[r + 1], irradiance[r + 2]});
   }
   return out;
+}
+
+ShadedImages RelitScene::render(const Camera& camera, int width, int height) {
+  const TransferFile& t = *transfer;
+  if (!tracer) {
+    std::vector<Triangle> opaque;
+    opaque.reserve(t.opaque_triangles.size());
+    for (std::uint32_t i : t.opaque_triangles) opaque.push_back(t.triangles[i]);
+    tracer = std::make_unique<RayTracer>(t.positions, opaque, t.opaque_triangles);
+  }
+  return shade_vertices(make_pinhole_camera(camera, width, height),
+                        {*tracer, t.positions, t.triangles, t.vertex_albedo, irradiance});
 }
 
 }  // namespace relight

@@ -1,5 +1,5 @@
-// What render, probe and bench share: open a .rlt, apply an optional lighting state,
-// relight, and hand out per-receiver irradiance.
+// What render, probe, bench and the demo share: open a .rlt, apply lighting states,
+// relight, and hand out per-receiver irradiance or rendered images.
 #pragma once
 
 #include <filesystem>
@@ -7,6 +7,7 @@
 #include <optional>
 #include <vector>
 
+#include "render/vertex_shading.h"
 #include "runtime/relighter.h"
 #include "runtime/transfer_file.h"
 
@@ -15,10 +16,15 @@ namespace relight {
 struct RelitScene {
   std::unique_ptr<TransferFile> transfer;  // stable address: the Relighter refers to it
   std::unique_ptr<Relighter> relighter;
-  std::vector<float> irradiance;  // 3 per receiver: vertices, then sensors
+  std::unique_ptr<RayTracer> tracer;      // opaque triangles, built on first render
+  std::vector<float> irradiance;          // 3 per receiver: vertices, then sensors
 
+  // Applies a state and relights.
+  void apply(const LightingState& state);
   // Sensor illuminance in scene order.
   std::vector<Rgb> sensor_irradiance() const;
+  // Per-vertex radiance seen through a camera (Gouraud-equivalent).
+  ShadedImages render(const Camera& camera, int width, int height);
 };
 
 RelitScene relight_transfer_file(const std::filesystem::path& rlt,

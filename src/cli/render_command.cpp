@@ -24,7 +24,7 @@ struct RenderArgs {
 int run_render(const RenderArgs& args) {
   const auto start = std::chrono::steady_clock::now();
   const DisplayOptions display = display_options(args.view);
-  const RelitScene relit = relight_transfer_file(
+  RelitScene relit = relight_transfer_file(
       args.rlt,
       args.state.empty() ? std::nullopt : std::optional<std::filesystem::path>(args.state));
   const TransferFile& t = *relit.transfer;
@@ -32,13 +32,7 @@ int run_render(const RenderArgs& args) {
       t.scene,
       args.view.camera.empty() ? std::nullopt : std::optional<std::string>(args.view.camera),
       t.bounds());
-  std::vector<Triangle> opaque;
-  opaque.reserve(t.opaque_triangles.size());
-  for (std::uint32_t i : t.opaque_triangles) opaque.push_back(t.triangles[i]);
-  const RayTracer tracer(t.positions, opaque, t.opaque_triangles);
-  const ShadedImages images =
-      shade_vertices(make_pinhole_camera(camera, args.view.width, args.view.height),
-                     {tracer, t.positions, t.triangles, t.vertex_albedo, relit.irradiance});
+  const ShadedImages images = relit.render(camera, args.view.width, args.view.height);
   const bool lux = display.false_color && display.false_color->quantity == Quantity::kIlluminance;
   const DisplayReport report =
       write_image(args.view.output, lux ? images.illuminance : images.luminance, display);

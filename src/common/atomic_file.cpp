@@ -1,5 +1,9 @@
 #include "common/atomic_file.h"
 
+#include "common/input_error.h"
+
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <random>
 #include <stdexcept>
@@ -23,6 +27,10 @@ void write_atomically(const fs::path& target, const std::function<void(const fs:
   try {
     write(tmp);
     fs::rename(tmp, target);
+  } catch (const fs::filesystem_error& e) {
+    std::error_code ignored;
+    fs::remove(tmp, ignored);
+    fail_input(target.string(), "cannot write: " + e.code().message());
   } catch (...) {
     std::error_code ignored;
     fs::remove(tmp, ignored);
@@ -35,7 +43,7 @@ void write_text_atomically(const fs::path& target, std::string_view text) {
     std::ofstream out(tmp, std::ios::binary);
     out.write(text.data(), static_cast<std::streamsize>(text.size()));
     out.close();
-    if (!out) throw std::runtime_error("cannot write " + target.string());
+    if (!out) fail_input(target.string(), std::string("cannot write: ") + std::strerror(errno));
   });
 }
 

@@ -10,7 +10,9 @@
 namespace relight {
 
 // Calls write(tmp) with a temporary path in the target's folder, then renames tmp
-// onto target. If write throws, the temporary is removed and the target untouched.
+// onto target. If write throws, the temporary is removed and the target untouched; a
+// failing rename or text write is an InputError naming the target (exit code 2: the
+// user chose the path).
 void write_atomically(const std::filesystem::path& target,
                       const std::function<void(const std::filesystem::path& tmp)>& write);
 

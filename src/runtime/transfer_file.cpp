@@ -1,11 +1,13 @@
 #include "runtime/transfer_file.h"
 
+#include <cstdio>
 #include <stdexcept>
 
 #include "common/input_error.h"
 #include "math/sh.h"
 #include "scene/scene_loader.h"
 #include "store/rlt_writer.h"
+#include "store/xxh64.h"
 #include "transfer/transfer_blocks.h"
 
 namespace relight {
@@ -36,6 +38,14 @@ std::string section_name(const char* what, std::size_t j) {
 
 }  // namespace
 
+std::string scene_digest(const nlohmann::json& scene_document) {
+  const std::string text = scene_document.dump();
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx",
+                static_cast<unsigned long long>(xxh64(std::as_bytes(std::span(text)))));
+  return hex;
+}
+
 void write_transfer_file(const fs::path& file, const Precomputed& p,
                          const nlohmann::json& scene_document, const fs::path& scene_file) {
   if (p.luminaires.size() > 0xFFFF) throw std::invalid_argument("too many luminaires");
@@ -48,6 +58,7 @@ void write_transfer_file(const fs::path& file, const Precomputed& p,
   const nlohmann::json metadata = {
       {"format", "relight transfer"},
       {"scene_file", fs::absolute(scene_file).lexically_normal().string()},
+      {"scene_digest", scene_digest(scene_document)},
       {"scene", scene},
       {"sh_order", p.sh_order},
       {"direct", p.direct_mode},

@@ -18,6 +18,10 @@
 
 namespace relight {
 
+// A digest of a scene document (XXH64 of its canonical dump), stored in the metadata
+// as "scene_digest" so that a cached .rlt can be matched to the scene it came from.
+std::string scene_digest(const nlohmann::json& scene_document);
+
 // `scene_document` is the scene JSON as loaded from `scene_file`.
 void write_transfer_file(const std::filesystem::path& file, const Precomputed& precomputed,
                          const nlohmann::json& scene_document,

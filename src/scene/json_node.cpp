@@ -76,7 +76,7 @@ void JsonNode::expect_keys(std::initializer_list<std::string_view> allowed) cons
     if (!known) {
       std::string list;
       for (std::string_view a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
-      fail_input(child_pointer(where(), escape_pointer_token(key)),
+      fail_input(file_ + ":" + child_pointer(pointer_, escape_pointer_token(key)),
                  "unknown key \"" + key + "\" (expected one of: " + list + ")");
     }
   }

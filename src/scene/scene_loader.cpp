@@ -228,8 +228,8 @@ struct Loader {
   }
 
   void load_precompute(const JsonNode& p) {
-    p.expect_keys({"max_edge", "sh_order", "crease_deg", "gather_rays", "tolerance", "max_bounces",
-                   "direct"});
+    p.expect_keys({"max_edge", "sh_order", "crease_deg", "gather_rays", "sensor_gather_rays",
+                   "tolerance", "max_bounces", "direct"});
     PrecomputeSettings& s = scene.precompute;
     if (const auto n = p.find("max_edge")) s.max_edge = n->positive();
     if (const auto n = p.find("sh_order")) s.sh_order = n->integer_in(1, 32);

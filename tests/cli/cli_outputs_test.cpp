@@ -96,14 +96,22 @@ TEST(CliOutputs, ReferenceWritesPngAndExr) {
 TEST(CliOutputs, DemoWritesItsFilesAndSaysWhere) {
   TempDir dir;
   const auto out = dir.path() / "demo";
-  const auto r =
-      run_relight("demo -o '" + out.string() + "' --spp 1 --width 48 --height 32 --no-progress");
+  const auto r = run_relight("demo -o '" + out.string() +
+                             "' --reference --spp 1 --width 48 --height 32 --no-progress");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   for (const char* f :
-       {"demo-room.json", "room.png", "room.exr", "room-lux.png", "work-plane.csv"}) {
+       {"demo-room.json", "demo-room.rlt", "evening.json", "work.json", "room-evening.png",
+        "room-work.png", "room-evening-lux.png", "room-work-lux.png", "work-plane-evening.csv",
+        "work-plane-work.csv", "reference.png", "reference.exr", "work-plane-reference.csv"}) {
     EXPECT_TRUE(std::filesystem::exists(out / f)) << f;
   }
   EXPECT_NE(r.out.find("demo files in"), std::string::npos);
+  EXPECT_NE(r.out.find("bounces"), std::string::npos);
+  // A second run reuses the precompute while the scene is unchanged.
+  const auto again =
+      run_relight("demo -o '" + out.string() + "' --width 48 --height 32 --no-progress");
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_NE(again.out.find("using the cached precompute"), std::string::npos) << again.out;
   // The scene the demo wrote is a valid scene file.
   EXPECT_EQ(run_relight("info '" + (out / "demo-room.json").string() + "'").exit_code, 0);
 }
