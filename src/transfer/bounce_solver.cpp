@@ -43,22 +43,6 @@ ColumnChange add(ColumnChange a, const ColumnChange& b) {
 // gathered = G · reflected for every receiver row, where reflected = diag(ρ) · E(n) on
 // vertex rows. Since E(n+1) = E_d + gathered on vertex rows, the change of E is the change
 // of `gathered`, measured here before each row is overwritten.
-// One row of G · reflected: sum[k] = Σ_nz value · reflected[index][k]. The hot loop of
-// the solver: plain loops compiled twice (AVX2+FMA and baseline x86-64) and chosen at
-// load time by the CPU, so the same binary runs everywhere and uses wide vectors where
-// it can (measured ~2x over Eigen's SSE product on the demo room).
-__attribute__((target_clones("arch=x86-64-v3", "default"))) void gather_row(
-    const Gather::StorageIndex* __restrict index, const float* __restrict value,
-    Eigen::Index nonzeros, const float* __restrict reflected, Eigen::Index columns,
-    float* __restrict sum) {
-  for (Eigen::Index k = 0; k < columns; ++k) sum[k] = 0;
-  for (Eigen::Index nz = 0; nz < nonzeros; ++nz) {
-    const float v = value[nz];
-    const float* __restrict src = reflected + static_cast<Eigen::Index>(index[nz]) * columns;
-    for (Eigen::Index k = 0; k < columns; ++k) sum[k] += v * src[k];
-  }
-}
-
 ColumnChange gather_bounce(const Gather& g, const RowMatrix& reflected, const RowMatrix& direct,
                            RowMatrix& gathered) {
   const Eigen::Index columns = reflected.cols(), vertices = direct.rows();
@@ -68,9 +52,10 @@ ColumnChange gather_bounce(const Gather& g, const RowMatrix& reflected, const Ro
       [&](const tbb::blocked_range<Eigen::Index>& rows, ColumnChange change) {
         Eigen::RowVectorXf sum(columns);
         for (Eigen::Index i = rows.begin(); i != rows.end(); ++i) {
-          const Eigen::Index first = g.outerIndexPtr()[i], last = g.outerIndexPtr()[i + 1];
-          gather_row(g.innerIndexPtr() + first, g.valuePtr() + first, last - first,
-                     reflected.data(), columns, sum.data());
+          sum.setZero();
+          for (Gather::InnerIterator it(g, i); it; ++it) {
+            sum.noalias() += it.value() * reflected.row(it.index());
+          }
           if (i < vertices) {
             for (Eigen::Index k = 0; k < columns; ++k) {
               const double d = double{sum[k]} - gathered(i, k);
