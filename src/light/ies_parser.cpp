@@ -8,8 +8,8 @@
 #include <string>
 
 #include "common/input_error.h"
+#include "common/read_file.h"
 #include "light/number_text.h"
-#include "light/text_file.h"
 
 namespace relight {
 namespace {
@@ -277,7 +277,7 @@ IesData parse_ies(std::string_view text, const std::filesystem::path& file) {
       in.fail_at(tilt_line,
                  "TILT file '" + data.tilt + "' not found (looked for " + tilt_file.string() + ")");
     }
-    const std::string tilt_text = read_text_file(tilt_file);
+    const std::string tilt_text = read_file(tilt_file, kMaxPhotometryFileBytes);
     NumberStream tilt_in{tokenize(tilt_text, 1), tilt_file, count_lines(tilt_text)};
     data.tilt_table = read_tilt_block(tilt_in);
   }
@@ -389,7 +389,7 @@ PhotometricWeb make_ies_web(const IesData& data) {
 }
 
 PhotometricWeb load_ies(const std::filesystem::path& file) {
-  return make_ies_web(parse_ies(read_text_file(file), file));
+  return make_ies_web(parse_ies(read_file(file, kMaxPhotometryFileBytes), file));
 }
 
 }  // namespace relight

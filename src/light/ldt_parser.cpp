@@ -9,8 +9,8 @@
 #include <string>
 
 #include "common/input_error.h"
+#include "common/read_file.h"
 #include "light/number_text.h"
-#include "light/text_file.h"
 
 namespace relight {
 namespace {
@@ -397,7 +397,7 @@ PhotometricWeb make_ldt_web(const LdtData& data) {
 }
 
 PhotometricWeb load_ldt(const std::filesystem::path& file) {
-  return make_ldt_web(parse_ldt(read_text_file(file), file));
+  return make_ldt_web(parse_ldt(read_file(file, kMaxPhotometryFileBytes), file));
 }
 
 }  // namespace relight

@@ -10,6 +10,8 @@
 // form per cell, see flux_lm), so it agrees with what intensity() returns to rounding.
 #pragma once
 
+#include <cstdint>
+
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -43,6 +45,9 @@ enum class OpeningShape {
 };
 
 std::string_view to_string(OpeningShape shape);
+
+// Photometric files are small; anything larger is not one (and is not read whole).
+inline constexpr std::uintmax_t kMaxPhotometryFileBytes = 64u << 20;
 
 struct LuminousOpening {
   OpeningShape shape = OpeningShape::kPoint;

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "common/input_error.h"
+#include "common/read_file.h"
 
 namespace relight {
 
@@ -192,11 +193,7 @@ nlohmann::json parse_json_text(const std::string& text, const std::string& name)
 }
 
 nlohmann::json read_json_file(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) fail_input(file.string(), "cannot open file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_json_text(text.str(), file.string());
+  return parse_json_text(read_file(file), file.string());
 }
 
 }  // namespace relight

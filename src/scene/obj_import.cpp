@@ -21,6 +21,7 @@
 #include <tiny_obj_loader.h>
 
 #include "common/input_error.h"
+#include "common/read_file.h"
 #include "scene/mesh_import_polygon.h"
 
 namespace relight {
@@ -203,15 +204,6 @@ ObjScan scan_obj(const std::filesystem::path& file, std::string_view text) {
   return scan;
 }
 
-std::string read_text(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) fail_input(file.string(), "cannot open file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) fail_input(file.string(), "cannot read file");
-  return std::move(text).str();
-}
-
 // Reads .mtl files relative to the .obj's folder (tinyobjloader's own reader splits its search
 // path at ':', which breaks on such folder names). A missing file is a warning.
 class MtlFileReader : public tinyobj::MaterialReader {
@@ -236,7 +228,7 @@ class MtlFileReader : public tinyobj::MaterialReader {
 }  // namespace
 
 ImportedMesh import_obj(const std::filesystem::path& file) {
-  const std::string text = read_text(file);
+  const std::string text = read_file(file);
   ObjScan scan = scan_obj(file, text);
 
   tinyobj::attrib_t attrib;

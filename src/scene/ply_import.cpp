@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "common/input_error.h"
+#include "common/read_file.h"
 #include "scene/mesh_import_bytes.h"
 #include "scene/mesh_import_polygon.h"
 
@@ -311,15 +312,6 @@ double srgb_to_linear(double c) {
   return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
 }
 
-std::string read_bytes(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) fail_input(file.string(), "cannot open file");
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  if (in.bad()) fail_input(file.string(), "cannot read file");
-  return std::move(bytes).str();
-}
-
 // Which property of an element feeds which value we keep.
 enum class Role { kSkip, kX, kY, kZ, kFaceIndices, kRed, kGreen, kBlue };
 
@@ -360,7 +352,7 @@ std::size_t min_binary_size(const PlyElement& element) {
 }  // namespace
 
 ImportedMesh import_ply(const std::filesystem::path& file) {
-  const std::string data = read_bytes(file);
+  const std::string data = read_file(file);
   const PlyHeader header = parse_header(file, data);
 
   const PlyElement* vertex_element = nullptr;

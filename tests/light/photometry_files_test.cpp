@@ -9,7 +9,7 @@
 
 #include "light/ies_parser.h"
 #include "light/ldt_parser.h"
-#include "light/text_file.h"
+#include "common/read_file.h"
 #include "photometry_test_support.h"
 
 namespace relight {
@@ -152,7 +152,7 @@ TEST_F(PhotometryFiles, AbsoluteIesFilesMatchTheirStatedLuminaireLumens) {
   int checked = 0;
   for (const auto& f : loadable()) {
     if (!f.ies) continue;
-    const IesData data = parse_ies(read_text_file(f.path), f.path);
+    const IesData data = parse_ies(read_file(f.path), f.path);
     for (const auto& k : data.keywords) {
       if (k.name != "_TOTALLUMINAIRELUMENS") continue;
       SCOPED_TRACE(f.name);
@@ -210,7 +210,7 @@ TEST_F(PhotometryFiles, SymmetryExpansionKeepsStoredValuesAndMirrorsThem) {
   for (const auto& f : loadable()) {
     SCOPED_TRACE(f.name);
     if (f.ies) {
-      const IesData d = parse_ies(read_text_file(f.path), f.path);
+      const IesData d = parse_ies(read_file(f.path), f.path);
       const PhotometricWeb web = make_ies_web(d);
       const std::size_t nv = d.vertical_deg.size();
       for (std::size_t h = 0; h < d.horizontal_deg.size(); ++h) {
@@ -218,7 +218,7 @@ TEST_F(PhotometryFiles, SymmetryExpansionKeepsStoredValuesAndMirrorsThem) {
                             &d.candela[h * nv], ies_candela_scale(d));
       }
     } else {
-      const LdtData d = parse_ldt(read_text_file(f.path), f.path);
+      const LdtData d = parse_ldt(read_file(f.path), f.path);
       const PhotometricWeb web = make_ldt_web(d);
       const CSymmetry symmetry[] = {CSymmetry::kNone, CSymmetry::kAxial,
                                     CSymmetry::kBilateralC0C180, CSymmetry::kBilateralC90C270,

@@ -1,5 +1,4 @@
-// Whole-file reads for the photometric parsers (see text_file.h).
-#include "light/text_file.h"
+#include "common/read_file.h"
 
 #include <fstream>
 #include <sstream>
@@ -9,15 +8,17 @@
 
 namespace relight {
 
-std::string read_text_file(const std::filesystem::path& file) {
-  constexpr std::uintmax_t kMaxBytes = 64u << 20;
+std::string read_file(const std::filesystem::path& file, std::uintmax_t max_bytes) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(file, ec)) {
-    fail_input(file.string(), "cannot read file: it does not exist or is not a regular file");
+    fail_input(file.string(), "cannot open file: it does not exist or is not a regular file");
   }
   const std::uintmax_t size = std::filesystem::file_size(file, ec);
   if (ec) fail_input(file.string(), "cannot read file: " + ec.message());
-  if (size > kMaxBytes) fail_input(file.string(), "file too large for photometric data");
+  if (size > max_bytes) {
+    fail_input(file.string(), "file too large (" + std::to_string(size) + " bytes, at most " +
+                                  std::to_string(max_bytes) + " expected)");
+  }
   std::ifstream in(file, std::ios::binary);
   if (!in) fail_input(file.string(), "cannot open file");
   std::ostringstream content;
