@@ -10,8 +10,10 @@ namespace relight {
 
 std::string read_file(const std::filesystem::path& file, std::uintmax_t max_bytes) {
   std::error_code ec;
+  if (!std::filesystem::exists(file, ec))
+    fail_input(file.string(), "cannot open file: no such file");
   if (!std::filesystem::is_regular_file(file, ec)) {
-    fail_input(file.string(), "cannot open file: it does not exist or is not a regular file");
+    fail_input(file.string(), "cannot open file: not a regular file");
   }
   const std::uintmax_t size = std::filesystem::file_size(file, ec);
   if (ec) fail_input(file.string(), "cannot read file: " + ec.message());

@@ -239,7 +239,8 @@ TEST_F(LightingStateFiles, OtherBadValues) {
   const CommandResult r = run_relight("probe '" + rlt_.string() + "' --state '" +
                                       state_path("absent.json").string() + "'");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_EQ(r.err, "error: " + state_path("absent.json").string() + ": cannot open file\n");
+  EXPECT_EQ(r.err,
+            "error: " + state_path("absent.json").string() + ": cannot open file: no such file\n");
 }
 
 TEST_F(LightingStateFiles, RenderReportsStateErrorsToo) {
