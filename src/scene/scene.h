@@ -32,6 +32,11 @@ struct Luminaire {
   Vec3 c0{1, 0, 0};     // unit, orthogonal to aim
   Rgb color{1, 1, 1};   // chromaticity only: normalised so that luminance(color) == 1
   double dimmer = 1.0;  // 0..1 multiplier on the photometry
+  // Physical luminous opening [width along C90, length along C0, height along the aim]
+  // in metres, overriding the IES/LDT dimensions (or giving analytic distributions
+  // one); all zero means a point source. Used for fractional direct visibility.
+  Vec3 size{0, 0, 0};
+  bool has_size = false;
   DistributionSpec distribution;
   std::string where;  // "FILE:JSON-PATH", for messages
 };

@@ -144,7 +144,7 @@ struct Loader {
   void load_luminaires(const JsonNode& node) {
     std::set<std::string> names;
     for (const JsonNode& l : node.elements()) {
-      l.expect_keys({"name", "position", "aim", "c0", "color", "dimmer", "distribution"});
+      l.expect_keys({"name", "position", "aim", "c0", "color", "dimmer", "size", "distribution"});
       Luminaire lum;
       lum.where = l.where();
       lum.name = l.at("name").string();
@@ -163,6 +163,13 @@ struct Loader {
         lum.color = color / luminance(color);
       }
       if (const auto d = l.find("dimmer")) lum.dimmer = d->number_at_least(0);
+      if (const auto s = l.find("size")) {
+        lum.size = s->vec3();
+        if (lum.size.x < 0 || lum.size.y < 0 || lum.size.z < 0) {
+          s->fail("size [width, length, height] must not be negative");
+        }
+        lum.has_size = true;
+      }
       lum.distribution = parse_distribution(l.at("distribution"), base_dir);
       scene.luminaires.push_back(std::move(lum));
     }

@@ -370,5 +370,36 @@ TEST(RelightAccuracy, FurnishedRoomImageMatchesReference) {
   EXPECT_LE(p80, 0.06);
 }
 
+TEST(RelightAccuracy, LuminousOpeningGivesFractionalVisibilityAtAShadowEdge) {
+  // A blocker covering x < 0 at height 1 between a downlight at height 2 and the floor:
+  // a sensor right below the blocker's edge sees exactly half of a symmetric 0.4 m
+  // opening (a point source there would be fully visible or fully hidden), and a sensor
+  // well inside the shadow sees none of it.
+  json scene = {{"materials", {{"black", {{"albedo", {0, 0, 0}}}}}},
+                {"geometry",
+                 {{{"type", "quad"},
+                   {"corner", {-10, 0, -10}},
+                   {"u", {0, 0, 20}},
+                   {"v", {20, 0, 0}},
+                   {"material", "black"}},
+                  {{"type", "quad"},
+                   {"corner", {-5, 1, -5}},
+                   {"u", {5, 0, 0}},
+                   {"v", {0, 0, 10}},
+                   {"material", "black"}}}},
+                {"luminaires",
+                 {{{"name", "panel"},
+                   {"position", {0, 2, 0}},
+                   {"size", {0.4, 0.4, 0}},
+                   {"distribution", {{"type", "isotropic"}, {"candela", 100}}}}}},
+                {"sensors", {{{"name", "s"}, {"points", {{0, 0, 0}, {-1, 0, 0}, {1, 0, 0}}}}}},
+                {"precompute", {{"max_edge", 5}, {"gather_rays", 8}, {"sensor_gather_rays", 8}}}};
+  const Relit r = precompute_and_relight(scene);
+  EXPECT_NEAR(luminance(r.sensors[0]), 0.5 * 100 / 4.0, 1e-4);
+  EXPECT_NEAR(luminance(r.sensors[1]), 0.0, 1e-6);
+  const double lit = 100 * 2 / std::pow(4 + 1, 1.5);
+  EXPECT_NEAR(luminance(r.sensors[2]), lit, 1e-4 * lit);
+}
+
 }  // namespace
 }  // namespace relight
