@@ -20,6 +20,22 @@ bool same_distribution(const DistributionSpec& a, const DistributionSpec& b) {
          a.curve_candela == b.curve_candela && a.file == b.file;
 }
 
+// The one control point in which two curves of equal length differ, or -1.
+int single_moved_point(const DistributionSpec& a, const DistributionSpec& b) {
+  if (a.type != DistributionType::kCurve || b.type != DistributionType::kCurve ||
+      a.gamma_deg.size() != b.gamma_deg.size()) {
+    return -1;
+  }
+  int moved = -1;
+  for (std::size_t i = 0; i < a.gamma_deg.size(); ++i) {
+    if (a.gamma_deg[i] != b.gamma_deg[i] || a.curve_candela[i] != b.curve_candela[i]) {
+      if (moved >= 0) return -1;
+      moved = static_cast<int>(i);
+    }
+  }
+  return moved;
+}
+
 }  // namespace
 
 Relighter::Relighter(TransferView transfer, const Scene& scene, RelighterSettings settings)
@@ -45,13 +61,45 @@ void Relighter::set_state(const LightingState& state) {
   state_ = state;
 }
 
+void Relighter::project_distribution(std::size_t j, const LuminaireState& s) {
+  Luminaire& l = luminaires_[j];
+  const LuminaireShSettings sh_settings{transfer_.sh_order, settings_.window};
+  l.distribution = load_distribution(s.distribution);
+  if (s.distribution.type != DistributionType::kCurve) {
+    l.curve.reset();
+    l.sh = luminaire_world_sh(l.distribution, s.aim, s.c0, sh_settings);
+    return;
+  }
+  // Curves: when one control point moved, update the Legendre weights by Eq. 21 (only the
+  // samples next to the point change); otherwise build the projector anew.
+  const int moved =
+      l.curve ? single_moved_point(state_.luminaires[j].distribution, s.distribution) : -1;
+  bool incremental = false;
+  if (moved >= 0) {
+    try {
+      const auto k = static_cast<std::size_t>(moved);
+      move_curve_point(*l.curve, moved, radians(s.distribution.gamma_deg[k]),
+                       s.distribution.curve_candela[k]);
+      incremental = true;
+      ++incremental_curve_updates_;
+    } catch (const std::exception&) {
+      // A move the projector cannot take (e.g. past a neighbour): project anew below.
+    }
+  }
+  const bool unchanged =
+      l.curve && same_distribution(state_.luminaires[j].distribution, s.distribution);
+  if (!incremental && !unchanged) {  // a re-aimed curve keeps its projector
+    l.curve = make_curve_projector(std::get<CurveModel>(l.distribution.model), sh_settings);
+  }
+  l.sh.resize(static_cast<std::size_t>(sh_count(transfer_.sh_order)));
+  curve_world_sh(*l.curve, s.aim, l.sh);
+}
+
 void Relighter::update_luminaire(std::size_t j, const LuminaireState& s, bool geometry_changed) {
   Luminaire& l = luminaires_[j];
   const int k = sh_count(transfer_.sh_order);
   if (geometry_changed) {
-    l.distribution = load_distribution(s.distribution);
-    l.sh = luminaire_world_sh(l.distribution, s.aim, s.c0,
-                              LuminaireShSettings{transfer_.sh_order, settings_.window});
+    project_distribution(j, s);
     if (!transfer_.direct_sh_mode) {
       // Exact direct: the current distribution evaluated toward every receiver.
       const LuminaireTransferView& v = transfer_.luminaires[j];

@@ -11,12 +11,14 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <span>
 #include <vector>
 
 #include "light/distribution.h"
 #include "math/sh_window.h"
 #include "runtime/lighting_state.h"
+#include "runtime/luminaire_sh_curve.h"
 #include "scene/scene.h"
 
 namespace relight {
@@ -52,27 +54,33 @@ class Relighter {
   void relight(std::span<float> out) const;
 
   std::size_t receivers() const { return transfer_.receivers; }
+  // How many distribution changes were one moved curve control point, updated
+  // incrementally (the lighting-design paper's Eq. 21) instead of projected anew.
+  std::size_t incremental_curve_updates() const { return incremental_curve_updates_; }
   // Bytes of stored transfer one relight() reads.
   std::size_t transfer_bytes() const;
 
  private:
   struct Luminaire {
     Distribution distribution;
-    std::vector<double> sh;             // world-frame SH coefficients of I (windowed)
-    std::vector<float> direct;          // D_r without colour (exact mode)
-    std::vector<float> weights;         // K × 3: rgb_c · w_k (indirect)
-    std::vector<float> direct_weights;  // K × 3: rgb_c · w_k ("sh" mode direct)
+    std::vector<double> sh;               // world-frame SH coefficients of I (windowed)
+    std::optional<CurveProjector> curve;  // kept for curve distributions (Eq. 19-21)
+    std::vector<float> direct;            // D_r without colour (exact mode)
+    std::vector<float> weights;           // K × 3: rgb_c · w_k (indirect)
+    std::vector<float> direct_weights;    // K × 3: rgb_c · w_k ("sh" mode direct)
     float rgb[3] = {0, 0, 0};
     bool active = false;
   };
 
   void update_luminaire(std::size_t j, const LuminaireState& s, bool geometry_changed);
+  void project_distribution(std::size_t j, const LuminaireState& s);
 
   TransferView transfer_;
   const Scene& scene_;
   RelighterSettings settings_;
   LightingState state_;
   std::vector<Luminaire> luminaires_;
+  std::size_t incremental_curve_updates_ = 0;
 };
 
 }  // namespace relight
