@@ -38,7 +38,7 @@ void run_precompute(const nlohmann::json& document, const std::filesystem::path&
   }
   const Scene scene = scene_from_json(document, scene_file);
   const Precomputed p = precompute_transfer(scene, options);
-  write_transfer_file(output, p, document, scene_file);
+  write_transfer_file(output, p, scene, document, scene_file);
 
   std::uint64_t rays = 0;
   double seconds = 0;

@@ -194,6 +194,11 @@ Distribution load_distribution(const DistributionSpec& spec) {
     case DistributionType::kIes:
     case DistributionType::kLdt: {
       const char* kind = spec.type == DistributionType::kIes ? "IES" : "EULUMDAT";
+      if (spec.contents) {
+        return {spec.type == DistributionType::kIes
+                    ? make_ies_web(parse_ies(*spec.contents, spec.file))
+                    : make_ldt_web(parse_ldt(*spec.contents, spec.file))};
+      }
       if (spec.file.empty()) fail_input(where, std::string("no ") + kind + " file given");
       std::error_code ec;
       if (!std::filesystem::is_regular_file(spec.file, ec)) {

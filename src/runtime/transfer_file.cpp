@@ -4,6 +4,8 @@
 #include <stdexcept>
 
 #include "common/input_error.h"
+#include "common/read_file.h"
+#include "light/photometric_web.h"
 #include "math/sh.h"
 #include "scene/scene_loader.h"
 #include "store/rlt_writer.h"
@@ -46,7 +48,7 @@ std::string scene_digest(const nlohmann::json& scene_document) {
   return hex;
 }
 
-void write_transfer_file(const fs::path& file, const Precomputed& p,
+void write_transfer_file(const fs::path& file, const Precomputed& p, const Scene& source,
                          const nlohmann::json& scene_document, const fs::path& scene_file) {
   if (p.luminaires.size() > 0xFFFF) throw std::invalid_argument("too many luminaires");
   nlohmann::json scene = scene_document;
@@ -55,7 +57,17 @@ void write_transfer_file(const fs::path& file, const Precomputed& p,
   for (const PhaseTiming& t : p.phases) {
     phases.push_back({{"name", t.name}, {"seconds", t.seconds}, {"rays", t.rays}});
   }
+  // Photometry files, one text section per luminaire that has one ("PH" + index).
+  std::vector<std::string> photometry(source.luminaires.size());
+  nlohmann::json photometry_files = nlohmann::json::array();
+  for (std::size_t j = 0; j < source.luminaires.size(); ++j) {
+    const DistributionSpec& d = source.luminaires[j].distribution;
+    if (d.type != DistributionType::kIes && d.type != DistributionType::kLdt) continue;
+    photometry[j] = d.contents ? *d.contents : read_file(d.file, kMaxPhotometryFileBytes);
+    photometry_files.push_back({{"luminaire", j}, {"file", d.file.string()}});
+  }
   const nlohmann::json metadata = {
+      {"photometry", photometry_files},
       {"format", "relight transfer"},
       {"scene_file", fs::absolute(scene_file).lexically_normal().string()},
       {"scene_digest", scene_digest(scene_document)},
@@ -97,6 +109,9 @@ void write_transfer_file(const fs::path& file, const Precomputed& p,
     w.add_f32(luminaire_section('D', 'Z', j), section_name("direct dir z", j), l.direct.dir_z);
     w.add_f32(luminaire_section('D', 'F', j), section_name("direct factor", j), l.direct.factor);
     w.add_f32(luminaire_section('T', 'I', j), section_name("indirect sh", j), l.indirect_blocks);
+    if (!photometry[j].empty()) {
+      w.add_text(luminaire_section('P', 'H', j), section_name("photometry", j), photometry[j]);
+    }
     if (!l.direct_sh_blocks.empty()) {
       w.add_f32(luminaire_section('T', 'D', j), section_name("direct sh", j), l.direct_sh_blocks);
     }
@@ -141,7 +156,13 @@ TransferFile open_transfer_file(const fs::path& file) {
   const nlohmann::json& m = t.metadata;
   if (m.value("format", "") != "relight transfer") fail_input(where, "not a relight transfer file");
   const fs::path scene_file = m.at("scene_file").get<std::string>();
-  t.scene = scene_from_json(m.at("scene"), scene_file);
+  EmbeddedFiles embedded;
+  for (const nlohmann::json& f : m.value("photometry", nlohmann::json::array())) {
+    const std::size_t j = f.at("luminaire").get<std::size_t>();
+    embedded[f.at("file").get<std::string>()] =
+        std::make_shared<const std::string>(t.file.text(luminaire_section('P', 'H', j)));
+  }
+  t.scene = scene_from_json(m.at("scene"), scene_file, &embedded);
   t.vertex_count = m.at("vertices").get<std::size_t>();
   t.sensor_count = m.at("sensors").get<std::size_t>();
   const std::size_t receivers = t.vertex_count + t.sensor_count;

@@ -23,8 +23,10 @@ namespace relight {
 std::string scene_digest(const nlohmann::json& scene_document);
 
 // `scene_document` is the scene JSON as loaded from `scene_file`.
+// The IES/LDT files of the scene's luminaires are stored in the file too, so a .rlt
+// keeps the photometry it was computed with, wherever the scene's folder goes.
 void write_transfer_file(const std::filesystem::path& file, const Precomputed& precomputed,
-                         const nlohmann::json& scene_document,
+                         const Scene& scene, const nlohmann::json& scene_document,
                          const std::filesystem::path& scene_file);
 
 struct TransferFile {

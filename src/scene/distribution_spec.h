@@ -5,6 +5,7 @@
 #pragma once
 
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -20,7 +21,10 @@ struct DistributionSpec {
   std::vector<double> gamma_deg;      // curve: control points, ascending from 0
   std::vector<double> curve_candela;  // curve: intensity at each control point (cd)
   std::filesystem::path file;         // ies, ldt: resolved against the scene's folder
-  std::string where;                  // "FILE:JSON-PATH" of the entry, for messages
+  // ies, ldt: the file's text when it came embedded (a .rlt keeps the photometry it was
+  // computed with); read from `file` when null.
+  std::shared_ptr<const std::string> contents;
+  std::string where;  // "FILE:JSON-PATH" of the entry, for messages
 };
 
 }  // namespace relight

@@ -17,6 +17,7 @@ namespace {
 struct Loader {
   Scene scene;
   fs::path base_dir;
+  const EmbeddedFiles* embedded = nullptr;
   std::map<std::string, std::uint32_t> material_index;
 
   std::uint32_t material_named(const JsonNode& node) {
@@ -170,7 +171,7 @@ struct Loader {
         }
         lum.has_size = true;
       }
-      lum.distribution = parse_distribution(l.at("distribution"), base_dir);
+      lum.distribution = parse_distribution(l.at("distribution"), base_dir, embedded);
       scene.luminaires.push_back(std::move(lum));
     }
   }
@@ -259,13 +260,21 @@ struct Loader {
 
 }  // namespace
 
-DistributionSpec parse_distribution(const JsonNode& node, const fs::path& base_dir) {
+DistributionSpec parse_distribution(const JsonNode& node, const fs::path& base_dir,
+                                    const EmbeddedFiles* embedded) {
   DistributionSpec d;
   d.where = node.where();
   const std::string type = node.at("type").string();
   auto resolve = [&](const JsonNode& f) {
     const fs::path relative = f.string();
     const fs::path path = relative.is_absolute() ? relative : base_dir / relative;
+    if (embedded) {
+      const auto it = embedded->find(path.string());
+      if (it != embedded->end()) {
+        d.contents = it->second;
+        return path;
+      }
+    }
     if (!fs::is_regular_file(path)) f.fail("file not found: " + path.string());
     return path;
   };
@@ -311,13 +320,15 @@ DistributionSpec parse_distribution(const JsonNode& node, const fs::path& base_d
   return d;
 }
 
-Scene scene_from_json(const nlohmann::json& document, const fs::path& file) {
+Scene scene_from_json(const nlohmann::json& document, const fs::path& file,
+                      const EmbeddedFiles* embedded) {
   const JsonNode root(document, file.string(), "/");
   root.expect_keys(
       {"description", "materials", "geometry", "luminaires", "sensors", "cameras", "precompute"});
   Loader loader;
   loader.scene.file = file;
   loader.base_dir = file.has_parent_path() ? file.parent_path() : fs::path(".");
+  loader.embedded = embedded;
   if (const auto n = root.find("description")) n->string();
   if (const auto n = root.find("materials")) loader.load_materials(*n);
   if (const auto n = root.find("geometry")) loader.load_geometry(*n);

@@ -4,18 +4,27 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
+#include <memory>
+#include <string>
 
 #include "scene/json_node.h"
 #include "scene/scene.h"
 
 namespace relight {
 
+// Photometry files carried along (by a .rlt file), keyed by resolved path: used instead
+// of reading the disk.
+using EmbeddedFiles = std::map<std::string, std::shared_ptr<const std::string>>;
+
 Scene load_scene(const std::filesystem::path& file);
 // The same from an already parsed document; `file` names it in messages and gives the
 // folder for relative paths.
-Scene scene_from_json(const nlohmann::json& document, const std::filesystem::path& file);
+Scene scene_from_json(const nlohmann::json& document, const std::filesystem::path& file,
+                      const EmbeddedFiles* embedded = nullptr);
 
 // Parses a distribution object D (shared with run-time lighting states).
-DistributionSpec parse_distribution(const JsonNode& node, const std::filesystem::path& base_dir);
+DistributionSpec parse_distribution(const JsonNode& node, const std::filesystem::path& base_dir,
+                                    const EmbeddedFiles* embedded = nullptr);
 
 }  // namespace relight
