@@ -45,15 +45,30 @@ void to_amplitudes(std::span<double> coefficients, int n) {
       for (int c = 0; c < n; ++c) coefficients[start + r * n + c] /= haar2d_support(n, r, c);
 }
 
+// How a record's values are quantised: uint8 against `scale` (pulse S, Haar S₀), or for a Haar
+// detail int8 against `detail_scale`.
+struct Quantiser {
+  double scale = 0;
+  double detail_scale = 0;    // Haar only
+  std::size_t face_mask = 0;  // Haar: N² − 1 (index in face = k & mask); 0 for pulse
+  double threshold = 0;
+
+  bool is_detail(std::size_t k) const { return (k & face_mask) != 0; }
+  // The quantised value, 0 when dropped.
+  long operator()(std::size_t k, double v) const {
+    if (v == 0.0) return 0;
+    const bool detail = is_detail(k);
+    const double s = detail ? detail_scale : scale;
+    if (std::abs(v) < threshold * s) return 0;
+    return std::lround(v / s * (detail ? kHaarLevels : kPulseLevels));
+  }
+};
+
 template <class F>
-std::size_t count_kept(std::span<const double> values, double scale, double levels,
-                       double threshold, F&& visit) {
+std::size_t for_each_kept(std::span<const double> values, const Quantiser& quantise, F&& visit) {
   std::size_t m = 0;
-  const double cut = threshold * scale;
   for (std::size_t k = 0; k < values.size(); ++k) {
-    const double v = values[k];
-    if (v == 0.0 || std::abs(v) < cut) continue;
-    const long q = std::lround(v / scale * levels);
+    const long q = quantise(k, values[k]);
     if (q == 0) continue;
     visit(k, q);
     ++m;
@@ -71,17 +86,22 @@ std::uint32_t get_uint(const std::uint8_t* p, std::size_t width) {
   return v;
 }
 
-void write_record(int n, CubemapCodeKind kind, float scale, std::span<const double> values,
-                  double levels, double threshold, std::vector<std::uint8_t>& out,
-                  std::size_t count) {
+void put_float(std::vector<std::uint8_t>& out, float f) {
+  put_uint(out, std::bit_cast<std::uint32_t>(f), 4);
+}
+
+void write_record(int n, CubemapCodeKind kind, const Quantiser& quantise,
+                  std::span<const double> values, std::size_t count,
+                  std::vector<std::uint8_t>& out) {
   const std::size_t w = cubemap_code_index_bytes(n);
   out.push_back(static_cast<std::uint8_t>(kind));
-  put_uint(out, std::bit_cast<std::uint32_t>(scale), 4);
+  put_float(out, static_cast<float>(quantise.scale));
+  if (kind == CubemapCodeKind::kHaar) put_float(out, static_cast<float>(quantise.detail_scale));
   put_uint(out, static_cast<std::uint32_t>(count), w);
-  count_kept(values, scale, levels, threshold,
-             [&](std::size_t k, long) { put_uint(out, static_cast<std::uint32_t>(k), w); });
-  count_kept(values, scale, levels, threshold, [&](std::size_t, long q) {
-    out.push_back(static_cast<std::uint8_t>(static_cast<std::int8_t>(q)));  // uint8 or int8
+  for_each_kept(values, quantise,
+                [&](std::size_t k, long) { put_uint(out, static_cast<std::uint32_t>(k), w); });
+  for_each_kept(values, quantise, [&](std::size_t, long q) {
+    out.push_back(static_cast<std::uint8_t>(q & 0xff));  // uint8, or int8 two's complement
   });
 }
 
@@ -89,21 +109,38 @@ void write_record(int n, CubemapCodeKind kind, float scale, std::span<const doub
   throw InputError("cubemap record: " + reason);
 }
 
-// Calls visit(index, value byte) for each entry, checking indices are increasing and < limit.
+// The value of entry byte q: unsigned, or signed for a Haar detail (index in face ≠ 0).
+struct EntryValue {
+  double scale = 0, detail_scale = 0;
+  std::size_t face_mask = 0;
+  double operator()(std::size_t k, std::uint8_t q) const {
+    return (k & face_mask) != 0 ? static_cast<std::int8_t>(q) * detail_scale : q * scale;
+  }
+};
+
+EntryValue entry_value(const CubemapRecord& rec, int n) {
+  if (rec.kind == CubemapCodeKind::kHaar)
+    return {rec.scale / kPulseLevels, rec.detail_scale / kHaarLevels, std::size_t(n) * n - 1};
+  return {rec.scale / kPulseLevels, 0.0, 0};
+}
+
+// Calls visit(index, value) for each entry, checking indices are increasing and < limit.
 template <class F>
-void for_each_entry(const CubemapRecord& rec, std::size_t w, std::size_t limit, F&& visit) {
-  const std::uint8_t* idx = rec.indices.data();
+void for_each_entry(const CubemapRecord& rec, int n, F&& visit) {
+  const std::size_t w = cubemap_code_index_bytes(n), limit = cell_count(n);
+  const EntryValue value = entry_value(rec, n);
   std::size_t previous = 0;
   for (std::size_t e = 0; e < rec.count; ++e) {
-    const std::size_t k = get_uint(idx + e * w, w);
+    const std::size_t k = get_uint(rec.indices.data() + e * w, w);
     if (k >= limit || (e > 0 && k <= previous)) bad_record("index out of range or not increasing");
     previous = k;
-    visit(k, rec.values[e]);
+    visit(k, value(k, rec.values[e]));
   }
 }
 
-template <std::size_t W, class Table, class Weight>
-Rgb sparse_dot(const CubemapRecord& rec, const Table& table, Weight&& weight) {
+// The hot loop: Σ table[k]·value(k, q) over the entries.
+template <std::size_t W>
+Rgb sparse_dot(const CubemapRecord& rec, const std::vector<Rgb>& table, const EntryValue& value) {
   const std::uint8_t* idx = rec.indices.data();
   const std::uint8_t* val = rec.values.data();
   const std::size_t limit = table.size();
@@ -111,7 +148,7 @@ Rgb sparse_dot(const CubemapRecord& rec, const Table& table, Weight&& weight) {
   for (std::size_t e = 0; e < rec.count; ++e) {
     const std::size_t k = get_uint(idx + e * W, W);
     if (k >= limit) bad_record("index out of range");
-    acc += table[k] * weight(val[e]);
+    acc += table[k] * value(k, val[e]);
   }
   return acc;
 }
@@ -141,35 +178,46 @@ EncodedReceiver encode_receiver_cubemap(int n, std::span<const double> cells,
     return result;
   }
 
-  const double tau = options.threshold;
   const auto none = [](std::size_t, long) {};
-  const float pulse_scale = scale_at_least(vmax);
-  const std::size_t pulse_count = count_kept(cells, pulse_scale, kPulseLevels, tau, none);
+  Quantiser pulse;
+  pulse.scale = scale_at_least(vmax);
+  pulse.threshold = options.threshold;
+  const std::size_t pulse_count = for_each_kept(cells, pulse, none);
 
   std::vector<double>& amp = scratch.coefficients;
   amp.assign(cells.begin(), cells.end());
   scratch.row.resize(n);
   haar2d_forward_faces(amp, n, scratch.row);
   to_amplitudes(amp, n);
-  double amax = 0.0;
-  for (double a : amp) amax = std::max(amax, std::abs(a));
-  const float haar_scale = scale_at_least(amax);
-  const std::size_t haar_count = count_kept(amp, haar_scale, kHaarLevels, tau, none);
+  Quantiser haar;
+  haar.face_mask = std::size_t(n) * n - 1;
+  haar.threshold = options.threshold;
+  double mean_max = 0.0, detail_max = 0.0;
+  for (std::size_t k = 0; k < amp.size(); ++k) {
+    if (haar.is_detail(k))
+      detail_max = std::max(detail_max, std::abs(amp[k]));
+    else
+      mean_max = std::max(mean_max, amp[k]);
+  }
+  haar.scale = scale_at_least(mean_max);
+  haar.detail_scale = scale_at_least(detail_max);
+  const std::size_t haar_count = for_each_kept(amp, haar, none);
 
-  result.pulse_bytes = cubemap_record_bytes(n, pulse_count);
-  result.haar_bytes = cubemap_record_bytes(n, haar_count);
-  const bool haar =
+  result.pulse_bytes = cubemap_record_bytes(n, CubemapCodeKind::kPulse, pulse_count);
+  result.haar_bytes = cubemap_record_bytes(n, CubemapCodeKind::kHaar, haar_count);
+  const bool use_haar =
       options.choice == CubemapBasisChoice::kHaar ||
       (options.choice == CubemapBasisChoice::kSmaller && result.haar_bytes < result.pulse_bytes);
   const std::size_t before = out.size();
-  if (haar) {
+  if (use_haar) {
     result.kind = CubemapCodeKind::kHaar;
-    result.scale = haar_scale;
-    write_record(n, result.kind, haar_scale, amp, kHaarLevels, tau, out, haar_count);
+    result.scale = static_cast<float>(haar.scale);
+    result.detail_scale = static_cast<float>(haar.detail_scale);
+    write_record(n, result.kind, haar, amp, haar_count, out);
   } else {
     result.kind = CubemapCodeKind::kPulse;
-    result.scale = pulse_scale;
-    write_record(n, result.kind, pulse_scale, cells, kPulseLevels, tau, out, pulse_count);
+    result.scale = static_cast<float>(pulse.scale);
+    write_record(n, result.kind, pulse, cells, pulse_count, out);
   }
   result.bytes = out.size() - before;
   return result;
@@ -193,15 +241,21 @@ CubemapRecord parse_cubemap_record(int n, std::span<const std::uint8_t> bytes) {
     bad_record("unknown kind " + std::to_string(kind));
   rec.kind = static_cast<CubemapCodeKind>(kind);
   const std::size_t w = cubemap_code_index_bytes(n);
-  if (bytes.size() < 1 + 4 + w) bad_record("truncated header");
+  const std::size_t scales = rec.kind == CubemapCodeKind::kHaar ? 8 : 4;
+  if (bytes.size() < 1 + scales + w) bad_record("truncated header");
   rec.scale = std::bit_cast<float>(get_uint(bytes.data() + 1, 4));
   if (!(rec.scale > 0.0f && std::isfinite(rec.scale))) bad_record("scale not positive and finite");
-  rec.count = get_uint(bytes.data() + 5, w);
+  if (rec.kind == CubemapCodeKind::kHaar) {
+    rec.detail_scale = std::bit_cast<float>(get_uint(bytes.data() + 5, 4));
+    if (!(rec.detail_scale >= 0.0f && std::isfinite(rec.detail_scale)))
+      bad_record("detail scale negative or not finite");
+  }
+  rec.count = get_uint(bytes.data() + 1 + scales, w);
   if (rec.count == 0 || rec.count > cell_count(n)) bad_record("entry count out of range");
-  rec.bytes = cubemap_record_bytes(n, rec.count);
+  rec.bytes = cubemap_record_bytes(n, rec.kind, rec.count);
   if (bytes.size() < rec.bytes) bad_record("truncated entries");
-  rec.indices = bytes.subspan(1 + 4 + w, rec.count * w);
-  rec.values = bytes.subspan(1 + 4 + w + rec.count * w, rec.count);
+  rec.indices = bytes.subspan(1 + scales + w, rec.count * w);
+  rec.values = bytes.subspan(1 + scales + w + rec.count * w, rec.count);
   return rec;
 }
 
@@ -211,17 +265,13 @@ std::size_t decode_receiver_cubemap(int n, std::span<const std::uint8_t> bytes,
   if (cells.size() != cell_count(n))
     throw std::invalid_argument("cubemap decoding: output must hold 6·N² cells");
   std::fill(cells.begin(), cells.end(), 0.0);
-  const std::size_t w = cubemap_code_index_bytes(n);
-  const double s = rec.scale;
   if (rec.kind == CubemapCodeKind::kPulse) {
-    for_each_entry(rec, w, cells.size(),
-                   [&](std::size_t k, std::uint8_t q) { cells[k] = q * s / kPulseLevels; });
+    for_each_entry(rec, n, [&](std::size_t k, double t) { cells[k] = t; });
   } else if (rec.kind == CubemapCodeKind::kHaar) {
     const std::size_t nn = std::size_t(n) * n;
-    for_each_entry(rec, w, cells.size(), [&](std::size_t k, std::uint8_t q) {
-      const std::size_t in_face = k % nn;
-      const int support = haar2d_support(n, static_cast<int>(in_face / n), static_cast<int>(in_face % n));
-      cells[k] = static_cast<std::int8_t>(q) * s / kHaarLevels * support;
+    for_each_entry(rec, n, [&](std::size_t k, double a) {
+      const std::size_t p = k % nn;
+      cells[k] = a * haar2d_support(n, static_cast<int>(p / n), static_cast<int>(p % n));
     });
     haar2d_inverse_faces(cells, n, scratch);
   }
@@ -258,20 +308,11 @@ ShellCubemap prepare_shell_cubemap(int n, std::span<const Rgb> radiance) {
 
 Rgb dot_receiver_cubemap(std::span<const std::uint8_t> bytes, const ShellCubemap& shell) {
   const CubemapRecord rec = parse_cubemap_record(shell.n, bytes);
-  const bool narrow = cubemap_code_index_bytes(shell.n) == 2;
-  if (rec.kind == CubemapCodeKind::kPulse) {
-    const auto weight = [](std::uint8_t q) { return static_cast<double>(q); };
-    const Rgb sum = narrow ? sparse_dot<2>(rec, shell.cells, weight)
-                           : sparse_dot<4>(rec, shell.cells, weight);
-    return sum * (rec.scale / kPulseLevels);
-  }
-  if (rec.kind == CubemapCodeKind::kHaar) {
-    const auto weight = [](std::uint8_t q) { return static_cast<double>(static_cast<std::int8_t>(q)); };
-    const Rgb sum =
-        narrow ? sparse_dot<2>(rec, shell.haar, weight) : sparse_dot<4>(rec, shell.haar, weight);
-    return sum * (rec.scale / kHaarLevels);
-  }
-  return {};
+  if (rec.kind == CubemapCodeKind::kEmpty) return {};
+  const EntryValue value = entry_value(rec, shell.n);
+  const std::vector<Rgb>& table = rec.kind == CubemapCodeKind::kPulse ? shell.cells : shell.haar;
+  return cubemap_code_index_bytes(shell.n) == 2 ? sparse_dot<2>(rec, table, value)
+                                                : sparse_dot<4>(rec, table, value);
 }
 
 void add_receiver(CubemapEncodingStats& stats, const EncodedReceiver& receiver) {
