@@ -87,7 +87,7 @@ int run_demo(const DemoArgs& args) {
     const fs::path state_file = dir / (std::string(name) + ".json");
     write_text_atomically(state_file, text);
     relit.apply(load_lighting_state(scene, state_file));
-    const ShadedImages images = relit.render(camera, args.width, args.height);
+    const ShadedImages images = relit.render(camera, args.width, args.height, true);
     const fs::path png = dir / ("room-" + std::string(name) + ".png");
     const fs::path lux = dir / ("room-" + std::string(name) + "-lux.png");
     const fs::path csv = dir / ("work-plane-" + std::string(name) + ".csv");

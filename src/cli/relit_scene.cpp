@@ -1,5 +1,7 @@
 #include "cli/relit_scene.h"
 
+#include "render/pixel_direct.h"
+
 namespace relight {
 
 RelitScene relight_transfer_file(const std::filesystem::path& rlt,
@@ -27,7 +29,7 @@ std::vector<Rgb> RelitScene::sensor_irradiance() const {
   return out;
 }
 
-ShadedImages RelitScene::render(const Camera& camera, int width, int height) {
+ShadedImages RelitScene::render(const Camera& camera, int width, int height, bool pixel_direct) {
   const TransferFile& t = *transfer;
   if (!tracer) {
     std::vector<Triangle> opaque;
@@ -35,8 +37,18 @@ ShadedImages RelitScene::render(const Camera& camera, int width, int height) {
     for (std::uint32_t i : t.opaque_triangles) opaque.push_back(t.triangles[i]);
     tracer = std::make_unique<RayTracer>(t.positions, opaque, t.opaque_triangles);
   }
-  return shade_vertices(make_pinhole_camera(camera, width, height),
-                        {*tracer, t.positions, t.triangles, t.vertex_albedo, irradiance});
+  const PinholeCamera pinhole = make_pinhole_camera(camera, width, height);
+  if (!pixel_direct) {
+    return shade_vertices(pinhole,
+                          {*tracer, t.positions, t.triangles, t.vertex_albedo, irradiance, {}});
+  }
+  std::vector<float> indirect(irradiance.size());
+  relighter->relight(indirect, false);
+  const std::vector<PixelLight> lights = pixel_lights(t.scene, *relighter);
+  const RayTracer& occluders = *tracer;
+  return shade_vertices(
+      pinhole, {*tracer, t.positions, t.triangles, t.vertex_albedo, indirect,
+                [&](Vec3 p, Vec3 n) { return exact_direct_irradiance(occluders, lights, p, n); }});
 }
 
 }  // namespace relight

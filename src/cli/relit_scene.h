@@ -16,15 +16,17 @@ namespace relight {
 struct RelitScene {
   std::unique_ptr<TransferFile> transfer;  // stable address: the Relighter refers to it
   std::unique_ptr<Relighter> relighter;
-  std::unique_ptr<RayTracer> tracer;      // opaque triangles, built on first render
-  std::vector<float> irradiance;          // 3 per receiver: vertices, then sensors
+  std::unique_ptr<RayTracer> tracer;  // opaque triangles, built on first render
+  std::vector<float> irradiance;      // 3 per receiver: vertices, then sensors
 
   // Applies a state and relights.
   void apply(const LightingState& state);
   // Sensor illuminance in scene order.
   std::vector<Rgb> sensor_irradiance() const;
-  // Per-vertex radiance seen through a camera (Gouraud-equivalent).
-  ShadedImages render(const Camera& camera, int width, int height);
+  // Per-vertex radiance seen through a camera (Gouraud-equivalent); with
+  // `pixel_direct`, direct light is evaluated exactly at each pixel's surface point and
+  // only the interreflected light is interpolated between vertices.
+  ShadedImages render(const Camera& camera, int width, int height, bool pixel_direct = false);
 };
 
 RelitScene relight_transfer_file(const std::filesystem::path& rlt,

@@ -17,7 +17,7 @@ namespace relight {
 namespace {
 
 struct RenderArgs {
-  std::string rlt, state;
+  std::string rlt, state, direct = "vertex";
   ViewArgs view;
 };
 
@@ -32,7 +32,8 @@ int run_render(const RenderArgs& args) {
       t.scene,
       args.view.camera.empty() ? std::nullopt : std::optional<std::string>(args.view.camera),
       t.bounds());
-  const ShadedImages images = relit.render(camera, args.view.width, args.view.height);
+  const ShadedImages images =
+      relit.render(camera, args.view.width, args.view.height, args.direct == "pixel");
   const bool lux = display.false_color && display.false_color->quantity == Quantity::kIlluminance;
   const DisplayReport report =
       write_image(args.view.output, lux ? images.illuminance : images.luminance, display);
@@ -53,6 +54,10 @@ void add_render_command(CLI::App& app, Action& action) {
   cmd->add_option("scene", args->rlt, "precomputed .rlt file")->required();
   cmd->add_option("--state", args->state, "lighting state JSON (default: the scene's own)");
   add_view_options(*cmd, args->view);
+  cmd->add_option("--direct", args->direct,
+                  "vertex: per-vertex radiance interpolated (Gouraud, default); pixel: direct "
+                  "light exact at every pixel, interreflection interpolated")
+      ->check(CLI::IsMember({"vertex", "pixel"}));
   cmd->get_option("-o")->required();
   cmd->callback([args, &action] { action = [args] { return run_render(*args); }; });
 }

@@ -29,14 +29,20 @@ ShadedImages shade_vertices(const PinholeCamera& camera, const VertexShadingInpu
           if (!hit.hit()) continue;
           const Triangle& t = in.triangles[hit.triangle];
           const Vec3 a = in.positions[t[0]], b = in.positions[t[1]], c = in.positions[t[2]];
-          if (dot(cross(b - a, c - a), dir) >= 0) continue;  // back faces absorb: black
+          const Vec3 face = cross(b - a, c - a);
+          if (dot(face, dir) >= 0) continue;  // back faces absorb: black
           const double bary[3] = {1 - hit.u - hit.v, hit.u, hit.v};
-          Rgb e, l;
+          Rgb e, albedo;
           for (int k = 0; k < 3; ++k) {
-            const Rgb ek = vertex_rgb(in.irradiance, t[k]);
-            e += ek * bary[k];
-            l += vertex_rgb(in.vertex_albedo, t[k]) * ek * (bary[k] / kPi);
+            e += vertex_rgb(in.irradiance, t[k]) * bary[k];
+            albedo += vertex_rgb(in.vertex_albedo, t[k]) * bary[k];
           }
+          if (in.direct_at_hit) {
+            e += in.direct_at_hit(a * bary[0] + b * bary[1] + c * bary[2], normalize(face));
+          }
+          // Per-vertex albedo is constant within a triangle (vertices split at material
+          // boundaries), so ρ/π · E interpolates like per-vertex radiance.
+          const Rgb l = albedo * e * (1 / kPi);
           e_sum += e;
           l_sum += l;
           ++covered;

@@ -5,6 +5,7 @@
 // Luminance of a vertex is albedo/π · E (diffuse); back faces show black.
 #pragma once
 
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -21,6 +22,9 @@ struct VertexShadingInput {
   const std::vector<Triangle>& triangles;
   std::span<const float> vertex_albedo;  // 3 per vertex
   std::span<const float> irradiance;     // 3 per vertex (lux), at least 3·vertices
+  // When set, irradiance holds interreflected light only and this gives the direct
+  // irradiance at each hit point and its geometric normal (render/pixel_direct.h).
+  std::function<Rgb(Vec3 point, Vec3 normal)> direct_at_hit;
 };
 
 struct ShadedImages {

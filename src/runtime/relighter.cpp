@@ -134,7 +134,7 @@ void Relighter::update_luminaire(std::size_t j, const LuminaireState& s, bool ge
   if (transfer_.direct_sh_mode) l.direct_weights = l.weights;
 }
 
-void Relighter::relight(std::span<float> out) const {
+void Relighter::relight(std::span<float> out, bool include_direct) const {
   const std::size_t n = transfer_.receivers;
   if (out.size() != 3 * n) throw std::invalid_argument("Relighter: output size mismatch");
   const auto k = static_cast<std::size_t>(sh_count(transfer_.sh_order));
@@ -147,7 +147,9 @@ void Relighter::relight(std::span<float> out) const {
         const Luminaire& l = luminaires_[j];
         if (!l.active) continue;
         const LuminaireTransferView& v = transfer_.luminaires[j];
-        if (transfer_.direct_sh_mode) {
+        if (!include_direct) {
+          // interreflected light only
+        } else if (transfer_.direct_sh_mode) {
           const float* s = v.direct_sh.data() + b * k * kBlock;
           for (std::size_t basis = 0; basis < k; ++basis) {
             const float* t = s + basis * kBlock;

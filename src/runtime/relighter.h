@@ -50,8 +50,13 @@ class Relighter {
   void set_state(const LightingState& state);
   const LightingState& state() const { return state_; }
 
-  // Irradiance per receiver, RGB interleaved: out.size() == 3 · receivers.
-  void relight(std::span<float> out) const;
+  // Irradiance per receiver, RGB interleaved: out.size() == 3 · receivers. Without
+  // direct light only the interreflected part (for renderers that evaluate direct light
+  // themselves, per pixel).
+  void relight(std::span<float> out, bool include_direct = true) const;
+
+  // The current photometry of luminaire j (as loaded for its state).
+  const Distribution& distribution(std::size_t j) const { return luminaires_.at(j).distribution; }
 
   std::size_t receivers() const { return transfer_.receivers; }
   // How many distribution changes were one moved curve control point, updated

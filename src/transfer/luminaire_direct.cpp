@@ -57,6 +57,36 @@ std::vector<Vec3> opening_sample_offsets(const LuminousOpening& opening, const O
   return out;
 }
 
+LuminousOpening luminaire_opening(const Luminaire& l, const LuminousOpening& from_file) {
+  if (!l.has_size) return from_file;
+  return {l.size.z > 0 ? OpeningShape::kRectangularWithLuminousSides : OpeningShape::kRectangular,
+          l.size.x, l.size.y, l.size.z};
+}
+
+DirectFactor direct_factor(const RayTracer& occluders, Vec3 p, Vec3 normal, Vec3 luminaire_position,
+                           const std::vector<Vec3>& opening_offsets, std::uint64_t& rays) {
+  const Vec3 d = p - luminaire_position;
+  const double dist = length(d);
+  DirectFactor out{dist > 0 ? d / dist : Vec3{0, -1, 0}, 0};
+  const double cos_receiver = -dot(normal, out.direction);
+  if (dist <= kLightMargin || cos_receiver <= 0) return out;
+  // Visible fraction of the opening, seen from the point.
+  const Vec3 origin = offset_from_surface(p, normal);
+  int visible = 0;
+  for (const Vec3& offset : opening_offsets) {
+    const Vec3 to_light = luminaire_position + offset - origin;
+    const double span = length(to_light);
+    ++rays;
+    if (span <= kLightMargin ||
+        !occluders.occluded({origin, to_light / span, 0, span - kLightMargin})) {
+      ++visible;
+    }
+  }
+  const double fraction = static_cast<double>(visible) / opening_offsets.size();
+  out.factor = fraction * cos_receiver / (dist * dist);
+  return out;
+}
+
 DirectGeometry compute_direct_geometry(const Receivers& receivers, const TracedScene& traced,
                                        Vec3 luminaire_position,
                                        const std::vector<Vec3>& opening_offsets, bool progress) {
@@ -72,32 +102,13 @@ DirectGeometry compute_direct_geometry(const Receivers& receivers, const TracedS
     std::uint64_t local_rays = 0;
     for (std::size_t r = range.begin(); r != range.end(); ++r) {
       bar.advance();
-      const Vec3 p = receivers.positions[r], normal = receivers.normals[r];
-      const Vec3 d = p - luminaire_position;
-      const double dist = length(d);
-      const Vec3 w = dist > 0 ? d / dist : Vec3{0, -1, 0};
-      g.dir_x[r] = static_cast<float>(w.x);
-      g.dir_y[r] = static_cast<float>(w.y);
-      g.dir_z[r] = static_cast<float>(w.z);
-      const double cos_receiver = -dot(normal, w);
-      if (dist <= kLightMargin || cos_receiver <= 0) {
-        g.factor[r] = 0;
-        continue;
-      }
-      // Visible fraction of the opening, seen from the receiver.
-      const Vec3 origin = offset_from_surface(p, normal);
-      int visible = 0;
-      for (const Vec3& offset : opening_offsets) {
-        const Vec3 to_light = luminaire_position + offset - origin;
-        const double span = length(to_light);
-        ++local_rays;
-        if (span <= kLightMargin ||
-            !traced.opaque.occluded({origin, to_light / span, 0, span - kLightMargin})) {
-          ++visible;
-        }
-      }
-      const double fraction = static_cast<double>(visible) / opening_offsets.size();
-      g.factor[r] = static_cast<float>(fraction * cos_receiver / (dist * dist));
+      const DirectFactor f =
+          direct_factor(traced.opaque, receivers.positions[r], receivers.normals[r],
+                        luminaire_position, opening_offsets, local_rays);
+      g.dir_x[r] = static_cast<float>(f.direction.x);
+      g.dir_y[r] = static_cast<float>(f.direction.y);
+      g.dir_z[r] = static_cast<float>(f.direction.z);
+      g.factor[r] = static_cast<float>(f.factor);
     }
     rays += local_rays;
   });

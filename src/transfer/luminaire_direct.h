@@ -34,6 +34,21 @@ struct OpeningFrame {
 std::vector<Vec3> opening_sample_offsets(const LuminousOpening& opening, const OpeningFrame& frame,
                                          int samples);
 
+// The luminous opening the transfer uses: the scene's `size` when given, else the
+// IES/LDT dimensions (a point for analytic distributions).
+LuminousOpening luminaire_opening(const Luminaire& luminaire, const LuminousOpening& from_file);
+
+struct DirectFactor {
+  Vec3 direction;     // unit, from the luminaire to the point
+  double factor = 0;  // V · cos θ / d² (1/m²)
+};
+
+// The direct geometry at one surface point p with unit normal n: what
+// compute_direct_geometry stores per receiver, and what a per-pixel renderer evaluates
+// at each hit. `rays` counts the shadow rays cast.
+DirectFactor direct_factor(const RayTracer& occluders, Vec3 p, Vec3 n, Vec3 luminaire_position,
+                           const std::vector<Vec3>& opening_offsets, std::uint64_t& rays);
+
 DirectGeometry compute_direct_geometry(const Receivers& receivers, const TracedScene& traced,
                                        Vec3 luminaire_position,
                                        const std::vector<Vec3>& opening_offsets, bool progress);

@@ -50,14 +50,9 @@ Precomputed precompute_transfer(const Scene& scene, const PrecomputeOptions& opt
   for (Eigen::Index j = 0; j < luminaire_count; ++j) {
     const Luminaire& l = scene.luminaires[static_cast<std::size_t>(j)];
     const PlacedLuminaire placed = place_luminaire(l);
-    LuminousOpening opening = placed.distribution.opening();
-    if (l.has_size) {  // the scene's size overrides the file's dimensions
-      opening = {l.size.z > 0 ? OpeningShape::kRectangularWithLuminousSides
-                              : OpeningShape::kRectangular,
-                 l.size.x, l.size.y, l.size.z};
-    }
-    const std::vector<Vec3> offsets = opening_sample_offsets(
-        opening, {placed.aim, placed.c0, placed.c90}, options.opening_samples);
+    const std::vector<Vec3> offsets =
+        opening_sample_offsets(luminaire_opening(l, placed.distribution.opening()),
+                               {placed.aim, placed.c0, placed.c90}, options.opening_samples);
     LuminaireTransfer t;
     t.direct =
         compute_direct_geometry(out.receivers, traced, l.position, offsets, options.progress);
