@@ -178,7 +178,6 @@ std::size_t stored_plane_count(int isym, std::size_t mc) {
     case 1:
       return 1;
     case 2:
-      return mc / 2 + 1;
     case 3:
       return mc / 2 + 1;
     case 4:

@@ -26,22 +26,22 @@ template <class T>
 void step_forward(T* x, std::ptrdiff_t stride, int h, T* tmp) {
   const int half = h / 2;
   for (int k = 0; k < half; ++k) {
-    const T a = x[2 * k * stride], b = x[(2 * k + 1) * stride];
+    const T a = x[std::ptrdiff_t{2} * k * stride], b = x[(std::ptrdiff_t{2} * k + 1) * stride];
     tmp[k] = (a + b) * kInvSqrt2;
     tmp[half + k] = (a - b) * kInvSqrt2;
   }
-  for (int k = 0; k < h; ++k) x[k * stride] = tmp[k];
+  for (int k = 0; k < h; ++k) x[std::ptrdiff_t{k} * stride] = tmp[k];
 }
 
 template <class T>
 void step_inverse(T* x, std::ptrdiff_t stride, int h, T* tmp) {
   const int half = h / 2;
   for (int k = 0; k < half; ++k) {
-    const T a = x[k * stride], d = x[(half + k) * stride];
-    tmp[2 * k] = (a + d) * kInvSqrt2;
-    tmp[2 * k + 1] = (a - d) * kInvSqrt2;
+    const T a = x[std::ptrdiff_t{k} * stride], d = x[(std::ptrdiff_t{half} + k) * stride];
+    tmp[std::ptrdiff_t{2} * k] = (a + d) * kInvSqrt2;
+    tmp[std::ptrdiff_t{2} * k + 1] = (a - d) * kInvSqrt2;
   }
-  for (int k = 0; k < h; ++k) x[k * stride] = tmp[k];
+  for (int k = 0; k < h; ++k) x[std::ptrdiff_t{k} * stride] = tmp[k];
 }
 
 template <class T>

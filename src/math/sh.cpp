@@ -27,7 +27,7 @@ struct RecurrenceTable {
   std::vector<Recurrence> ab;              // [l * kTableOrder + m], l >= m + 2
   std::array<double, kTableOrder> diag{};  // sqrt((2m+1)/(2m)), m >= 1
   std::array<double, kTableOrder> sub{};   // sqrt(2m+3)
-  RecurrenceTable() : ab(kTableOrder * kTableOrder) {
+  RecurrenceTable() : ab(static_cast<std::size_t>(kTableOrder) * kTableOrder) {
     for (int m = 0; m < kTableOrder; ++m) {
       diag[m] = m == 0 ? 1.0 : std::sqrt((2.0 * m + 1.0) / (2.0 * m));
       sub[m] = std::sqrt(2.0 * m + 3.0);

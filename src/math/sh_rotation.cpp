@@ -67,7 +67,7 @@ void rotate_one(const ShRotation& rot, int n_order, const T* in, T* out) {
     T* dst = out + l * l;
     for (int row = 0; row < width; ++row) {
       T acc{};
-      const double* mrow = mat + row * width;
+      const double* mrow = mat + static_cast<std::ptrdiff_t>(row) * width;
       for (int col = 0; col < width; ++col) acc += src[col] * mrow[col];
       dst[row] = acc;
     }

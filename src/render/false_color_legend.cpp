@@ -54,14 +54,14 @@ void draw_text(Image8& image, int x, int y, std::string_view text, Rgb8 colour, 
   // says ~270 bytes a character on average; digits such as '0' and '8' need more, and a
   // short buffer silently truncates, so allow 16 quads a character.
   constexpr int kVertexBytes = 16;
-  std::vector<char> buffer(16 * 4 * kVertexBytes * (copy.size() + 1));
+  std::vector<char> buffer(std::size_t{16} * 4 * kVertexBytes * (copy.size() + 1));
   const int quads = stb_easy_font_print(0, 0, copy.data(), nullptr, buffer.data(),
                                         static_cast<int>(buffer.size()));
   for (int q = 0; q < quads; ++q) {
     float x0 = 1e9f, y0 = 1e9f, x1 = -1e9f, y1 = -1e9f;
     for (int v = 0; v < 4; ++v) {
       float xy[2];
-      std::copy_n(buffer.data() + (4 * q + v) * kVertexBytes, sizeof xy,
+      std::copy_n(buffer.data() + static_cast<std::ptrdiff_t>(4 * q + v) * kVertexBytes, sizeof xy,
                   reinterpret_cast<char*>(xy));
       x0 = std::min(x0, xy[0]);
       x1 = std::max(x1, xy[0]);

@@ -100,7 +100,8 @@ std::vector<std::uint8_t> encode_exr(const Image& image) {
 // channel reads as 0).
 void read_float_channels(Imf::InputFile& file, const Imath::Box2i& window,
                          const char* const (&names)[3], std::vector<float>& data) {
-  const std::size_t width = static_cast<std::size_t>(window.max.x - window.min.x + 1);
+  const auto width =
+      static_cast<std::size_t>(static_cast<long long>(window.max.x) - window.min.x + 1);
   Imf::FrameBuffer frame;
   for (int c = 0; c < 3; ++c) {
     if (names[c] == nullptr) continue;

@@ -14,7 +14,8 @@ ShadedImages shade_vertices(const PinholeCamera& camera, const VertexShadingInpu
   ShadedImages out{make_image(w, h), make_image(w, h)};
   const int spp = samples_per_axis * samples_per_axis;
   auto vertex_rgb = [](std::span<const float> values, std::uint32_t v) {
-    return Rgb{values[3 * v], values[3 * v + 1], values[3 * v + 2]};
+    const std::size_t i = 3 * std::size_t{v};
+    return Rgb{values[i], values[i + 1], values[i + 2]};
   };
   tbb::parallel_for(tbb::blocked_range<int>(0, h), [&](const tbb::blocked_range<int>& rows) {
     for (int y = rows.begin(); y != rows.end(); ++y) {
@@ -22,8 +23,9 @@ ShadedImages shade_vertices(const PinholeCamera& camera, const VertexShadingInpu
         Rgb l_sum, e_sum;
         int covered = 0;
         for (int s = 0; s < spp; ++s) {
-          const double sx = (s % samples_per_axis + 0.5) / samples_per_axis;
-          const double sy = (s / samples_per_axis + 0.5) / samples_per_axis;
+          const int row = s / samples_per_axis, column = s % samples_per_axis;
+          const double sx = (column + 0.5) / samples_per_axis;
+          const double sy = (row + 0.5) / samples_per_axis;
           const Vec3 dir = camera.direction(x + sx, y + sy);
           const RayHit hit = in.tracer.intersect({camera.eye, dir});
           if (!hit.hit()) continue;

@@ -69,8 +69,8 @@ std::vector<double> row_fourier(const PhotometricWeb& web, const std::vector<dou
       const double* tc = &t.tc[k * order];
       const double* ts = &t.ts[k * order];
       for (int m = 1; m < order; ++m) {
-        row[2 * m] += rise * tc[m];
-        row[2 * m + 1] += rise * ts[m];
+        row[2 * std::ptrdiff_t{m}] += rise * tc[m];
+        row[2 * std::ptrdiff_t{m} + 1] += rise * ts[m];
       }
     }
     row[0] = f0;
@@ -128,7 +128,7 @@ std::vector<double> web_local_sh(const PhotometricWeb& web, int order, int q_ext
         c[sh_index(l, 0)] += p[assoc_legendre_index(l, 0)] * f[0];
         for (int m = 1; m <= l; ++m) {
           const double pl = kSqrt2 * p[assoc_legendre_index(l, m)];
-          c[sh_index(l, m)] += pl * f[2 * m];
+          c[sh_index(l, m)] += pl * f[2 * static_cast<std::size_t>(m)];
           // sin(mC) term, negated: y = −C90 in the right-handed frame.
           c[sh_index(l, -m)] -= pl * f[2 * m + 1];
         }

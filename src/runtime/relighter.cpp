@@ -124,10 +124,10 @@ void Relighter::update_luminaire(std::size_t j, const LuminaireState& s, bool ge
   l.rgb[1] = static_cast<float>(rgb.g);
   l.rgb[2] = static_cast<float>(rgb.b);
   l.active = s.on && max_component(rgb) > 0;
-  l.weights.resize(static_cast<std::size_t>(3 * k));
+  l.weights.resize(3 * static_cast<std::size_t>(k));
   for (int b = 0; b < k; ++b) {
     for (int c = 0; c < 3; ++c) {
-      l.weights[static_cast<std::size_t>(3 * b + c)] =
+      l.weights[3 * static_cast<std::size_t>(b) + static_cast<std::size_t>(c)] =
           static_cast<float>(l.sh[static_cast<std::size_t>(b)] * l.rgb[c]);
     }
   }

@@ -105,7 +105,8 @@ class GltfReader {
       if (node.matrix.size() != 16) fail(where + ": matrix needs 16 numbers");
       for (int row = 0; row < 3; ++row) {
         for (int col = 0; col < 4; ++col) {
-          t.m[row][col] = node.matrix[static_cast<std::size_t>(col * 4 + row)];  // column-major
+          t.m[row][col] = node.matrix[static_cast<std::size_t>(col) * 4 +
+                                      static_cast<std::size_t>(row)];  // column-major
         }
       }
     } else {

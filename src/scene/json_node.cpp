@@ -76,7 +76,10 @@ void JsonNode::expect_keys(std::initializer_list<std::string_view> allowed) cons
     for (std::string_view a : allowed) known = known || a == key;
     if (!known) {
       std::string list;
-      for (std::string_view a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
+      for (std::string_view a : allowed) {
+        if (!list.empty()) list += ", ";
+        list += a;
+      }
       fail_input(file_ + ":" + child_pointer(pointer_, escape_pointer_token(key)),
                  "unknown key \"" + key + "\" (expected one of: " + list + ")");
     }

@@ -36,7 +36,7 @@ struct Loader {
 
   fs::path existing_file(const JsonNode& node) const {
     const fs::path relative = node.string();
-    const fs::path path = relative.is_absolute() ? relative : base_dir / relative;
+    fs::path path = relative.is_absolute() ? relative : base_dir / relative;
     if (!fs::is_regular_file(path)) node.fail("file not found: " + path.string());
     return path;
   }
@@ -267,7 +267,7 @@ DistributionSpec parse_distribution(const JsonNode& node, const fs::path& base_d
   const std::string type = node.at("type").string();
   auto resolve = [&](const JsonNode& f) {
     const fs::path relative = f.string();
-    const fs::path path = relative.is_absolute() ? relative : base_dir / relative;
+    fs::path path = relative.is_absolute() ? relative : base_dir / relative;
     if (embedded) {
       const auto it = embedded->find(path.string());
       if (it != embedded->end()) {

@@ -26,29 +26,29 @@ struct RltWriter {
   void add_section(std::uint32_t type, std::string name, std::span<const std::byte> bytes,
                    RltElement element = RltElement::bytes, std::uint32_t flags = 0);
 
-  void add_u16(std::uint32_t type, std::string name, std::span<const std::uint16_t> values,
+  void add_u16(std::uint32_t type, const std::string& name, std::span<const std::uint16_t> values,
                std::uint32_t flags = 0) {
-    add_values(type, std::move(name), values, flags);
+    add_values(type, name, values, flags);
   }
-  void add_u32(std::uint32_t type, std::string name, std::span<const std::uint32_t> values,
+  void add_u32(std::uint32_t type, const std::string& name, std::span<const std::uint32_t> values,
                std::uint32_t flags = 0) {
-    add_values(type, std::move(name), values, flags);
+    add_values(type, name, values, flags);
   }
-  void add_u64(std::uint32_t type, std::string name, std::span<const std::uint64_t> values,
+  void add_u64(std::uint32_t type, const std::string& name, std::span<const std::uint64_t> values,
                std::uint32_t flags = 0) {
-    add_values(type, std::move(name), values, flags);
+    add_values(type, name, values, flags);
   }
-  void add_f16(std::uint32_t type, std::string name, std::span<const RltHalf> values,
+  void add_f16(std::uint32_t type, const std::string& name, std::span<const RltHalf> values,
                std::uint32_t flags = 0) {
-    add_values(type, std::move(name), values, flags);
+    add_values(type, name, values, flags);
   }
-  void add_f32(std::uint32_t type, std::string name, std::span<const float> values,
+  void add_f32(std::uint32_t type, const std::string& name, std::span<const float> values,
                std::uint32_t flags = 0) {
-    add_values(type, std::move(name), values, flags);
+    add_values(type, name, values, flags);
   }
-  void add_f64(std::uint32_t type, std::string name, std::span<const double> values,
+  void add_f64(std::uint32_t type, const std::string& name, std::span<const double> values,
                std::uint32_t flags = 0) {
-    add_values(type, std::move(name), values, flags);
+    add_values(type, name, values, flags);
   }
   // A text section (JSON metadata); the writer keeps its own copy.
   void add_text(std::uint32_t type, std::string name, std::string text, std::uint32_t flags = 0);
@@ -71,9 +71,9 @@ struct RltWriter {
   };
 
   template <RltValue T>
-  void add_values(std::uint32_t type, std::string name, std::span<const T> values,
+  void add_values(std::uint32_t type, const std::string& name, std::span<const T> values,
                   std::uint32_t flags) {
-    add_section(type, std::move(name), std::as_bytes(values), RltElementOf<T>::value, flags);
+    add_section(type, name, std::as_bytes(values), RltElementOf<T>::value, flags);
   }
 
   std::vector<Section> sections_;
