@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <stdexcept>
@@ -127,20 +128,36 @@ bool front_hit(const PreparedMesh& mesh, const TracedScene& traced, const Ray& r
   return true;
 }
 
-// Traces one receiver's rays and appends its merged row to `out`.
-void trace_row(const PreparedMesh& mesh, const TracedScene& traced, Vec3 origin, Vec3 normal,
-               std::size_t receiver, int rays, std::uint64_t seed, RowScratch& scratch,
-               ChunkRows& out) {
-  const Frame frame = frame_from_normal(normal);
-  Pcg32 rng(seed, receiver);
+// The cosine-distributed pattern of `rays` local directions (about +z), from the
+// scrambled (0,2)-sequence: computed once per ray count, so that no ray pays for its
+// square roots and trigonometry; each receiver turns the whole pattern by its own random
+// angle about its normal, which decorrelates neighbours as the per-receiver scramble did.
+std::vector<Vec3> cosine_pattern(int rays, std::uint64_t seed) {
+  Pcg32 rng(seed, ~std::uint64_t{0});
   const std::uint32_t scramble_radius = rng.next_u32(), scramble_angle = rng.next_u32();
-  const double weight = 1.0 / rays;
-  scratch.touched.clear();
+  std::vector<Vec3> pattern;
+  pattern.reserve(static_cast<std::size_t>(rays));
   for (int i = 0; i < rays; ++i) {
     const auto index = static_cast<std::uint32_t>(i);
-    const Vec3 local =
+    pattern.push_back(
         sample_cosine_hemisphere(unit_interval(van_der_corput(index, scramble_radius)),
-                                 unit_interval(sobol2(index, scramble_angle)));
+                                 unit_interval(sobol2(index, scramble_angle))));
+  }
+  return pattern;
+}
+
+// Traces one receiver's rays and appends its merged row to `out`.
+void trace_row(const PreparedMesh& mesh, const TracedScene& traced, Vec3 origin, Vec3 normal,
+               std::size_t receiver, const std::vector<Vec3>& pattern, std::uint64_t seed,
+               RowScratch& scratch, ChunkRows& out) {
+  Pcg32 rng(seed, receiver);
+  const double turn = 2 * kPi * rng.next_double();
+  const Frame base = frame_from_normal(normal);
+  const double c = std::cos(turn), s = std::sin(turn);
+  const Frame frame{base.t * c + base.b * s, base.b * c - base.t * s, base.n};
+  const double weight = 1.0 / static_cast<double>(pattern.size());
+  scratch.touched.clear();
+  for (const Vec3& local : pattern) {
     const Ray ray{origin, frame.to_world(local)};
     RayHit hit;
     if (!front_hit(mesh, traced, ray, hit)) continue;
@@ -174,6 +191,8 @@ GatherOperator build_gather_operator(const Receivers& receivers, const PreparedM
   const std::size_t chunk_count = (rows + kChunkRows - 1) / kChunkRows;
   std::vector<ChunkRows> chunks(chunk_count);
   const std::vector<Vec3> origins = ray_origins(receivers, mesh);
+  const std::vector<Vec3> vertex_pattern = cosine_pattern(rays_per_vertex, seed);
+  const std::vector<Vec3> sensor_pattern = cosine_pattern(rays_per_sensor, seed);
   Progress bar("gather operator", rows, progress);
   tbb::enumerable_thread_specific<RowScratch> scratches(receivers.vertex_count);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunk_count), [&](const auto& range) {
@@ -183,8 +202,9 @@ GatherOperator build_gather_operator(const Receivers& receivers, const PreparedM
       ChunkRows& out = chunks[c];
       out.row_sizes.reserve(last - first);
       for (std::size_t r = first; r < last; ++r) {
-        const int rays = r < receivers.vertex_count ? rays_per_vertex : rays_per_sensor;
-        trace_row(mesh, traced, origins[r], receivers.normals[r], r, rays, seed, scratch, out);
+        const std::vector<Vec3>& pattern =
+            r < receivers.vertex_count ? vertex_pattern : sensor_pattern;
+        trace_row(mesh, traced, origins[r], receivers.normals[r], r, pattern, seed, scratch, out);
       }
       bar.advance(last - first);
     }
