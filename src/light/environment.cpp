@@ -1,0 +1,299 @@
+// Environments: evaluation, SH projection (Funk–Hecke for the spherical caps of ground and sun
+// disc) and cubemap rasterisation; see environment.h.
+#include "light/environment.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "light/environment_map_cubemap.h"
+#include "light/sun_position.h"
+#include "math/cubemap.h"
+#include "math/equirect.h"
+#include "math/legendre.h"
+#include "math/sh.h"
+
+namespace relight {
+
+namespace {
+
+Rgb grey(double v) {
+  return {v, v, v};
+}
+
+// Compass rotation of the map: a map direction at azimuth A is seen at A + rotate_deg.
+struct MapRotation {
+  double c = 1, s = 0;
+  explicit MapRotation(double rotate_deg)
+      : c(std::cos(radians(rotate_deg))), s(std::sin(radians(rotate_deg))) {}
+  // World → map frame (azimuth − rotate_deg).
+  Vec3 to_map(Vec3 d) const { return {d.x * c + d.z * s, d.y, d.z * c - d.x * s}; }
+  // Map → world frame (azimuth + rotate_deg).
+  Vec3 to_world(Vec3 d) const { return {d.x * c - d.z * s, d.y, d.z * c + d.x * s}; }
+};
+
+Rgb map_lookup(const EquirectMap& map, const MapRotation& rot, double scale, Vec3 dir) {
+  const EquirectTexel t = equirect_texel(map.width, map.height, rot.to_map(dir));
+  return map.texels[static_cast<std::size_t>(t.j) * map.width + t.i] * scale;
+}
+
+// Funk–Hecke: SH of a uniform cap (luminance L, cos of the angular radius cos_rho, axis a) is
+// c_lm = L·2π·∫_{cos ρ}^{1} P_l(t) dt · Y_lm(a). Added to `out`.
+void add_cap(int order, Vec3 axis, double cos_rho, double luminance, std::span<double> out) {
+  std::vector<double> y(sh_count(order));
+  sh_eval(order, axis, y);
+  std::vector<double> p(order + 1);
+  legendre_all(cos_rho, p);
+  for (int l = 0; l < order; ++l) {
+    // ∫_{c}^{1} P_l = (P_{l−1}(c) − P_{l+1}(c))/(2l+1) for l >= 1 (from (2l+1)P_l = P'_{l+1} −
+    // P'_{l−1} and P_l(1) = 1).
+    const double integral = l == 0 ? 1.0 - cos_rho : (p[l - 1] - p[l + 1]) / (2 * l + 1);
+    const double k = luminance * 2.0 * kPi * integral;
+    for (int m = -l; m <= l; ++m) out[sh_index(l, m)] += k * y[sh_index(l, m)];
+  }
+}
+
+std::vector<Rgb> sky_sh(const SkyModel& sky, int order) {
+  std::vector<double> c(sh_count(order), 0.0);
+  const DomeQuadrature rule = sky_dome_quadrature(sky.sun_direction, std::max(64, order + 32),
+                                                  std::max(128, 2 * order + 64));
+  for (std::size_t i = 0; i < rule.weights.size(); ++i) {
+    const Vec3 d = rule.directions[i];
+    sh_add_sample(d, sky_diffuse_luminance(sky, d) * rule.weights[i], std::span<double>(c));
+  }
+  // Ground: the cap of angular radius 90° about −y.
+  add_cap(order, {0, -1, 0}, 0.0, sky.ground_luminance, c);
+  if (sky.sun)
+    add_cap(order, sky.sun->direction, sky.sun->cos_angular_radius, sky.sun->luminance, c);
+  std::vector<Rgb> out(c.size());
+  for (std::size_t i = 0; i < c.size(); ++i) out[i] = grey(c[i]);
+  return out;
+}
+
+std::vector<Rgb> map_sh(const Environment& env, int order) {
+  const EquirectMap& map = *env.map;
+  const MapRotation rot(env.rotate_deg);
+  std::vector<Rgb> c(sh_count(order));
+  for (int j = 0; j < map.height; ++j) {
+    const double w = equirect_row_solid_angle(map.width, map.height, j) * env.scale;
+    for (int i = 0; i < map.width; ++i) {
+      const Rgb v = map.texels[static_cast<std::size_t>(j) * map.width + i];
+      if (v.r == 0 && v.g == 0 && v.b == 0) continue;
+      sh_add_sample(rot.to_world(equirect_texel_direction(map.width, map.height, i, j)), v * w,
+                    std::span<Rgb>(c));
+    }
+  }
+  return c;
+}
+
+// ∫ over the face rectangle [u0,u1]×[v0,v1] (u, v ∈ [−1, 1]) of the unit-distance face,
+// A(u, v) = atan2(u v, sqrt(1 + u² + v²)) (math/cubemap.h).
+double face_area(double u, double v) {
+  return std::atan2(u * v, std::sqrt(1.0 + u * u + v * v));
+}
+double rect_solid_angle(double u0, double u1, double v0, double v1) {
+  return face_area(u1, v1) - face_area(u0, v1) - face_area(u1, v0) + face_area(u0, v0);
+}
+
+// Σ f(centre)·Ω over k×k sub-rectangles of [u0,u1]×[v0,v1] on `face`.
+template <class F>
+double integrate_rect(int face, double u0, double u1, double v0, double v1, int k, F&& f) {
+  double sum = 0;
+  for (int b = 0; b < k; ++b) {
+    const double va = v0 + (v1 - v0) * b / k, vb = v0 + (v1 - v0) * (b + 1) / k;
+    for (int a = 0; a < k; ++a) {
+      const double ua = u0 + (u1 - u0) * a / k, ub = u0 + (u1 - u0) * (a + 1) / k;
+      const Vec3 dir =
+          cubemap_direction({face, 0.5 * (ua + ub) * 0.5 + 0.5, 0.5 * (va + vb) * 0.5 + 0.5});
+      sum += f(dir) * rect_solid_angle(ua, ub, va, vb);
+    }
+  }
+  return sum;
+}
+
+std::vector<Rgb> sky_cubemap(const SkyModel& sky, int n) {
+  const int sub = std::max(4, (64 + n - 1) / n);
+  const std::vector<double> omega = cubemap_solid_angles(n);
+  std::vector<Rgb> out(cubemap_texel_count(n));
+  auto f = [&](Vec3 d) { return sky_diffuse_luminance(sky, d); };
+  for (int face = 0; face < 6; ++face) {
+    const bool side = face != kPosY && face != kNegY;  // y = −v on the four side faces
+    for (int j = 0; j < n; ++j) {
+      const double v0 = 2.0 * j / n - 1.0, v1 = 2.0 * (j + 1) / n - 1.0;
+      for (int i = 0; i < n; ++i) {
+        const double u0 = 2.0 * i / n - 1.0, u1 = 2.0 * (i + 1) / n - 1.0;
+        double sum;
+        if (side && v0 < 0 && v1 > 0) {  // the horizon crosses the texel: split it there
+          sum = integrate_rect(face, u0, u1, v0, 0.0, sub, f) +
+                integrate_rect(face, u0, u1, 0.0, v1, sub, f);
+        } else {
+          sum = integrate_rect(face, u0, u1, v0, v1, sub, f);
+        }
+        out[cubemap_texel_index(n, {face, i, j})] = grey(sum / omega[j * n + i]);
+      }
+    }
+  }
+  if (sky.sun) {
+    const CubemapTexel t = cubemap_texel(n, sky.sun->direction);
+    out[cubemap_texel_index(n, t)] += grey(sky.sun->integrated_luminance() / omega[t.j * n + t.i]);
+  }
+  return out;
+}
+
+}  // namespace
+
+Rgb Environment::diffuse_radiance(Vec3 dir) const {
+  switch (kind) {
+    case EnvironmentKind::kUniform:
+      return uniform_radiance;
+    case EnvironmentKind::kMap:
+      return map_lookup(*map, MapRotation(rotate_deg), scale, dir);
+    case EnvironmentKind::kSky:
+      return grey(sky_diffuse_luminance(sky, dir));
+  }
+  return {};
+}
+
+Rgb Environment::radiance(Vec3 dir) const {
+  Rgb l = diffuse_radiance(dir);
+  if (kind == EnvironmentKind::kSky && sky.sun) l += grey(sun_disc_luminance(*sky.sun, dir));
+  return l;
+}
+
+const std::optional<SunDisc>& Environment::sun() const {
+  static const std::optional<SunDisc> kNone;
+  return kind == EnvironmentKind::kSky ? sky.sun : kNone;
+}
+
+Environment make_uniform_environment(Rgb radiance) {
+  Environment env;
+  env.kind = EnvironmentKind::kUniform;
+  env.uniform_radiance = radiance;
+  return env;
+}
+
+Environment make_map_environment(std::shared_ptr<const EquirectMap> map, double rotate_deg,
+                                 double scale) {
+  if (!map || map->width < 1 || map->height < 1 ||
+      map->texels.size() != static_cast<std::size_t>(map->width) * map->height) {
+    throw std::invalid_argument("environment map must hold width·height > 0 texels");
+  }
+  if (!(scale >= 0) || !std::isfinite(scale) || !std::isfinite(rotate_deg)) {
+    throw std::invalid_argument("map scale must be finite and >= 0, rotation finite");
+  }
+  Environment env;
+  env.kind = EnvironmentKind::kMap;
+  env.map = std::move(map);
+  env.rotate_deg = rotate_deg;
+  env.scale = scale;
+  return env;
+}
+
+Environment make_sky_environment(SkyModel sky) {
+  Environment env;
+  env.kind = EnvironmentKind::kSky;
+  env.sky = sky;
+  return env;
+}
+
+Vec3 sun_direction(const SunSpec& sun) {
+  switch (sun.placement) {
+    case SunPlacement::kPlaceAndTime: {
+      const CivilDateTime& t = sun.local_time;
+      const UtcTime utc =
+          utc_from_local(t.year, t.month, t.day, t.hour, t.minute, t.second, sun.utc_offset_hours);
+      const SunPosition p = psa_sun_position(utc, sun.latitude_deg, sun.longitude_deg);
+      return horizontal_to_world(p.azimuth_deg, p.altitude_deg());
+    }
+    case SunPlacement::kAngles:
+      return horizontal_to_world(sun.azimuth_deg, sun.altitude_deg);
+    case SunPlacement::kNone:
+      break;
+  }
+  throw std::invalid_argument("the sun has no position");
+}
+
+Environment make_environment(const EnvironmentSpec& spec, std::shared_ptr<const EquirectMap> map) {
+  switch (spec.type) {
+    case EnvironmentType::kUniform: {
+      const double y = luminance(spec.color);
+      return make_uniform_environment(y > 0 ? spec.color * (spec.luminance / y) : Rgb{});
+    }
+    case EnvironmentType::kMap:
+      if (!map) throw std::invalid_argument(spec.where + ": the map image was not loaded");
+      return make_map_environment(std::move(map), spec.rotate_deg, spec.scale);
+    case EnvironmentType::kCieSky: {
+      const Vec3 sun =
+          spec.sun.placement == SunPlacement::kNone ? Vec3{0, 1, 0} : sun_direction(spec.sun);
+      return make_sky_environment(
+          spec.scaling == SkyScaling::kZenithLuminance
+              ? make_sky_from_zenith_luminance(spec.sky_type, sun, spec.scaling_value,
+                                               spec.ground_albedo, spec.sun_illuminance)
+              : make_sky_from_horizontal_illuminance(spec.sky_type, sun, spec.scaling_value,
+                                                     spec.ground_albedo, spec.sun_illuminance));
+    }
+  }
+  throw std::invalid_argument("unknown environment type");
+}
+
+std::vector<Rgb> environment_sh(const Environment& env, int order) {
+  if (order < 1) throw std::invalid_argument("SH order must be >= 1");
+  switch (env.kind) {
+    case EnvironmentKind::kUniform: {
+      std::vector<Rgb> c(sh_count(order));
+      c[0] = env.uniform_radiance * std::sqrt(4.0 * kPi);
+      return c;
+    }
+    case EnvironmentKind::kMap:
+      return map_sh(env, order);
+    case EnvironmentKind::kSky:
+      return sky_sh(env.sky, order);
+  }
+  return {};
+}
+
+std::vector<Rgb> environment_cubemap(const Environment& env, int face_size) {
+  if (face_size < 1) throw std::invalid_argument("cubemap face size must be >= 1");
+  switch (env.kind) {
+    case EnvironmentKind::kUniform:
+      return std::vector<Rgb>(cubemap_texel_count(face_size), env.uniform_radiance);
+    case EnvironmentKind::kMap:
+      return equirect_map_to_cubemap(*env.map, env.rotate_deg, env.scale, face_size);
+    case EnvironmentKind::kSky:
+      return sky_cubemap(env.sky, face_size);
+  }
+  return {};
+}
+
+Rgb environment_integral(const Environment& env) {
+  switch (env.kind) {
+    case EnvironmentKind::kUniform:
+      return env.uniform_radiance * (4.0 * kPi);
+    case EnvironmentKind::kMap: {
+      const EquirectMap& map = *env.map;
+      Rgb sum;
+      for (int j = 0; j < map.height; ++j) {
+        Rgb row;
+        for (int i = 0; i < map.width; ++i) {
+          row += map.texels[static_cast<std::size_t>(j) * map.width + i];
+        }
+        sum += row * equirect_row_solid_angle(map.width, map.height, j);
+      }
+      return sum * env.scale;
+    }
+    case EnvironmentKind::kSky: {
+      const SkyModel& sky = env.sky;
+      const DomeQuadrature rule = sky_dome_quadrature(sky.sun_direction, 192, 384);
+      double dome = 0;
+      for (std::size_t i = 0; i < rule.weights.size(); ++i) {
+        dome += sky_diffuse_luminance(sky, rule.directions[i]) * rule.weights[i];
+      }
+      double total = dome + sky.ground_luminance * 2.0 * kPi;
+      if (sky.sun) total += sky.sun->integrated_luminance();
+      return grey(total);
+    }
+  }
+  return {};
+}
+
+}  // namespace relight

@@ -1,0 +1,242 @@
+// CIE standard general sky (ISO 15469:2004 / CIE S 011/E:2003), traditional CIE overcast sky,
+// ground and sun disc; formulas and conventions in sky_model.h.
+#include "light/sky_model.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "math/legendre.h"
+
+namespace relight {
+
+namespace {
+
+// ISO 15469 Table 1 (a, b, c, d, e) for types 1..15.
+constexpr CieSkyParameters kCieSkies[15] = {
+    {4.0, -0.70, 0, -1.0, 0.00},    // 1  overcast, steep gradation, azimuthal uniformity
+    {4.0, -0.70, 2, -1.5, 0.15},    // 2  overcast, steep gradation, slight brightening to sun
+    {1.1, -0.80, 0, -1.0, 0.00},    // 3  overcast, moderate gradation, azimuthal uniformity
+    {1.1, -0.80, 2, -1.5, 0.15},    // 4  overcast, moderate gradation, slight brightening
+    {0.0, -1.00, 0, -1.0, 0.00},    // 5  sky of uniform luminance
+    {0.0, -1.00, 2, -1.5, 0.15},    // 6  partly cloudy, no gradation, slight brightening
+    {0.0, -1.00, 5, -2.5, 0.30},    // 7  partly cloudy, no gradation, brighter circumsolar
+    {0.0, -1.00, 10, -3.0, 0.45},   // 8  partly cloudy, no gradation, distinct solar corona
+    {-1.0, -0.55, 2, -1.5, 0.15},   // 9  partly cloudy, obscured sun
+    {-1.0, -0.55, 5, -2.5, 0.30},   // 10 partly cloudy, brighter circumsolar region
+    {-1.0, -0.55, 10, -3.0, 0.45},  // 11 white-blue sky with distinct solar corona
+    {-1.0, -0.32, 10, -3.0, 0.45},  // 12 CIE standard clear sky, low turbidity
+    {-1.0, -0.32, 16, -3.0, 0.30},  // 13 CIE standard clear sky, polluted atmosphere
+    {-1.0, -0.15, 16, -3.0, 0.30},  // 14 cloudless turbid sky with broad solar corona
+    {-1.0, -0.15, 24, -2.8, 0.15},  // 15 white-blue turbid sky with broad solar corona
+};
+
+void check_type(int sky_type) {
+  if (sky_type < 0 || sky_type > 15) {
+    throw std::invalid_argument("CIE sky type must be 0 (traditional overcast) or 1..15, got " +
+                                std::to_string(sky_type));
+  }
+}
+
+// Angle between two unit vectors, accurate also for nearly (anti)parallel ones.
+double angle_between(Vec3 a, Vec3 b) {
+  return std::atan2(length(cross(a, b)), dot(a, b));
+}
+
+double relative(int sky_type, const CieSkyParameters& p, double norm, Vec3 dir, Vec3 sun) {
+  const double cos_z = std::max(dir.y, 0.0);
+  if (sky_type == 0) return (1.0 + 2.0 * cos_z) / 3.0;
+  return cie_indicatrix(p, angle_between(dir, sun)) * cie_gradation(p, cos_z) * norm;
+}
+
+// 1 / (f(Zs)·φ(0)) for the types that need it.
+double normaliser(int sky_type, const CieSkyParameters& p, Vec3 sun) {
+  if (sky_type == 0) return 1.0;
+  const double zs = std::acos(std::clamp(sun.y, -1.0, 1.0));
+  return 1.0 / (cie_indicatrix(p, zs) * cie_gradation(p, 1.0));
+}
+
+SkyModel make_sky(int sky_type, Vec3 sun_direction, double ground_albedo,
+                  double sun_normal_illuminance) {
+  check_type(sky_type);
+  if (!(length(sun_direction) > 0) || !is_finite(sun_direction)) {
+    throw std::invalid_argument("sun direction must be finite and non-zero");
+  }
+  if (!(ground_albedo >= 0 && ground_albedo <= 1)) {
+    throw std::invalid_argument("ground albedo must lie in 0..1");
+  }
+  if (!(sun_normal_illuminance >= 0) || !std::isfinite(sun_normal_illuminance)) {
+    throw std::invalid_argument("sun illuminance must be finite and >= 0");
+  }
+  SkyModel sky;
+  sky.sky_type = sky_type;
+  sky.sun_direction = normalize(sun_direction);
+  if (sky_type != 0) sky.parameters = cie_sky_parameters(sky_type);
+  sky.indicatrix_normaliser = normaliser(sky_type, sky.parameters, sky.sun_direction);
+  sky.ground_albedo = ground_albedo;
+  if (sun_normal_illuminance > 0 && sky.sun_direction.y > 0) {
+    sky.sun = make_sun_disc(sky.sun_direction, sun_normal_illuminance);
+    sky.sun_horizontal_illuminance = sun_normal_illuminance * sky.sun_direction.y;
+  }
+  return sky;
+}
+
+void finish(SkyModel& sky) {
+  sky.ground_luminance =
+      sky.ground_albedo * (sky.sky_horizontal_illuminance + sky.sun_horizontal_illuminance) / kPi;
+}
+
+}  // namespace
+
+CieSkyParameters cie_sky_parameters(int type) {
+  if (type < 1 || type > 15) {
+    throw std::invalid_argument("CIE standard sky type must be 1..15, got " + std::to_string(type));
+  }
+  return kCieSkies[type - 1];
+}
+
+double cie_gradation(const CieSkyParameters& p, double cos_zenith) {
+  if (!(cos_zenith > 0)) return 1.0;
+  return 1.0 + p.a * std::exp(p.b / cos_zenith);
+}
+
+double cie_indicatrix(const CieSkyParameters& p, double chi) {
+  const double c = std::cos(chi);
+  return 1.0 + p.c * (std::exp(p.d * chi) - std::exp(p.d * kPi / 2.0)) + p.e * c * c;
+}
+
+double sky_relative_luminance(int sky_type, Vec3 dir, Vec3 sun_dir) {
+  check_type(sky_type);
+  const CieSkyParameters p = sky_type == 0 ? CieSkyParameters{} : cie_sky_parameters(sky_type);
+  return relative(sky_type, p, normaliser(sky_type, p, sun_dir), dir, sun_dir);
+}
+
+DomeQuadrature sky_dome_quadrature(Vec3 sun_dir, int n_zenith, int n_azimuth) {
+  if (n_zenith < 1 || n_azimuth < 1) {
+    throw std::invalid_argument("quadrature needs at least one node per dimension");
+  }
+  const Vec3 sun = normalize(sun_dir);
+  // Panels in the zenith angle Z: [0, Zs] and [Zs, 90°] when the sun is strictly inside.
+  struct Panel {
+    double lo, hi;
+    int n;
+  };
+  std::vector<Panel> panels;
+  const double zs = std::acos(std::clamp(sun.y, -1.0, 1.0));
+  const double horizon = kPi / 2;
+  constexpr int kMinPanelNodes = 4;
+  if (zs > 0 && zs < horizon && n_zenith >= 2 * kMinPanelNodes) {
+    const int low = std::clamp(static_cast<int>(std::lround(n_zenith * zs / horizon)),
+                               kMinPanelNodes, n_zenith - kMinPanelNodes);
+    panels = {{0.0, zs, low}, {zs, horizon, n_zenith - low}};
+  } else {
+    panels = {{0.0, horizon, n_zenith}};
+  }
+  // Azimuth: Gauss–Legendre on each half turn [0, π] and [π, 2π] from the sun's azimuth. The
+  // sky is symmetric about the sun's meridian; on each half the integrand is smooth up to that
+  // meridian, and the nodes cluster toward it, i.e. toward the circumsolar peak.
+  const double sun_azimuth = std::atan2(sun.x, -sun.z);
+  const int n_half = (n_azimuth + 1) / 2;
+  const GaussLegendre gl_az = gauss_legendre(n_half);
+  std::vector<double> sin_az, cos_az, w_az;
+  for (int half = 0; half < 2; ++half) {
+    for (int j = 0; j < n_half; ++j) {
+      const double az = sun_azimuth + kPi * (half + 0.5 * (gl_az.nodes[j] + 1.0));
+      sin_az.push_back(std::sin(az));
+      cos_az.push_back(std::cos(az));
+      w_az.push_back(0.5 * kPi * gl_az.weights[j]);
+    }
+  }
+  DomeQuadrature rule;
+  rule.directions.reserve(static_cast<std::size_t>(n_zenith) * w_az.size());
+  rule.weights.reserve(rule.directions.capacity());
+  for (const Panel& panel : panels) {
+    const GaussLegendre gl = gauss_legendre(panel.n);
+    const double half = 0.5 * (panel.hi - panel.lo), mid = 0.5 * (panel.hi + panel.lo);
+    for (int k = 0; k < panel.n; ++k) {
+      const double z = mid + half * gl.nodes[k];
+      const double s = std::sin(z), mu = std::cos(z);
+      const double w = half * gl.weights[k] * s;  // dω = sin Z dZ dφ
+      for (std::size_t j = 0; j < w_az.size(); ++j) {
+        rule.directions.push_back({s * sin_az[j], mu, -s * cos_az[j]});
+        rule.weights.push_back(w * w_az[j]);
+      }
+    }
+  }
+  return rule;
+}
+
+double sky_relative_horizontal_illuminance(int sky_type, Vec3 sun_dir, int n_zenith,
+                                           int n_azimuth) {
+  check_type(sky_type);
+  const Vec3 sun = normalize(sun_dir);
+  const CieSkyParameters p = sky_type == 0 ? CieSkyParameters{} : cie_sky_parameters(sky_type);
+  const double norm = normaliser(sky_type, p, sun);
+  const DomeQuadrature rule = sky_dome_quadrature(sun, n_zenith, n_azimuth);
+  double total = 0;
+  for (std::size_t i = 0; i < rule.weights.size(); ++i) {
+    const Vec3 d = rule.directions[i];
+    total += rule.weights[i] * d.y * relative(sky_type, p, norm, d, sun);
+  }
+  return total;
+}
+
+SunDisc make_sun_disc(Vec3 direction, double normal_illuminance) {
+  SunDisc d;
+  d.direction = normalize(direction);
+  d.angular_radius = radians(kSunAngularDiameterDeg) / 2.0;
+  d.cos_angular_radius = std::cos(d.angular_radius);
+  const double s = std::sin(d.angular_radius);
+  // 1 − cos r = 2 sin²(r/2), without cancellation.
+  const double h = std::sin(d.angular_radius / 2.0);
+  d.solid_angle = 4.0 * kPi * h * h;
+  d.normal_illuminance = normal_illuminance;
+  d.luminance = normal_illuminance / (kPi * s * s);
+  return d;
+}
+
+double sun_disc_luminance(const SunDisc& disc, Vec3 dir) {
+  return dot(dir, disc.direction) >= disc.cos_angular_radius ? disc.luminance : 0.0;
+}
+
+SkyModel make_sky_from_zenith_luminance(int sky_type, Vec3 sun_direction, double zenith_luminance,
+                                        double ground_albedo, double sun_normal_illuminance) {
+  if (!(zenith_luminance >= 0) || !std::isfinite(zenith_luminance)) {
+    throw std::invalid_argument("zenith luminance must be finite and >= 0");
+  }
+  SkyModel sky = make_sky(sky_type, sun_direction, ground_albedo, sun_normal_illuminance);
+  sky.zenith_luminance = zenith_luminance;
+  sky.sky_horizontal_illuminance =
+      zenith_luminance * sky_relative_horizontal_illuminance(sky_type, sky.sun_direction);
+  finish(sky);
+  return sky;
+}
+
+SkyModel make_sky_from_horizontal_illuminance(int sky_type, Vec3 sun_direction,
+                                              double horizontal_illuminance, double ground_albedo,
+                                              double sun_normal_illuminance) {
+  if (!(horizontal_illuminance >= 0) || !std::isfinite(horizontal_illuminance)) {
+    throw std::invalid_argument("horizontal illuminance must be finite and >= 0");
+  }
+  SkyModel sky = make_sky(sky_type, sun_direction, ground_albedo, sun_normal_illuminance);
+  sky.zenith_luminance =
+      horizontal_illuminance / sky_relative_horizontal_illuminance(sky_type, sky.sun_direction);
+  sky.sky_horizontal_illuminance = horizontal_illuminance;
+  finish(sky);
+  return sky;
+}
+
+double sky_diffuse_luminance(const SkyModel& sky, Vec3 dir) {
+  if (dir.y < 0) return sky.ground_luminance;
+  return sky.zenith_luminance *
+         relative(sky.sky_type, sky.parameters, sky.indicatrix_normaliser, dir, sky.sun_direction);
+}
+
+double sky_luminance(const SkyModel& sky, Vec3 dir) {
+  double l = sky_diffuse_luminance(sky, dir);
+  if (sky.sun) l += sun_disc_luminance(*sky.sun, dir);
+  return l;
+}
+
+}  // namespace relight

@@ -1,0 +1,122 @@
+// What a scene or a run-time lighting state says about the exterior seen through a portal:
+// the ENV objects of issue 4, as plain data parsed from JSON. light/environment.h turns a
+// spec into an evaluable Environment (it computes the sun position and reads no files);
+// render/environment_map_io.h reads the map files.
+//
+//   { "type": "uniform", "luminance": cd/m², "color": [r, g, b] }
+//   { "type": "map", "file": "x.exr" | "x.hdr", "rotate_deg": deg, "scale": factor }
+//   { "type": "cie_sky", "sky_type": 1..15 | "overcast",
+//     "horizontal_illuminance": lx | "zenith_luminance": cd/m², "ground_albedo": 0..1,
+//     "sun": { "latitude", "longitude", "utc_offset", "datetime" }
+//          | { "azimuth_deg", "altitude_deg" },
+//     "sun_illuminance": lx }
+//
+// Conventions (world frame: metres, right-handed, y up; NORTH IS −z, EAST IS +x):
+//  * uniform: the same luminance in every direction of the sphere. "color" is a tint that is
+//    normalised to unit luminance (Y = 0.2126 r + 0.7152 g + 0.0722 b, ARCHITECTURE §4.4), so
+//    the photometric luminance is always "luminance"; default [1, 1, 1].
+//  * map: an equirectangular image in the math/equirect.h orientation (image centre column =
+//    south +z, left edge = north −z, a quarter of the width = east +x; top row = zenith).
+//    Texel values are taken as cd/m² per channel and multiplied by "scale" (default 1, >= 0).
+//    A Radiance .hdr stores W·sr⁻¹·m⁻²: scale 179 lm/W turns it into cd/m².
+//    "rotate_deg" (default 0) turns the map about +y CLOCKWISE SEEN FROM ABOVE, the sense of
+//    the compass azimuth: what the file shows at azimuth A appears at azimuth A + rotate_deg
+//    (rotate_deg = 90 moves the file's north to the east). "file" is resolved against the
+//    folder of the JSON file and must exist, with extension .exr or .hdr.
+//  * cie_sky: the CIE standard general sky (ISO 15469:2004 / CIE S 011/E:2003), types 1..15,
+//    or the traditional CIE overcast sky (Moon & Spencer 1942; CIE 1955), "overcast", stored
+//    as sky_type 0. Exactly one of
+//      "horizontal_illuminance": the diffuse horizontal illuminance of the sky dome alone
+//                                (without the sun disc), lx, >= 0;
+//      "zenith_luminance":       the luminance of the zenith, cd/m², >= 0.
+//    "ground_albedo" (default 0.2, 0..1): the ground below the horizon is a uniform Lambertian
+//    luminance ground_albedo·(E_h,sky + E_h,sun)/π.
+//    "sun": where the sun is. Required by the types whose luminance depends on it (2, 4, 6..15)
+//    and whenever sun_illuminance > 0; optional otherwise. Either
+//      { "latitude": deg north (−90..90), "longitude": deg east (−180..180),
+//        "utc_offset": hours added to UTC to get the local time (−14..14, default 0),
+//        "datetime": "YYYY-MM-DDTHH:MM" or "YYYY-MM-DDTHH:MM:SS[.fff]" local civil time,
+//                    years 1901..2099, no zone suffix (use utc_offset) }
+//      — the position follows from the PSA algorithm (light/sun_position.h) — or
+//      { "azimuth_deg": from north clockwise toward east (−360..360),
+//        "altitude_deg": above the horizon (−90..90) }.
+//    "sun_illuminance" (default 0 = no sun disc, 0..140000 lx): the illuminance on a plane
+//    normal to the sun from the 0.53° sun disc (direct normal illuminance; the extraterrestrial
+//    value is about 133 800 lx). A sun below the horizon contributes nothing.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "math/rgb.h"
+#include "scene/json_node.h"
+
+namespace relight {
+
+enum class EnvironmentType { kUniform, kMap, kCieSky };
+
+// sky_type value of the traditional CIE overcast sky ("overcast").
+inline constexpr int kTraditionalOvercastSky = 0;
+// Upper bound accepted for sun_illuminance (lx).
+inline constexpr double kMaxSunIlluminance = 140000.0;
+
+enum class SkyScaling { kHorizontalIlluminance, kZenithLuminance };
+
+// A local civil date and time as written in "datetime".
+struct CivilDateTime {
+  int year = 2000, month = 1, day = 1;
+  int hour = 0, minute = 0;
+  double second = 0;
+};
+
+enum class SunPlacement {
+  kNone,          // no "sun"
+  kPlaceAndTime,  // latitude, longitude, utc_offset, datetime
+  kAngles,        // azimuth_deg, altitude_deg
+};
+
+struct SunSpec {
+  SunPlacement placement = SunPlacement::kNone;
+  double latitude_deg = 0;      // north positive
+  double longitude_deg = 0;     // east positive
+  double utc_offset_hours = 0;  // local time = UTC + utc_offset_hours
+  CivilDateTime local_time;
+  double azimuth_deg = 0;   // from north (−z) clockwise toward east (+x)
+  double altitude_deg = 0;  // above the horizon
+};
+
+struct EnvironmentSpec {
+  EnvironmentType type = EnvironmentType::kUniform;
+  // uniform
+  double luminance = 0;  // cd/m²
+  Rgb color{1, 1, 1};    // tint; the radiance is luminance · color / Y(color)
+  // map
+  std::filesystem::path file;  // resolved, exists
+  double rotate_deg = 0;
+  double scale = 1;
+  // cie_sky
+  int sky_type = kTraditionalOvercastSky;  // 0 = traditional overcast, 1..15 = ISO 15469 types
+  SkyScaling scaling = SkyScaling::kHorizontalIlluminance;
+  double scaling_value = 0;  // lx or cd/m², as `scaling` says
+  double ground_albedo = 0.2;
+  SunSpec sun;
+  double sun_illuminance = 0;  // lx on a plane normal to the sun; 0 = no sun disc
+  std::string where;           // "FILE:JSON-PATH" of the object, for messages
+};
+
+// True for the CIE standard sky types whose luminance distribution depends on the sun's
+// position (an indicatrix with c != 0 or e != 0): 2, 4, 6..15.
+bool sky_type_needs_sun(int sky_type);
+
+// Parses "YYYY-MM-DDTHH:MM[:SS[.fff]]" (a 'T' or one space between date and time); checks the
+// calendar (leap years) and the clock (hour 0..23, minute 0..59, second < 60). Years
+// 1901..2099. Returns nullopt when the text is not such a date and time.
+std::optional<CivilDateTime> parse_civil_datetime(std::string_view text);
+
+// Parses an ENV object; relative map paths resolve against base_dir. Throws InputError
+// "FILE:/json/pointer: reason" for unknown keys, missing or out-of-range values.
+EnvironmentSpec parse_environment(const JsonNode& node, const std::filesystem::path& base_dir);
+
+}  // namespace relight
