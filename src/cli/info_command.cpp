@@ -38,7 +38,13 @@ void add_info_command(CLI::App& app, Action& action) {
                 << "sensors: " << scene.sensor_count() << " in " << scene.sensors.size()
                 << " sets\n"
                 << "cameras: " << scene.cameras.size() << "\n"
+                << "portals: " << scene.portals.size() << "\n"
                 << "bounds: " << box << "\n";
+      for (const Portal& p : scene.portals) {
+        std::cout << "  portal " << p.name << ":";
+        for (std::uint32_t m : p.materials) std::cout << " " << scene.materials[m].name;
+        std::cout << "\n";
+      }
       for (std::size_t i = 0; i < luminaires.size(); ++i) {
         char line[256];
         std::snprintf(line, sizeof line, "  luminaire %s: %.1f lm\n",

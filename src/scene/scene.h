@@ -12,6 +12,7 @@
 #include "math/rgb.h"
 #include "math/vec3.h"
 #include "scene/distribution_spec.h"
+#include "scene/environment_spec.h"
 #include "scene/triangle_soup.h"
 
 namespace relight {
@@ -49,6 +50,15 @@ struct SensorSet {
   int nu = 0, nv = 0;
 };
 
+// A window (portal paper §3): the triangles of its portal materials, through which light
+// of the exterior environment enters. Precompute and run time use it from the daylight
+// issue on; the loader validates it now.
+struct Portal {
+  std::string name;
+  std::vector<std::uint32_t> materials;  // indices into Scene::materials, all "portal": true
+  EnvironmentSpec environment;
+};
+
 struct Camera {
   std::string name;
   Vec3 eye, target, up{0, 1, 0};
@@ -79,6 +89,7 @@ struct Scene {
   std::vector<Luminaire> luminaires;
   std::vector<SensorSet> sensors;
   std::vector<Camera> cameras;
+  std::vector<Portal> portals;
   PrecomputeSettings precompute;
 
   Bounds bounds() const;

@@ -235,6 +235,45 @@ struct Loader {
     }
   }
 
+  void load_portals(const JsonNode& node) {
+    std::set<std::string> names;
+    std::map<std::uint32_t, std::string> owner;  // portal material -> portal
+    for (const JsonNode& p : node.elements()) {
+      p.expect_keys({"name", "material", "materials", "environment"});
+      Portal portal;
+      portal.name = p.at("name").string();
+      if (portal.name.empty()) p.at("name").fail("name must not be empty");
+      if (!names.insert(portal.name).second) {
+        p.at("name").fail("duplicate portal \"" + portal.name + "\"");
+      }
+      if (p.has("material") == p.has("materials")) {
+        p.fail("a portal needs exactly one of \"material\" or \"materials\"");
+      }
+      std::vector<JsonNode> material_nodes;
+      if (p.has("material")) {
+        material_nodes.push_back(p.at("material"));
+      } else {
+        material_nodes = p.at("materials").elements();
+        if (material_nodes.empty()) p.at("materials").fail("expected at least one material");
+      }
+      for (const JsonNode& m : material_nodes) {
+        const std::uint32_t index = material_named(m);
+        if (!scene.materials[index].portal) {
+          m.fail("material \"" + scene.materials[index].name +
+                 "\" is not window glass: give it \"portal\": true");
+        }
+        const auto [it, fresh] = owner.emplace(index, portal.name);
+        if (!fresh) {
+          m.fail("material \"" + scene.materials[index].name + "\" already belongs to portal \"" +
+                 it->second + "\"");
+        }
+        portal.materials.push_back(index);
+      }
+      portal.environment = parse_environment(p.at("environment"), base_dir);
+      scene.portals.push_back(std::move(portal));
+    }
+  }
+
   void load_precompute(const JsonNode& p) {
     p.expect_keys({"max_edge", "sh_order", "crease_deg", "gather_rays", "sensor_gather_rays",
                    "tolerance", "max_bounces", "direct"});
@@ -323,8 +362,8 @@ DistributionSpec parse_distribution(const JsonNode& node, const fs::path& base_d
 Scene scene_from_json(const nlohmann::json& document, const fs::path& file,
                       const EmbeddedFiles* embedded) {
   const JsonNode root(document, file.string(), "/");
-  root.expect_keys(
-      {"description", "materials", "geometry", "luminaires", "sensors", "cameras", "precompute"});
+  root.expect_keys({"description", "materials", "geometry", "luminaires", "sensors", "cameras",
+                    "portals", "precompute"});
   Loader loader;
   loader.scene.file = file;
   loader.base_dir = file.has_parent_path() ? file.parent_path() : fs::path(".");
@@ -335,6 +374,7 @@ Scene scene_from_json(const nlohmann::json& document, const fs::path& file,
   if (const auto n = root.find("luminaires")) loader.load_luminaires(*n);
   if (const auto n = root.find("sensors")) loader.load_sensors(*n);
   if (const auto n = root.find("cameras")) loader.load_cameras(*n);
+  if (const auto n = root.find("portals")) loader.load_portals(*n);
   if (const auto n = root.find("precompute")) loader.load_precompute(*n);
   for (const Vec3& p : loader.scene.geometry.positions) {
     if (!is_finite(p)) root.at("geometry").fail("geometry has a non-finite coordinate");

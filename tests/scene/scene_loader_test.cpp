@@ -165,3 +165,64 @@ TEST(SceneLoader, CurveNeedsMatchingAscendingControlPoints) {
 
 }  // namespace
 }  // namespace relight
+
+namespace relight {
+namespace {
+
+nlohmann::json scene_with_portals(const nlohmann::json& portals) {
+  nlohmann::json scene = nlohmann::json::parse(R"({
+    "materials": { "wall": { "albedo": [0.5, 0.5, 0.5] },
+                   "glass": { "albedo": [0, 0, 0], "portal": true },
+                   "skylight": { "albedo": [0, 0, 0], "portal": true } },
+    "geometry": [ { "type": "quad", "corner": [0,0,0], "u": [0,0,1], "v": [1,0,0], "material": "glass" } ]
+  })");
+  scene["portals"] = portals;
+  return scene;
+}
+
+const char* kSky = R"({ "type": "uniform", "luminance": 5000 })";
+
+TEST(SceneLoaderPortals, PortalsKeepTheirMaterialsAndEnvironment) {
+  const nlohmann::json portals = {
+      {{"name", "window"}, {"material", "glass"}, {"environment", nlohmann::json::parse(kSky)}},
+      {{"name", "roof"},
+       {"materials", {"skylight"}},
+       {"environment", nlohmann::json::parse(kSky)}}};
+  const Scene scene = scene_from_json(scene_with_portals(portals), "p.json");
+  ASSERT_EQ(scene.portals.size(), 2u);
+  EXPECT_EQ(scene.materials[scene.portals[0].materials.at(0)].name, "glass");
+  EXPECT_EQ(scene.materials[scene.portals[1].materials.at(0)].name, "skylight");
+  EXPECT_DOUBLE_EQ(scene.portals[0].environment.luminance, 5000);
+}
+
+std::string portal_error(const nlohmann::json& portals) {
+  try {
+    scene_from_json(scene_with_portals(portals), "p.json");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(SceneLoaderPortals, RulesAreEnforcedWithJsonPaths) {
+  const nlohmann::json sky = nlohmann::json::parse(kSky);
+  EXPECT_NE(portal_error({{{"name", "w"}, {"material", "wall"}, {"environment", sky}}})
+                .find("p.json:/portals/0/material: material \"wall\" is not window glass"),
+            std::string::npos);
+  EXPECT_NE(portal_error({{{"name", "a"}, {"material", "glass"}, {"environment", sky}},
+                          {{"name", "b"}, {"materials", {"glass"}}, {"environment", sky}}})
+                .find("/portals/1/materials/0: material \"glass\" already belongs to portal \"a\""),
+            std::string::npos);
+  EXPECT_NE(
+      portal_error(
+          {{{"name", "w"}, {"material", "glass"}, {"materials", {"glass"}}, {"environment", sky}}})
+          .find("exactly one of"),
+      std::string::npos);
+  EXPECT_NE(
+      portal_error({{{"name", "w"}, {"material", "glass"}, {"environment", {{"type", "starry"}}}}})
+          .find("/portals/0/environment/type"),
+      std::string::npos);
+}
+
+}  // namespace
+}  // namespace relight
