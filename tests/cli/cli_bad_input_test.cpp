@@ -7,6 +7,7 @@
 namespace relight {
 namespace {
 
+using testing::expect_input_error;
 using testing::run_relight;
 using testing::TempDir;
 
@@ -23,14 +24,6 @@ std::string room_with(const std::string& distribution) {
   std::string s = kRoom;
   s.replace(s.find("\"type\": \"DIST\""), 14, distribution);
   return s;
-}
-
-// Exit 2, one line on stderr, starting "error: " + prefix.
-void expect_input_error(const testing::CommandResult& r, const std::string& prefix) {
-  EXPECT_EQ(r.exit_code, 2) << r.err;
-  EXPECT_EQ(r.err.rfind("error: " + prefix, 0), 0u) << r.err;
-  ASSERT_FALSE(r.err.empty());
-  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "more than one line: " << r.err;
 }
 
 TEST(CliBadInput, MalformedJson) {

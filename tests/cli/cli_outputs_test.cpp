@@ -10,6 +10,7 @@
 namespace relight {
 namespace {
 
+using testing::parse_csv;
 using testing::read_text;
 using testing::run_relight;
 using testing::TempDir;
@@ -25,18 +26,6 @@ const char* kRoom = R"({
   "cameras": [ { "name": "inside", "eye": [1.5, 1.2, 2.9], "target": [1.5, 1, 0] } ],
   "precompute": { "max_edge": 0.5 }
 })";
-
-std::vector<std::vector<std::string>> parse_csv(const std::string& text) {
-  std::vector<std::vector<std::string>> rows;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) {
-    std::vector<std::string> cells;
-    std::istringstream l(line);
-    for (std::string cell; std::getline(l, cell, ',');) cells.push_back(cell);
-    rows.push_back(cells);
-  }
-  return rows;
-}
 
 TEST(CliOutputs, ReferenceSensorCsvHasContractColumnsAndLuxIsY) {
   TempDir dir;

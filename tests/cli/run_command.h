@@ -1,10 +1,15 @@
-// Runs the relight binary as a user would and captures exit code, stdout and stderr.
+// Runs the relight binary as a user would and captures exit code, stdout and stderr;
+// checks of the exit-code contract and a reader for the sensor CSV.
 #pragma once
 
 #include <sys/wait.h>
 
 #include <cstdlib>
+#include <sstream>
 #include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
 
 #include "support/temp_dir.h"
 
@@ -26,6 +31,27 @@ inline CommandResult run_relight(const std::string& arguments) {
   r.out = read_text(out);
   r.err = read_text(err);
   return r;
+}
+
+// Exit 2 and exactly one line on stderr, starting "error: " + prefix.
+inline void expect_input_error(const CommandResult& r, const std::string& prefix) {
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(r.err.rfind("error: " + prefix, 0), 0u) << r.err;
+  ASSERT_FALSE(r.err.empty());
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "more than one line: " << r.err;
+}
+
+// Rows of comma-separated cells (no quoting: the tests' sensor names are plain).
+inline std::vector<std::vector<std::string>> parse_csv(const std::string& text) {
+  std::vector<std::vector<std::string>> rows;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> cells;
+    std::istringstream l(line);
+    for (std::string cell; std::getline(l, cell, ',');) cells.push_back(cell);
+    rows.push_back(cells);
+  }
+  return rows;
 }
 
 }  // namespace relight::testing

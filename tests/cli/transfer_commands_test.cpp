@@ -25,6 +25,8 @@ namespace {
 
 namespace fs = std::filesystem;
 using testing::CommandResult;
+using testing::expect_input_error;
+using testing::parse_csv;
 using testing::read_text;
 using testing::run_relight;
 using testing::TempDir;
@@ -59,26 +61,6 @@ struct SensorRow {
   int index = 0;
   double lux = 0, r = 0, g = 0, b = 0;
 };
-
-std::vector<std::vector<std::string>> parse_csv(const std::string& text) {
-  std::vector<std::vector<std::string>> rows;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) {
-    std::vector<std::string> cells;
-    std::istringstream l(line);
-    for (std::string cell; std::getline(l, cell, ',');) cells.push_back(cell);
-    rows.push_back(cells);
-  }
-  return rows;
-}
-
-// Exit 2, exactly one line on stderr, starting "error: " + prefix.
-void expect_input_error(const CommandResult& r, const std::string& prefix) {
-  EXPECT_EQ(r.exit_code, 2) << r.err;
-  EXPECT_EQ(r.err.rfind("error: " + prefix, 0), 0u) << r.err;
-  ASSERT_FALSE(r.err.empty());
-  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "more than one line: " << r.err;
-}
 
 std::string quoted(const fs::path& p) {
   return "'" + p.string() + "'";
@@ -493,10 +475,7 @@ TEST_F(TransferCommands, PrecomputeOntoUnwritablePathIsBadInput) {
       under_file.string() + ": ");
 }
 
-// probe -o into a missing folder exits 1 "error: internal: cannot write FILE": the CSV
-// goes through write_text_atomically (src/common/atomic_file.cpp), which throws a plain
-// std::runtime_error, not an InputError (render, writing images, exits 2). Enable once
-// fixed.
+// A CSV the user asked for in a folder that does not exist is bad input, as for images.
 TEST_F(TransferCommands, ProbeOntoUnwritableCsvIsBadInput) {
   const auto csv = dir_->path() / "no-such-folder" / "e.csv";
   expect_input_error(run_relight("probe " + quoted(rlt_) + " -o " + quoted(csv)),
