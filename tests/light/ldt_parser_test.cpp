@@ -251,33 +251,9 @@ TEST(LdtParser, GarbageNeverCrashes) {
 
 TEST(LdtParser, RandomByteChangesNeverCrash) {
   // Deterministic mutations of a valid file: each result parses or fails with InputError.
-  const std::string valid = ldt_text(eight_planes(3, 5));
-  const std::string alphabet = "0123456789-+.,eE \n\r\tx[]=TILNCUDOab\x1a";
-  std::uint32_t state = 12345;
-  auto next = [&] { return state = state * 1664525u + 1013904223u; };
-  for (int trial = 0; trial < 3000; ++trial) {
-    std::string text = valid;
-    const int edits = 1 + static_cast<int>(next() % 4);
-    for (int e = 0; e < edits && !text.empty(); ++e) {
-      const std::size_t at = next() % text.size();
-      const char ch = alphabet[next() % alphabet.size()];
-      switch (next() % 3) {
-        case 0:
-          text[at] = ch;
-          break;
-        case 1:
-          text.insert(text.begin() + static_cast<std::ptrdiff_t>(at), ch);
-          break;
-        default:
-          text.erase(at, 1 + next() % 8);
-          break;
-      }
-    }
-    try {
-      (void)make_ldt_web(parse_ldt(text, "mutated.ldt"));
-    } catch (const InputError&) {
-    }
-  }
+  test::parse_random_mutations(ldt_text(eight_planes(3, 5)), [](const std::string& text) {
+    (void)make_ldt_web(parse_ldt(text, "mutated.ldt"));
+  });
 }
 
 }  // namespace

@@ -7,9 +7,9 @@
 #include <filesystem>
 #include <map>
 
+#include "common/read_file.h"
 #include "light/ies_parser.h"
 #include "light/ldt_parser.h"
-#include "common/read_file.h"
 #include "photometry_test_support.h"
 
 namespace relight {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -74,5 +75,38 @@ struct TempDir {
     return file;
   }
 };
+
+// Deterministic mutations of a valid file (character changes, insertions, deletions):
+// `parse` must either succeed or throw InputError for every one — never crash.
+inline void parse_random_mutations(const std::string& valid,
+                                   const std::function<void(const std::string&)>& parse,
+                                   int trials = 3000) {
+  const std::string alphabet = "0123456789-+.,eE \n\r\tx[]=TILNCUDOab\x1a";
+  std::uint32_t state = 12345;
+  auto next = [&] { return state = state * 1664525u + 1013904223u; };
+  for (int trial = 0; trial < trials; ++trial) {
+    std::string text = valid;
+    const int edits = 1 + static_cast<int>(next() % 4);
+    for (int e = 0; e < edits && !text.empty(); ++e) {
+      const std::size_t at = next() % text.size();
+      const char ch = alphabet[next() % alphabet.size()];
+      switch (next() % 3) {
+        case 0:
+          text[at] = ch;
+          break;
+        case 1:
+          text.insert(text.begin() + static_cast<std::ptrdiff_t>(at), ch);
+          break;
+        default:
+          text.erase(at, 1 + next() % 8);
+          break;
+      }
+    }
+    try {
+      parse(text);
+    } catch (const InputError&) {
+    }
+  }
+}
 
 }  // namespace relight::test
