@@ -79,40 +79,6 @@ struct ChunkRows {
   std::vector<float> values;
 };
 
-// Ray origins per receiver. A vertex on a crease (the foot of a wall, a room corner)
-// lies in the plane of the neighbouring faces too, so rays toward those faces would start
-// on them and slip out of the room. Vertices are therefore moved a little toward the middle
-// of their own triangles (toward the centroid of their one-ring, within the tangent plane)
-// before the usual push along the normal: by 1e-4 · max(|p|∞, 1) m (five times that push),
-// at most a quarter of the way to the centroid, far below any lighting gradient. Sensors
-// are used as given.
-std::vector<Vec3> ray_origins(const Receivers& receivers, const PreparedMesh& mesh) {
-  std::vector<Vec3> centroid_sum(receivers.vertex_count);
-  std::vector<std::uint32_t> triangles_at(receivers.vertex_count, 0);
-  for (const Triangle& t : mesh.triangles) {
-    const Vec3 centroid = (mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]]) / 3;
-    for (std::uint32_t v : t) {
-      centroid_sum[v] += centroid;
-      ++triangles_at[v];
-    }
-  }
-  std::vector<Vec3> origins(receivers.size());
-  for (std::size_t r = 0; r < receivers.size(); ++r) {
-    Vec3 p = receivers.positions[r];
-    const Vec3 n = receivers.normals[r];
-    if (r < receivers.vertex_count && triangles_at[r] > 0) {
-      const Vec3 toward = centroid_sum[r] / triangles_at[r] - p;
-      const Vec3 tangent = toward - n * dot(toward, n);
-      const double distance = length(tangent);
-      const double scale = std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z), 1.0});
-      const double step = std::min(1e-4 * scale, 0.25 * distance);
-      if (step > 0) p += tangent * (step / distance);
-    }
-    origins[r] = offset_from_surface(p, n);
-  }
-  return origins;
-}
-
 // True when the ray reaches the front side of an opaque triangle before any portal.
 bool front_hit(const PreparedMesh& mesh, const TracedScene& traced, const Ray& ray, RayHit& hit) {
   hit = traced.opaque.intersect(ray);
@@ -190,7 +156,11 @@ GatherOperator build_gather_operator(const Receivers& receivers, const PreparedM
   const std::size_t rows = receivers.size();
   const std::size_t chunk_count = (rows + kChunkRows - 1) / kChunkRows;
   std::vector<ChunkRows> chunks(chunk_count);
-  const std::vector<Vec3> origins = ray_origins(receivers, mesh);
+  const std::vector<Vec3> points = receiver_ray_points(receivers, mesh);
+  std::vector<Vec3> origins(points.size());
+  for (std::size_t r = 0; r < points.size(); ++r) {
+    origins[r] = offset_from_surface(points[r], receivers.normals[r]);
+  }
   const std::vector<Vec3> vertex_pattern = cosine_pattern(rays_per_vertex, seed);
   const std::vector<Vec3> sensor_pattern = cosine_pattern(rays_per_sensor, seed);
   Progress bar("gather operator", rows, progress);

@@ -87,8 +87,9 @@ DirectFactor direct_factor(const RayTracer& occluders, Vec3 p, Vec3 normal, Vec3
   return out;
 }
 
-DirectGeometry compute_direct_geometry(const Receivers& receivers, const TracedScene& traced,
-                                       Vec3 luminaire_position,
+DirectGeometry compute_direct_geometry(const Receivers& receivers,
+                                       const std::vector<Vec3>& ray_points,
+                                       const TracedScene& traced, Vec3 luminaire_position,
                                        const std::vector<Vec3>& opening_offsets, bool progress) {
   const std::size_t n = receivers.size();
   DirectGeometry g;
@@ -102,9 +103,8 @@ DirectGeometry compute_direct_geometry(const Receivers& receivers, const TracedS
     std::uint64_t local_rays = 0;
     for (std::size_t r = range.begin(); r != range.end(); ++r) {
       bar.advance();
-      const DirectFactor f =
-          direct_factor(traced.opaque, receivers.positions[r], receivers.normals[r],
-                        luminaire_position, opening_offsets, local_rays);
+      const DirectFactor f = direct_factor(traced.opaque, ray_points[r], receivers.normals[r],
+                                           luminaire_position, opening_offsets, local_rays);
       g.dir_x[r] = static_cast<float>(f.direction.x);
       g.dir_y[r] = static_cast<float>(f.direction.y);
       g.dir_z[r] = static_cast<float>(f.direction.z);

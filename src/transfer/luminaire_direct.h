@@ -49,8 +49,10 @@ struct DirectFactor {
 DirectFactor direct_factor(const RayTracer& occluders, Vec3 p, Vec3 n, Vec3 luminaire_position,
                            const std::vector<Vec3>& opening_offsets, std::uint64_t& rays);
 
-DirectGeometry compute_direct_geometry(const Receivers& receivers, const TracedScene& traced,
-                                       Vec3 luminaire_position,
+// `ray_points` are receiver_ray_points(receivers, mesh): the shadow rays start there.
+DirectGeometry compute_direct_geometry(const Receivers& receivers,
+                                       const std::vector<Vec3>& ray_points,
+                                       const TracedScene& traced, Vec3 luminaire_position,
                                        const std::vector<Vec3>& opening_offsets, bool progress);
 
 }  // namespace relight

@@ -43,6 +43,7 @@ Precomputed precompute_transfer(const Scene& scene, const PrecomputeOptions& opt
   // Direct geometry per luminaire, and its SH-basis direct columns side by side.
   start = Clock::now();
   std::uint64_t direct_rays = 0;
+  const std::vector<Vec3> ray_points = receiver_ray_points(out.receivers, out.mesh);
   const int k = sh_count(out.sh_order);
   const auto n = static_cast<Eigen::Index>(out.receivers.size());
   const auto luminaire_count = static_cast<Eigen::Index>(scene.luminaires.size());
@@ -54,8 +55,8 @@ Precomputed precompute_transfer(const Scene& scene, const PrecomputeOptions& opt
         opening_sample_offsets(luminaire_opening(l, placed.distribution.opening()),
                                {placed.aim, placed.c0, placed.c90}, options.opening_samples);
     LuminaireTransfer t;
-    t.direct =
-        compute_direct_geometry(out.receivers, traced, l.position, offsets, options.progress);
+    t.direct = compute_direct_geometry(out.receivers, ray_points, traced, l.position, offsets,
+                                       options.progress);
     direct_rays += t.direct.rays;
     direct_columns.middleCols(j * k, k) = sh_basis_direct(t.direct, out.sh_order);
     if (out.direct_mode == "sh") {

@@ -26,4 +26,14 @@ struct Receivers {
 
 Receivers make_receivers(const Scene& scene, const PreparedMesh& mesh);
 
+// Where rays leaving each receiver start, before the push along the normal: a vertex on a
+// crease (the foot of a wall, a room corner, a ceiling edge) also lies in the plane of its
+// neighbouring faces, and rays from it that run in or toward those planes start on them
+// — gather rays slip out of the room, and shadow rays to a luminaire mounted in the
+// ceiling plane graze the ceiling and are falsely blocked. Vertices are therefore moved a
+// little toward the middle of their own triangles (toward the centroid of their one-ring,
+// within the tangent plane): by 1e-4 · max(|p|∞, 1) m, at most a quarter of the way to the
+// centroid, far below any lighting gradient. Sensors are used as given.
+std::vector<Vec3> receiver_ray_points(const Receivers& receivers, const PreparedMesh& mesh);
+
 }  // namespace relight
