@@ -27,11 +27,32 @@ struct PathContext {
   std::uint64_t rays = 0;
 };
 
-Rgb direct_illuminance(PathContext& ctx, Vec3 p, Vec3 n) {
+// Which luminaires a direct estimate covers: sensors evaluate point sources once and
+// average the ones with openings over their samples.
+enum class Sources { kAll, kPoints, kOpenings };
+
+// A uniformly random point of the luminous opening, relative to the photometric centre.
+Vec3 opening_point(const ReferenceOpening& o, const PlacedLuminaire& l, Pcg32& rng) {
+  double s = 0, t = 0;
+  do {
+    s = rng.next_double() - 0.5;
+    t = rng.next_double() - 0.5;
+  } while (o.round && 4 * (s * s + t * t) > 1);
+  const double h = rng.next_double() - 0.5;
+  return l.c0 * (s * o.length) + l.c90 * (t * o.width) - l.aim * (h * o.height);
+}
+
+Rgb direct_illuminance(PathContext& ctx, Vec3 p, Vec3 n, Sources sources = Sources::kAll) {
   const ReferenceScene& ref = ctx.ref;
   Rgb e;
   const Vec3 origin = offset_from_surface(p, n);
-  for (const PlacedLuminaire& l : ref.luminaires) {
+  for (std::size_t j = 0; j < ref.luminaires.size(); ++j) {
+    const PlacedLuminaire& l = ref.luminaires[j];
+    const ReferenceOpening& opening = ref.openings[j];
+    if ((sources == Sources::kPoints && !opening.is_point()) ||
+        (sources == Sources::kOpenings && opening.is_point())) {
+      continue;
+    }
     const Vec3 d = l.position - origin;
     const double dist2 = dot(d, d);
     const double dist = std::sqrt(dist2);
@@ -42,7 +63,13 @@ Rgb direct_illuminance(PathContext& ctx, Vec3 p, Vec3 n) {
     const Rgb intensity = l.intensity_toward(-w);
     if (max_component(intensity) <= 0) continue;
     ++ctx.rays;
-    if (ref.traced.opaque.occluded({origin, w, 0, dist - kLightMargin})) continue;
+    Vec3 to_light = d;
+    if (!opening.is_point()) to_light += opening_point(opening, l, ctx.rng);
+    const double span = length(to_light);
+    if (span > kLightMargin &&
+        ref.traced.opaque.occluded({origin, to_light / span, 0, span - kLightMargin})) {
+      continue;
+    }
     e += intensity * (cos_theta / dist2);
   }
   return e;
@@ -101,7 +128,20 @@ Rgb indirect_sample(PathContext& ctx, Vec3 p, Vec3 n) {
 ReferenceScene make_reference_scene(const Scene& scene, const PreparedMesh& mesh,
                                     const TracedScene& traced,
                                     const std::vector<PlacedLuminaire>& luminaires) {
-  ReferenceScene ref{mesh, traced, luminaires, {}};
+  ReferenceScene ref{mesh, traced, luminaires, {}, {}};
+  for (std::size_t j = 0; j < luminaires.size(); ++j) {
+    const Luminaire& l = scene.luminaires.at(j);
+    const LuminousOpening o = luminaires[j].distribution.opening();
+    ReferenceOpening opening{
+        o.length_m, o.width_m, o.height_m,
+        o.shape == OpeningShape::kCircular || o.shape == OpeningShape::kEllipse ||
+            o.shape == OpeningShape::kVerticalCylinder ||
+            o.shape == OpeningShape::kVerticalEllipticalCylinder ||
+            o.shape == OpeningShape::kSphere || o.shape == OpeningShape::kEllipsoidalSpheroid};
+    if (o.shape == OpeningShape::kPoint) opening = {};
+    if (l.has_size) opening = {l.size.y, l.size.x, l.size.z, false};  // scene size: a box
+    ref.openings.push_back(opening);
+  }
   ref.triangle_albedo.reserve(mesh.triangles.size());
   for (std::uint32_t m : mesh.triangle_material) {
     ref.triangle_albedo.push_back(scene.materials.at(m).albedo);
@@ -125,11 +165,15 @@ std::vector<Rgb> reference_sensor_illuminance(const Scene& scene, const Referenc
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size()), [&](const auto& range) {
     for (std::size_t i = range.begin(); i != range.end(); ++i) {
       PathContext ctx{ref, Pcg32(settings.seed, i), settings.max_depth};
-      const Rgb direct = direct_illuminance(ctx, points[i].p, points[i].n);
-      Rgb indirect;
-      for (int s = 0; s < settings.spp; ++s)
-        indirect += indirect_sample(ctx, points[i].p, points[i].n);
-      result[i] = direct + indirect / settings.spp;
+      // Point sources once (exact); luminaires with an opening and the reflected light
+      // averaged over the samples.
+      const Rgb direct = direct_illuminance(ctx, points[i].p, points[i].n, Sources::kPoints);
+      Rgb sampled;
+      for (int s = 0; s < settings.spp; ++s) {
+        sampled += direct_illuminance(ctx, points[i].p, points[i].n, Sources::kOpenings) +
+                   indirect_sample(ctx, points[i].p, points[i].n);
+      }
+      result[i] = direct + sampled / settings.spp;
       rays += ctx.rays;
       progress.advance();
     }

@@ -8,7 +8,10 @@
 // Estimators: at a surface point x of albedo ρ, outgoing luminance
 //   L(x) = ρ/π · E(x),  E(x) = E_direct(x) + π · E_ω~cos[L_in(x, ω)],
 // with E_direct = Σ_lights V · I(−ω) · cos θ / d². Sensors report E; pixels report L (and
-// E for false-colour illuminance views).
+// E for false-colour illuminance views). A luminaire with a luminous opening (IES/LDT
+// dimensions or a scene size) is seen through a random point of the opening per sample,
+// so V averages to its visible fraction and shadows get their penumbrae; ω, I and d stay
+// those of the photometric centre.
 #pragma once
 
 #include <cstdint>
@@ -32,11 +35,21 @@ struct ReferenceSettings {
 };
 
 // Everything the tracer reads; built once per scene.
+// A luminaire's luminous opening as the reference samples it for visibility: extents
+// along C0 (length), C90 (width) and the aim (height), elliptical in plan when round;
+// all zero for a point source. Intensity is always taken from the photometric centre.
+struct ReferenceOpening {
+  double length = 0, width = 0, height = 0;
+  bool round = false;
+  bool is_point() const { return length <= 0 && width <= 0 && height <= 0; }
+};
+
 struct ReferenceScene {
   const PreparedMesh& mesh;
   const TracedScene& traced;
   const std::vector<PlacedLuminaire>& luminaires;
   std::vector<Rgb> triangle_albedo;
+  std::vector<ReferenceOpening> openings;  // one per luminaire
 };
 
 ReferenceScene make_reference_scene(const Scene& scene, const PreparedMesh& mesh,
