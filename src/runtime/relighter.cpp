@@ -39,7 +39,7 @@ int single_moved_point(const DistributionSpec& a, const DistributionSpec& b) {
 }  // namespace
 
 Relighter::Relighter(TransferView transfer, const Scene& scene, RelighterSettings settings)
-    : transfer_(std::move(transfer)), scene_(scene), settings_(settings) {
+    : transfer_(std::move(transfer)), settings_(settings) {
   if (transfer_.luminaires.size() != scene.luminaires.size()) {
     throw std::invalid_argument("Relighter: transfer and scene disagree on luminaires");
   }

@@ -81,7 +81,6 @@ class Relighter {
   void project_distribution(std::size_t j, const LuminaireState& s);
 
   TransferView transfer_;
-  const Scene& scene_;
   RelighterSettings settings_;
   LightingState state_;
   std::vector<Luminaire> luminaires_;
