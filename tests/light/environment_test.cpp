@@ -2,6 +2,8 @@
 // force, cubemap energy conservation, map rotation, and building from specs.
 #include <gtest/gtest.h>
 
+#include "support/cubemap_integral.h"
+
 #include <cmath>
 #include <iostream>
 #include <memory>
@@ -40,15 +42,7 @@ double irradiance_from_sh(const std::vector<Rgb>& c, Vec3 normal) {
   return e;
 }
 
-double cube_integral(const std::vector<Rgb>& cube, int n) {
-  const std::vector<double> omega = cubemap_solid_angles(n);
-  double sum = 0;
-  for (std::size_t t = 0; t < cube.size(); ++t) {
-    const CubemapTexel c = cubemap_texel_from_index(n, t);
-    sum += luminance(cube[t]) * omega[c.j * n + c.i];
-  }
-  return sum;
-}
+using testing::cube_integral;
 
 // A smooth, non-symmetric map with a bright small blob: per-texel values in cd/m².
 std::shared_ptr<EquirectMap> test_map(int width, int height) {

@@ -1,7 +1,9 @@
 // Environment map files: OpenEXR and Radiance .hdr into equirectangular maps, Blender's DWAB
 // studio-light worlds (Debian blender-data), and errors as "FILE: reason".
 #include <gtest/gtest.h>
+
 #include <stb/stb_image_write.h>
+#include "support/cubemap_integral.h"
 
 #include <chrono>
 #include <cmath>
@@ -30,15 +32,7 @@ std::string error_of(const fs::path& path) {
   return "";
 }
 
-double cube_integral(const std::vector<Rgb>& cube, int n) {
-  const std::vector<double> omega = cubemap_solid_angles(n);
-  double sum = 0;
-  for (std::size_t t = 0; t < cube.size(); ++t) {
-    const CubemapTexel c = cubemap_texel_from_index(n, t);
-    sum += luminance(cube[t]) * omega[c.j * n + c.i];
-  }
-  return sum;
-}
+using testing::cube_integral;
 
 TEST(EnvironmentMapIo, ReadsExr) {
   testing::TempDir dir;

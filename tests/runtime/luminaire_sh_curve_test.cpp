@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/sh_compare.h"
+
 #include <algorithm>
 #include <cmath>
 #include <iostream>
@@ -17,17 +19,8 @@
 namespace relight {
 namespace {
 
-double max_abs(const std::vector<double>& v) {
-  double m = 0.0;
-  for (const double x : v) m = std::max(m, std::abs(x));
-  return m;
-}
-
-double max_abs_diff(const std::vector<double>& a, const std::vector<double>& b) {
-  double m = 0.0;
-  for (std::size_t i = 0; i < a.size(); ++i) m = std::max(m, std::abs(a[i] - b[i]));
-  return m;
-}
+using testing::max_abs;
+using testing::max_abs_diff;
 
 CurveModel curve_deg(const std::vector<double>& gamma_deg, const std::vector<double>& candela) {
   CurveModel m;

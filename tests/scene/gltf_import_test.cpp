@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/temp_dir.h"
+
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -85,18 +87,8 @@ json indexed_quad(int material = 0) {
 
 class GltfImport : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("relight_gltf_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   fs::path write(const std::string& name, const std::string& bytes) const {
-    const fs::path path = dir_ / name;
-    std::ofstream(path, std::ios::binary) << bytes;
-    return path;
+    return dir_.write(name, bytes);
   }
 
   fs::path write_glb(const std::string& name, json document,
@@ -131,7 +123,7 @@ class GltfImport : public ::testing::Test {
     return {};
   }
 
-  fs::path dir_;
+  testing::TempDir dir_;
 };
 
 Vec3 normal_of(const ImportedMesh& m, const Triangle& t) {

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/temp_dir.h"
+
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -44,18 +46,8 @@ class Bytes {
 
 class PlyImport : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("relight_ply_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   fs::path write(const std::string& name, const std::string& bytes) const {
-    const fs::path path = dir_ / name;
-    std::ofstream(path, std::ios::binary) << bytes;
-    return path;
+    return dir_.write(name, bytes);
   }
 
   std::string error_of(const fs::path& path) const {
@@ -68,7 +60,7 @@ class PlyImport : public ::testing::Test {
     return {};
   }
 
-  fs::path dir_;
+  testing::TempDir dir_;
 };
 
 // Header of a unit square (two faces: a triangle and a quad over 5 vertices), with an extra
