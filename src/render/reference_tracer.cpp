@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -94,6 +95,13 @@ bool trace_surface(PathContext& ctx, const Ray& ray, SurfaceHit& out) {
   return true;
 }
 
+// Daylight through the portals at a surface point (render/reference_portals.h).
+Rgb daylight_illuminance(PathContext& ctx, Vec3 p, Vec3 n) {
+  if (ctx.ref.portals.portals.empty()) return {};
+  const ExteriorView view{ctx.ref.mesh, ctx.ref.traced, ctx.ref.portals};
+  return portal_illuminance(view, offset_from_surface(p, n), n, ctx.rng, ctx.rays);
+}
+
 Vec3 cosine_direction(Vec3 n, Pcg32& rng) {
   const double u1 = rng.next_double(), u2 = rng.next_double();
   return frame_from_normal(n).to_world(sample_cosine_hemisphere(u1, u2));
@@ -106,8 +114,11 @@ Rgb incident_luminance(PathContext& ctx, Vec3 origin, Vec3 dir) {
   for (int depth = 0; depth < ctx.max_depth; ++depth) {
     SurfaceHit s;
     if (!trace_surface(ctx, ray, s)) break;
-    // L = ρ/π E_direct + ρ · L_in(next): next-event estimation, then continue.
-    result += throughput * s.albedo * direct_illuminance(ctx, s.position, s.normal) * (1 / kPi);
+    // L = ρ/π E_direct + ρ · L_in(next): next-event estimation (luminaires and the
+    // exterior through portals), then continue; a continuation that escapes adds nothing.
+    const Rgb e = direct_illuminance(ctx, s.position, s.normal) +
+                  daylight_illuminance(ctx, s.position, s.normal);
+    result += throughput * s.albedo * e * (1 / kPi);
     throughput = throughput * s.albedo;
     const double survive = std::min(1.0, max_component(s.albedo));
     if (survive <= 0 || ctx.rng.next_double() >= survive) break;
@@ -127,8 +138,10 @@ Rgb indirect_sample(PathContext& ctx, Vec3 p, Vec3 n) {
 
 ReferenceScene make_reference_scene(const Scene& scene, const PreparedMesh& mesh,
                                     const TracedScene& traced,
-                                    const std::vector<PlacedLuminaire>& luminaires) {
-  ReferenceScene ref{mesh, traced, luminaires, {}, {}};
+                                    const std::vector<PlacedLuminaire>& luminaires,
+                                    std::vector<Environment> environments) {
+  ReferenceScene ref{mesh, traced, luminaires, {}, {}, {}};
+  ref.portals = make_reference_portals(scene, mesh, std::move(environments));
   for (std::size_t j = 0; j < luminaires.size(); ++j) {
     const Luminaire& l = scene.luminaires.at(j);
     const LuminousOpening o = luminaires[j].distribution.opening();
@@ -165,12 +178,13 @@ std::vector<Rgb> reference_sensor_illuminance(const Scene& scene, const Referenc
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size()), [&](const auto& range) {
     for (std::size_t i = range.begin(); i != range.end(); ++i) {
       PathContext ctx{ref, Pcg32(settings.seed, i), settings.max_depth};
-      // Point sources once (exact); luminaires with an opening and the reflected light
-      // averaged over the samples.
+      // Point sources once (exact); luminaires with an opening, daylight and the reflected
+      // light averaged over the samples.
       const Rgb direct = direct_illuminance(ctx, points[i].p, points[i].n, Sources::kPoints);
       Rgb sampled;
       for (int s = 0; s < settings.spp; ++s) {
         sampled += direct_illuminance(ctx, points[i].p, points[i].n, Sources::kOpenings) +
+                   daylight_illuminance(ctx, points[i].p, points[i].n) +
                    indirect_sample(ctx, points[i].p, points[i].n);
       }
       result[i] = direct + sampled / settings.spp;
@@ -192,6 +206,7 @@ ReferenceImages reference_render(const PinholeCamera& camera, const ReferenceSce
   // Sensor streams use indices below 2^40; pixel streams start above, so a pixel never
   // repeats a sensor's random sequence.
   constexpr std::uint64_t kPixelStreams = std::uint64_t{1} << 40;
+  const ExteriorView view{ref.mesh, ref.traced, ref.portals};
   std::atomic<std::uint64_t> rays{0};
   Progress progress("reference image", static_cast<std::uint64_t>(h), settings.progress);
   tbb::parallel_for(tbb::blocked_range<int>(0, h), [&](const tbb::blocked_range<int>& rows) {
@@ -200,24 +215,32 @@ ReferenceImages reference_render(const PinholeCamera& camera, const ReferenceSce
         const std::size_t index = static_cast<std::size_t>(y) * w + x;
         PathContext ctx{ref, Pcg32(settings.seed, kPixelStreams + index), settings.max_depth};
         Rgb e_sum, l_sum;
-        int covered = 0;
+        int covered = 0, exterior = 0;
         for (int s = 0; s < settings.spp; ++s) {
           const double jx = ctx.rng.next_double(), jy = ctx.rng.next_double();
+          const Ray ray{camera.eye, normalize(camera.direction(x + jx, y + jy))};
           SurfaceHit hit;
-          if (!trace_surface(ctx, {camera.eye, camera.direction(x + jx, y + jy)}, hit)) continue;
+          if (!trace_surface(ctx, ray, hit)) {
+            // Looking out through a portal: the environment, sun disc included.
+            const std::int32_t p = escape_portal(view, ray, ctx.rays);
+            if (p == kNoPortal) continue;
+            l_sum += ref.portals.portals[static_cast<std::size_t>(p)].environment.radiance(
+                ray.direction);
+            ++exterior;
+            continue;
+          }
           const Rgb e = direct_illuminance(ctx, hit.position, hit.normal) +
+                        daylight_illuminance(ctx, hit.position, hit.normal) +
                         indirect_sample(ctx, hit.position, hit.normal);
           e_sum += e;
           l_sum += hit.albedo * e * (1 / kPi);
           ++covered;
         }
-        if (covered == 0) {
-          out.luminance.pixels[index] = out.illuminance.pixels[index] = {nan, nan, nan};
-        } else {
-          // Pixels partly covering the background average over all samples (black there).
-          out.luminance.pixels[index] = l_sum / settings.spp;
-          out.illuminance.pixels[index] = e_sum / covered;
-        }
+        // Pixels partly covering the background average over all samples (black there);
+        // illuminance is that of the surfaces seen.
+        out.luminance.pixels[index] =
+            covered + exterior == 0 ? Rgb{nan, nan, nan} : l_sum / settings.spp;
+        out.illuminance.pixels[index] = covered == 0 ? Rgb{nan, nan, nan} : e_sum / covered;
         rays += ctx.rays;
       }
       progress.advance();

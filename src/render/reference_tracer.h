@@ -12,6 +12,11 @@
 // dimensions or a scene size) is seen through a random point of the opening per sample,
 // so V averages to its visible fraction and shadows get their penumbrae; ω, I and d stay
 // those of the photometric centre.
+// Daylight (render/reference_portals.h): E(x) also gets, per sample, next-event estimates
+// of each portal's environment (an area sample of the window with backward occlusion, and
+// a sun-cone sample for a sky with a sun); continuation rays that leave through a portal
+// add nothing, so no light is counted twice. Camera rays that look out through a portal
+// see the environment (sun included) in the luminance image.
 #pragma once
 
 #include <cstdint>
@@ -21,6 +26,7 @@
 #include "math/rgb.h"
 #include "render/camera.h"
 #include "render/image.h"
+#include "render/reference_portals.h"
 #include "scene/mesh_preparation.h"
 #include "scene/scene.h"
 #include "trace/traced_scene.h"
@@ -50,11 +56,15 @@ struct ReferenceScene {
   const std::vector<PlacedLuminaire>& luminaires;
   std::vector<Rgb> triangle_albedo;
   std::vector<ReferenceOpening> openings;  // one per luminaire
+  ReferencePortals portals;
 };
 
+// `environments`: one per scene portal, in order (see make_reference_portals); may stay
+// empty only for a scene without portals.
 ReferenceScene make_reference_scene(const Scene& scene, const PreparedMesh& mesh,
                                     const TracedScene& traced,
-                                    const std::vector<PlacedLuminaire>& luminaires);
+                                    const std::vector<PlacedLuminaire>& luminaires,
+                                    std::vector<Environment> environments = {});
 
 // Rays cast (closest-hit and shadow) and wall time of one estimate.
 struct ReferenceStats {
@@ -68,8 +78,9 @@ std::vector<Rgb> reference_sensor_illuminance(const Scene& scene, const Referenc
                                               ReferenceStats* stats = nullptr);
 
 struct ReferenceImages {
-  Image luminance;    // cd/m² per channel; NaN where no front surface is seen
-  Image illuminance;  // lux per channel at the seen surface; NaN likewise
+  Image luminance;    // cd/m² per channel (the environment through portals); NaN where
+                      // neither a front surface nor the exterior is seen
+  Image illuminance;  // lux per channel at the seen surface; NaN where none is seen
 };
 
 ReferenceImages reference_render(const PinholeCamera& camera, const ReferenceScene& ref,
