@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <utility>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -13,6 +15,7 @@
 #include "cli/view_args.h"
 #include "common/input_error.h"
 #include "light/luminaire_frame.h"
+#include "render/environment_map_io.h"
 #include "render/reference_tracer.h"
 #include "render/sensor_report.h"
 #include "scene/scene_loader.h"
@@ -47,7 +50,13 @@ void run_reference(const Scene& scene, const ReferenceRequest& request) {
   preparation.crease_deg = scene.precompute.crease_deg;
   const PreparedMesh mesh = prepare_mesh(scene.geometry, preparation);
   const TracedScene traced = build_traced_scene(mesh, scene.materials);
-  const ReferenceScene ref = make_reference_scene(scene, mesh, traced, luminaires);
+  // The exterior of each portal; map files are read here, not in the tracer.
+  std::vector<Environment> environments;
+  for (const Portal& portal : scene.portals) {
+    environments.push_back(load_environment(portal.environment));
+  }
+  const ReferenceScene ref =
+      make_reference_scene(scene, mesh, traced, luminaires, std::move(environments));
   ReferenceSettings settings;
   settings.spp = request.spp;
   settings.seed = request.seed;
