@@ -16,7 +16,8 @@ namespace relight {
 struct RelitScene {
   std::unique_ptr<TransferFile> transfer;  // stable address: the Relighter refers to it
   std::unique_ptr<Relighter> relighter;
-  std::unique_ptr<RayTracer> tracer;  // opaque triangles, built on first render
+  std::unique_ptr<RayTracer> tracer;          // opaque triangles, built on first render
+  std::unique_ptr<RayTracer> portal_tracer;   // portal triangles (ids: portal index)
   std::vector<float> irradiance;      // 3 per receiver: vertices, then sensors
 
   // Applies a state and relights.

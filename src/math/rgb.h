@@ -6,6 +6,7 @@ namespace relight {
 
 struct Rgb {
   double r = 0, g = 0, b = 0;
+  bool operator==(const Rgb&) const = default;
 };
 
 constexpr Rgb operator+(Rgb a, Rgb c) {

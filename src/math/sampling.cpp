@@ -34,4 +34,20 @@ Vec3 sample_uniform_sphere(double u1, double u2) {
   return {r * std::cos(phi), r * std::sin(phi), z};
 }
 
+std::uint32_t van_der_corput(std::uint32_t i, std::uint32_t scramble) {
+  i = (i << 16) | (i >> 16);
+  i = ((i & 0x00ff00ffu) << 8) | ((i & 0xff00ff00u) >> 8);
+  i = ((i & 0x0f0f0f0fu) << 4) | ((i & 0xf0f0f0f0u) >> 4);
+  i = ((i & 0x33333333u) << 2) | ((i & 0xccccccccu) >> 2);
+  i = ((i & 0x55555555u) << 1) | ((i & 0xaaaaaaaau) >> 1);
+  return i ^ scramble;
+}
+
+std::uint32_t sobol2(std::uint32_t i, std::uint32_t scramble) {
+  for (std::uint32_t v = 1u << 31; i != 0; i >>= 1, v ^= v >> 1) {
+    if (i & 1u) scramble ^= v;
+  }
+  return scramble;
+}
+
 }  // namespace relight

@@ -21,14 +21,20 @@ ShadedImages shade_vertices(const PinholeCamera& camera, const VertexShadingInpu
     for (int y = rows.begin(); y != rows.end(); ++y) {
       for (int x = 0; x < w; ++x) {
         Rgb l_sum, e_sum;
-        int covered = 0;
+        int covered = 0, escaped = 0;
         for (int s = 0; s < spp; ++s) {
           const int row = s / samples_per_axis, column = s % samples_per_axis;
           const double sx = (column + 0.5) / samples_per_axis;
           const double sy = (row + 0.5) / samples_per_axis;
           const Vec3 dir = camera.direction(x + sx, y + sy);
           const RayHit hit = in.tracer.intersect({camera.eye, dir});
-          if (!hit.hit()) continue;
+          if (!hit.hit()) {
+            if (in.background) {
+              l_sum += in.background(camera.eye, dir);
+              ++escaped;
+            }
+            continue;
+          }
           const Triangle& t = in.triangles[hit.triangle];
           const Vec3 a = in.positions[t[0]], b = in.positions[t[1]], c = in.positions[t[2]];
           const Vec3 face = cross(b - a, c - a);
@@ -51,12 +57,8 @@ ShadedImages shade_vertices(const PinholeCamera& camera, const VertexShadingInpu
         }
         Rgb& lum = out.luminance.at(x, y);
         Rgb& ill = out.illuminance.at(x, y);
-        if (covered == 0) {
-          lum = ill = {nan, nan, nan};
-        } else {
-          lum = l_sum / spp;
-          ill = e_sum / covered;
-        }
+        lum = covered + escaped == 0 ? Rgb{nan, nan, nan} : l_sum / spp;
+        ill = covered == 0 ? Rgb{nan, nan, nan} : e_sum / covered;
       }
     }
   });

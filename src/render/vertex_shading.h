@@ -25,10 +25,13 @@ struct VertexShadingInput {
   // When set, irradiance holds interreflected light only and this gives the direct
   // irradiance at each hit point and its geometric normal (render/pixel_direct.h).
   std::function<Rgb(Vec3 point, Vec3 normal)> direct_at_hit;
+  // When set, a ray that meets no surface shows this luminance (the view out of a window:
+  // the portal's shell); its illuminance stays NaN.
+  std::function<Rgb(Vec3 origin, Vec3 dir)> background;
 };
 
 struct ShadedImages {
-  Image luminance;    // cd/m² per channel; NaN where no front surface is seen
+  Image luminance;    // cd/m² per channel; NaN where no front surface (or background) is seen
   Image illuminance;  // lux per channel; NaN likewise
 };
 

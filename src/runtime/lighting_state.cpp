@@ -14,6 +14,10 @@ LightingState default_lighting_state(const Scene& scene) {
   for (const Luminaire& l : scene.luminaires) {
     s.luminaires.push_back({true, l.dimmer, l.color, l.aim, l.c0, l.distribution});
   }
+  for (const Portal& p : scene.portals) {
+    s.portals.push_back({p.environment, p.tint, p.frost_deg,
+                         std::vector<ExteriorPlacement>(scene.exterior.size())});
+  }
   return s;
 }
 
@@ -75,18 +79,72 @@ void apply_luminaire(LuminaireState& s, const Luminaire& scene_luminaire, const 
   if (const auto d = node.find("distribution")) s.distribution = parse_distribution(*d, base_dir);
 }
 
+std::size_t exterior_index(const Scene& scene, const JsonNode& where, const std::string& name) {
+  for (std::size_t i = 0; i < scene.exterior.size(); ++i) {
+    if (scene.exterior[i].name == name) return i;
+  }
+  where.fail("no exterior object named \"" + name + "\" in the precomputed scene");
+}
+
+void apply_placement(ExteriorPlacement& p, const JsonNode& node) {
+  node.expect_keys({"translate", "rotate_deg", "visible"});
+  if (const auto t = node.find("translate")) p.translate = t->vec3();
+  if (const auto r = node.find("rotate_deg")) p.rotate_deg = r->number();
+  if (const auto v = node.find("visible")) p.visible = v->boolean();
+}
+
+// Applies an "exterior" object (names → placements) to every portal in `portals`.
+void apply_exterior(std::vector<PortalState*> portals, const Scene& scene, const JsonNode& node) {
+  if (!node.is_object()) node.fail("expected an object mapping exterior object names to placements");
+  for (const auto& [name, unused] : node.value().items()) {
+    const JsonNode entry = node.at(name);
+    const std::size_t i = exterior_index(scene, entry, name);
+    for (PortalState* p : portals) apply_placement(p->exterior[i], entry);
+  }
+}
+
+std::size_t portal_index(const Scene& scene, const JsonNode& where, const std::string& name) {
+  for (std::size_t i = 0; i < scene.portals.size(); ++i) {
+    if (scene.portals[i].name == name) return i;
+  }
+  where.fail("no portal named \"" + name + "\" in the precomputed scene");
+}
+
+void apply_portal(PortalState& s, const Scene& scene, const JsonNode& node,
+                  const std::filesystem::path& base_dir) {
+  node.expect_keys({"environment", "tint", "frost_deg", "exterior"});
+  if (const auto e = node.find("environment")) s.environment = parse_environment(*e, base_dir);
+  if (const auto t = node.find("tint")) s.tint = parse_tint(*t);
+  if (const auto f = node.find("frost_deg")) s.frost_deg = parse_frost_deg(*f);
+  if (const auto x = node.find("exterior")) apply_exterior({&s}, scene, *x);
+}
+
 }  // namespace
 
 void apply_lighting_state(LightingState& state, const Scene& scene, const nlohmann::json& document,
                           const std::string& where, const std::filesystem::path& base_dir) {
   const JsonNode root(document, where, "/");
-  root.expect_keys({"luminaires"});
+  root.expect_keys({"luminaires", "portals", "exterior"});
   if (const auto lums = root.find("luminaires")) {
     if (!lums->is_object()) lums->fail("expected an object mapping luminaire names to states");
     for (const auto& [name, unused] : lums->value().items()) {
       const JsonNode node = lums->at(name);
       const std::size_t i = luminaire_index(scene, node, name);
       apply_luminaire(state.luminaires[i], scene.luminaires[i], node, base_dir);
+    }
+  }
+  // The top-level exterior first: a portal's own "exterior" overrides it for its shell.
+  if (const auto x = root.find("exterior")) {
+    std::vector<PortalState*> all;
+    for (PortalState& p : state.portals) all.push_back(&p);
+    apply_exterior(all, scene, *x);
+  }
+  if (const auto portals = root.find("portals")) {
+    if (!portals->is_object()) portals->fail("expected an object mapping portal names to states");
+    for (const auto& [name, unused] : portals->value().items()) {
+      const JsonNode node = portals->at(name);
+      const std::size_t i = portal_index(scene, node, name);
+      apply_portal(state.portals[i], scene, node, base_dir);
     }
   }
 }

@@ -21,8 +21,30 @@ struct LuminaireState {
   DistributionSpec distribution;
 };
 
+// Where an exterior object is this frame: turned by `rotate_deg` about the vertical axis
+// through its pivot (counter-clockwise seen from above, the right-handed sense about +y), then
+// moved by `translate`; hidden when not visible.
+struct ExteriorPlacement {
+  Vec3 translate{0, 0, 0};
+  double rotate_deg = 0;
+  bool visible = true;
+  bool operator==(const ExteriorPlacement&) const = default;
+};
+
+// What a window shows and how its glass changes it (issue 4, the interior-scene paper §5).
+struct PortalState {
+  EnvironmentSpec environment;
+  Rgb tint{1, 1, 1};
+  double frost_deg = 0;
+  // Per exterior object (scene order): the state's top-level "exterior", overridden for this
+  // portal's shell by the portal's own "exterior".
+  std::vector<ExteriorPlacement> exterior;
+  bool operator==(const PortalState&) const = default;
+};
+
 struct LightingState {
   std::vector<LuminaireState> luminaires;  // scene order
+  std::vector<PortalState> portals;        // scene order
 };
 
 LightingState default_lighting_state(const Scene& scene);

@@ -39,14 +39,20 @@ int single_moved_point(const DistributionSpec& a, const DistributionSpec& b) {
 }  // namespace
 
 Relighter::Relighter(TransferView transfer, const Scene& scene, RelighterSettings settings)
-    : transfer_(std::move(transfer)), settings_(settings) {
-  if (transfer_.luminaires.size() != scene.luminaires.size()) {
-    throw std::invalid_argument("Relighter: transfer and scene disagree on luminaires");
+    : transfer_(std::move(transfer)), scene_(&scene), settings_(std::move(settings)) {
+  if (transfer_.luminaires.size() != scene.luminaires.size() ||
+      transfer_.portals.size() != scene.portals.size()) {
+    throw std::invalid_argument("Relighter: transfer and scene disagree on luminaires or portals");
   }
   luminaires_.resize(scene.luminaires.size());
   state_ = default_lighting_state(scene);
   for (std::size_t j = 0; j < luminaires_.size(); ++j) {
     update_luminaire(j, state_.luminaires[j], true);
+  }
+  portals_.resize(scene.portals.size());
+  for (std::size_t p = 0; p < portals_.size(); ++p) {
+    update_portal_lighting(portals_[p], transfer_.portals[p], transfer_.portal_sh_order,
+                           state_.portals[p], scene, settings_.load_environment);
   }
 }
 
@@ -57,6 +63,11 @@ void Relighter::set_state(const LightingState& state) {
     const bool geometry_changed = !(now.aim == next.aim) || !(now.c0 == next.c0) ||
                                   !same_distribution(now.distribution, next.distribution);
     update_luminaire(j, next, geometry_changed);
+  }
+  for (std::size_t p = 0; p < portals_.size(); ++p) {
+    if (state.portals.at(p) == state_.portals[p]) continue;
+    update_portal_lighting(portals_[p], transfer_.portals[p], transfer_.portal_sh_order,
+                           state.portals[p], *scene_, settings_.load_environment);
   }
   state_ = state;
 }
@@ -134,10 +145,12 @@ void Relighter::update_luminaire(std::size_t j, const LuminaireState& s, bool ge
   if (transfer_.direct_sh_mode) l.direct_weights = l.weights;
 }
 
-void Relighter::relight(std::span<float> out, bool include_direct) const {
+void Relighter::relight(std::span<float> out, bool include_direct,
+                        bool include_portal_direct) const {
   const std::size_t n = transfer_.receivers;
   if (out.size() != 3 * n) throw std::invalid_argument("Relighter: output size mismatch");
   const auto k = static_cast<std::size_t>(sh_count(transfer_.sh_order));
+  const auto kp = static_cast<std::size_t>(sh_count(transfer_.portal_sh_order));
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, block_count(n)), [&](const auto& blocks) {
     for (std::size_t b = blocks.begin(); b != blocks.end(); ++b) {
       alignas(64) float acc[3][kBlock] = {};
@@ -173,6 +186,29 @@ void Relighter::relight(std::span<float> out, bool include_direct) const {
           }
         }
       }
+      for (std::size_t p = 0; p < portals_.size(); ++p) {
+        const PortalLighting& l = portals_[p];
+        if (!l.active) continue;
+        const PortalTransferView& v = transfer_.portals[p];
+        if (include_portal_direct) {
+          for (std::size_t i = 0; i < count; ++i) {
+            const std::uint64_t at = v.offsets[base + i];
+            const Rgb e = dot_receiver_cubemap(v.records.subspan(at, v.offsets[base + i + 1] - at),
+                                               l.cubemap);
+            acc[0][i] += static_cast<float>(e.r);
+            acc[1][i] += static_cast<float>(e.g);
+            acc[2][i] += static_cast<float>(e.b);
+          }
+        }
+        const float* t = v.indirect.data() + b * kp * 3 * kBlock;
+        for (std::size_t basis = 0; basis < kp; ++basis) {
+          for (int c = 0; c < 3; ++c) {
+            const float w = l.weights[3 * basis + c];
+            const float* tc = t + (3 * basis + c) * kBlock;
+            for (std::size_t i = 0; i < kBlock; ++i) acc[c][i] += w * tc[i];
+          }
+        }
+      }
       for (std::size_t i = 0; i < count; ++i) {
         for (int c = 0; c < 3; ++c) out[3 * (base + i) + c] = acc[c][i];
       }
@@ -188,6 +224,11 @@ std::size_t Relighter::transfer_bytes() const {
     bytes += v.indirect.size_bytes();
     bytes += transfer_.direct_sh_mode ? v.direct_sh.size_bytes()
                                       : luminaires_[j].direct.size() * sizeof(float);
+  }
+  for (std::size_t p = 0; p < portals_.size(); ++p) {
+    if (!portals_[p].active) continue;
+    const PortalTransferView& v = transfer_.portals[p];
+    bytes += v.indirect.size_bytes() + v.records.size_bytes() + v.offsets.size_bytes();
   }
   return bytes;
 }

@@ -11,13 +11,16 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "light/distribution.h"
 #include "math/sh_window.h"
 #include "runtime/lighting_state.h"
+#include "runtime/portal_lighting.h"
 #include "runtime/luminaire_sh_curve.h"
 #include "scene/scene.h"
 
@@ -30,15 +33,32 @@ struct LuminaireTransferView {
   std::span<const float> direct_sh;                    // blocked 1 × K ("sh" mode only)
 };
 
+// Views into the stored transfer of one portal: its geometry for the shell, the direct
+// cubemap record of each receiver (transfer/cubemap_encoding.h) and the indirect response
+// to each SH basis radiance of its shell (blocked RGB × K, K = portal_sh_order²).
+struct PortalTransferView {
+  std::string name;
+  int face_size = 32;
+  Vec3 centre, outward;
+  double diameter = 0;
+  std::span<const std::uint8_t> records;
+  std::span<const std::uint64_t> offsets;  // receivers + 1
+  std::span<const float> indirect;
+};
+
 struct TransferView {
   std::size_t receivers = 0;
   int sh_order = 8;
   bool direct_sh_mode = false;
   std::vector<LuminaireTransferView> luminaires;  // scene order
+  int portal_sh_order = 6;
+  std::vector<PortalTransferView> portals;  // scene order
 };
 
 struct RelighterSettings {
   ShWindow window = ShWindow::kSigma;  // applied to the SH weights of every luminaire
+  // Reads portal environments (map images need render/environment_map_io.h).
+  EnvironmentLoader load_environment = environment_without_images;
 };
 
 class Relighter {
@@ -51,9 +71,15 @@ class Relighter {
   const LightingState& state() const { return state_; }
 
   // Irradiance per receiver, RGB interleaved: out.size() == 3 · receivers. Without
-  // direct light only the interreflected part (for renderers that evaluate direct light
-  // themselves, per pixel).
-  void relight(std::span<float> out, bool include_direct = true) const;
+  // direct light only the interreflected part (for renderers that evaluate the luminaires'
+  // direct light themselves, per pixel); the portals' direct light is included unless
+  // include_portal_direct is false.
+  void relight(std::span<float> out, bool include_direct = true,
+               bool include_portal_direct = true) const;
+  // The current shell of portal p (for renderers showing the view out of a window).
+  const Shell& shell(std::size_t p) const { return portals_.at(p).shell; }
+  // Wall time of the last shell update of portal p, seconds.
+  double shell_seconds(std::size_t p) const { return portals_.at(p).seconds; }
 
   // The current photometry of luminaire j (as loaded for its state).
   const Distribution& distribution(std::size_t j) const { return luminaires_.at(j).distribution; }
@@ -81,7 +107,9 @@ class Relighter {
   void project_distribution(std::size_t j, const LuminaireState& s);
 
   TransferView transfer_;
+  const Scene* scene_;
   RelighterSettings settings_;
+  std::vector<PortalLighting> portals_;
   LightingState state_;
   std::vector<Luminaire> luminaires_;
   std::size_t incremental_curve_updates_ = 0;

@@ -34,6 +34,28 @@ constexpr std::uint32_t luminaire_section(char a, char b, std::size_t j) {
          static_cast<std::uint32_t>(j) << 16;
 }
 
+// Per-portal sections, the same way: "CR" + p: the direct cubemap records (bytes), "CO":
+// their offsets (u64, receivers + 1), "PI": the indirect SH transfer (blocked RGB).
+constexpr std::uint32_t portal_section(char a, char b, std::size_t p) {
+  return luminaire_section(a, b, p);
+}
+
+nlohmann::json encoding_stats_json(const CubemapEncodingStats& s) {
+  return {{"receivers", s.receivers}, {"empty", s.empty},
+          {"pulse", s.pulse},         {"haar", s.haar},
+          {"bytes", s.bytes},         {"pulse_bytes", s.pulse_bytes},
+          {"haar_bytes", s.haar_bytes}, {"all_pulse_bytes", s.all_pulse_bytes},
+          {"all_haar_bytes", s.all_haar_bytes}};
+}
+
+nlohmann::json vec3_json(Vec3 v) {
+  return nlohmann::json::array({v.x, v.y, v.z});
+}
+
+Vec3 vec3_from_json(const nlohmann::json& j) {
+  return {j.at(0).get<double>(), j.at(1).get<double>(), j.at(2).get<double>()};
+}
+
 std::string section_name(const char* what, std::size_t j) {
   return std::string(what) + " " + std::to_string(j);
 }
@@ -50,7 +72,9 @@ std::string scene_digest(const nlohmann::json& scene_document) {
 
 void write_transfer_file(const fs::path& file, const Precomputed& p, const Scene& source,
                          const nlohmann::json& scene_document, const fs::path& scene_file) {
-  if (p.luminaires.size() > 0xFFFF) throw std::invalid_argument("too many luminaires");
+  if (p.luminaires.size() > 0xFFFF || p.portals.size() > 0xFFFF) {
+    throw std::invalid_argument("too many luminaires or portals");
+  }
   nlohmann::json scene = scene_document;
   scene.erase("geometry");
   nlohmann::json phases = nlohmann::json::array();
@@ -66,8 +90,24 @@ void write_transfer_file(const fs::path& file, const Precomputed& p, const Scene
     photometry[j] = d.contents ? *d.contents : read_file(d.file, kMaxPhotometryFileBytes);
     photometry_files.push_back({{"luminaire", j}, {"file", d.file.string()}});
   }
+  nlohmann::json portals = nlohmann::json::array();
+  for (const PortalTransfer& t : p.portals) {
+    portals.push_back({{"name", t.geometry.name},
+                       {"face_size", t.direct.face_size},
+                       {"centre", vec3_json(t.geometry.centre)},
+                       {"outward", vec3_json(t.direct.outward)},
+                       {"area", t.geometry.area},
+                       {"diameter", t.geometry.diameter},
+                       {"triangles", t.geometry.triangles.size()},
+                       {"samples", t.direct.samples},
+                       {"rays", t.direct.rays},
+                       {"direct_encoding", encoding_stats_json(t.direct.stats)},
+                       {"indirect_bytes", t.indirect_blocks.size() * sizeof(float)}});
+  }
   const nlohmann::json metadata = {
       {"photometry", photometry_files},
+      {"portal_sh_order", p.portal_sh_order},
+      {"portals", portals},
       {"format", "relight transfer"},
       {"scene_file", fs::absolute(scene_file).lexically_normal().string()},
       {"scene_digest", scene_digest(scene_document)},
@@ -101,7 +141,7 @@ void write_transfer_file(const fs::path& file, const Precomputed& p, const Scene
   w.add_f32(kMeshNormals, "mesh normals", normals);
   w.add_f32(kVertexAlbedo, "vertex albedo", albedo);
   w.add_u32(kTriangles, "triangles", triangles);
-  w.add_u32(kPortalTriangles, "portal triangles", p.triangle_is_portal);
+  w.add_u32(kPortalTriangles, "portal triangles", p.triangle_portal);
   for (std::size_t j = 0; j < p.luminaires.size(); ++j) {
     const LuminaireTransfer& l = p.luminaires[j];
     w.add_f32(luminaire_section('D', 'X', j), section_name("direct dir x", j), l.direct.dir_x);
@@ -115,6 +155,15 @@ void write_transfer_file(const fs::path& file, const Precomputed& p, const Scene
     if (!l.direct_sh_blocks.empty()) {
       w.add_f32(luminaire_section('T', 'D', j), section_name("direct sh", j), l.direct_sh_blocks);
     }
+  }
+  for (std::size_t q = 0; q < p.portals.size(); ++q) {
+    const PortalTransfer& t = p.portals[q];
+    w.add_section(portal_section('C', 'R', q), section_name("portal direct cubemaps", q),
+                  std::as_bytes(std::span(t.direct.records)));
+    w.add_u64(portal_section('C', 'O', q), section_name("portal direct offsets", q),
+              t.direct.offsets);
+    w.add_f32(portal_section('P', 'I', q), section_name("portal indirect sh", q),
+              t.indirect_blocks);
   }
   try {
     w.write(file);
@@ -132,6 +181,12 @@ TransferView in_memory_view(const Precomputed& p) {
     v.luminaires.push_back({l.direct.dir_x, l.direct.dir_y, l.direct.dir_z, l.direct.factor,
                             l.indirect_blocks, l.direct_sh_blocks});
   }
+  v.portal_sh_order = p.portal_sh_order;
+  for (const PortalTransfer& t : p.portals) {
+    v.portals.push_back({t.geometry.name, t.direct.face_size, t.geometry.centre, t.direct.outward,
+                         t.geometry.diameter, t.direct.records, t.direct.offsets,
+                         t.indirect_blocks});
+  }
   return v;
 }
 
@@ -145,8 +200,49 @@ Bounds TransferFile::bounds() const {
   return b;
 }
 
+namespace {
+
+void read_portal_views(TransferFile& t, const std::string& where) {
+  const nlohmann::json& m = t.metadata;
+  const nlohmann::json portals = m.value("portals", nlohmann::json::array());
+  if (portals.size() != t.scene.portals.size()) {
+    fail_input(where, "metadata disagrees with its scene description (portals)");
+  }
+  t.view.portal_sh_order = m.value("portal_sh_order", 6);
+  if (t.view.portal_sh_order < 1 || t.view.portal_sh_order > 16) {
+    fail_input(where, "portal_sh_order out of range");
+  }
+  const std::size_t k = static_cast<std::size_t>(sh_count(t.view.portal_sh_order));
+  const std::size_t receivers = t.view.receivers;
+  for (std::size_t q = 0; q < portals.size(); ++q) {
+    const nlohmann::json& j = portals[q];
+    PortalTransferView v;
+    v.name = j.at("name").get<std::string>();
+    v.face_size = j.at("face_size").get<int>();
+    v.centre = vec3_from_json(j.at("centre"));
+    v.outward = vec3_from_json(j.at("outward"));
+    v.diameter = j.at("diameter").get<double>();
+    const std::span<const std::byte> records = t.file.section(portal_section('C', 'R', q));
+    v.records = {reinterpret_cast<const std::uint8_t*>(records.data()), records.size()};
+    v.offsets = t.file.view<std::uint64_t>(portal_section('C', 'O', q));
+    v.indirect = t.file.view<float>(portal_section('P', 'I', q));
+    const int n = v.face_size;
+    bool valid = v.name == t.scene.portals[q].name && n >= 1 && n <= 256 && (n & (n - 1)) == 0 &&
+                 v.offsets.size() == receivers + 1 && v.offsets.front() == 0 &&
+                 v.offsets.back() == v.records.size() &&
+                 v.indirect.size() == blocked_floats(receivers, k, 3);
+    for (std::size_t r = 0; valid && r < receivers; ++r) {
+      valid = v.offsets[r] < v.offsets[r + 1];
+    }
+    if (!valid) fail_input(where, "transfer of portal \"" + v.name + "\" has inconsistent sizes");
+    t.view.portals.push_back(v);
+  }
+}
+
+}  // namespace
+
 TransferFile open_transfer_file(const fs::path& file) {
-  TransferFile t{RltFile::open(file), {}, {}, {}, {}, {}, {}, 0, 0, {}};
+  TransferFile t(RltFile::open(file));
   const std::string where = file.string();
   try {
     t.metadata = nlohmann::json::parse(t.file.text(kMetadata));
@@ -189,7 +285,14 @@ TransferFile open_transfer_file(const fs::path& file) {
     for (std::uint32_t v : tri) {
       if (v >= t.vertex_count) fail_input(where, "a triangle refers to a missing vertex");
     }
-    if (portal[i / 3] == 0) t.opaque_triangles.push_back(static_cast<std::uint32_t>(i / 3));
+    const std::uint32_t glass = portal[i / 3];
+    if (glass == 0) {
+      t.opaque_triangles.push_back(static_cast<std::uint32_t>(i / 3));
+    } else if (glass != kGlassOutsidePortals) {
+      if (glass > t.scene.portals.size()) fail_input(where, "a triangle refers to a missing portal");
+      t.portal_triangles.push_back(static_cast<std::uint32_t>(i / 3));
+      t.portal_of_triangle.push_back(glass - 1);
+    }
     t.triangles.push_back(tri);
   }
 
@@ -214,6 +317,7 @@ TransferFile open_transfer_file(const fs::path& file) {
     }
     t.view.luminaires.push_back(v);
   }
+  read_portal_views(t, where);
   return t;
 }
 

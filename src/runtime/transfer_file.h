@@ -30,12 +30,15 @@ void write_transfer_file(const std::filesystem::path& file, const Precomputed& p
                          const std::filesystem::path& scene_file);
 
 struct TransferFile {
+  explicit TransferFile(RltFile f) : file(std::move(f)) {}
   RltFile file;
   nlohmann::json metadata;
   Scene scene;  // materials, luminaires, sensors, cameras (geometry lives in the mesh below)
   std::vector<Vec3> positions;
   std::vector<Triangle> triangles;
   std::vector<std::uint32_t> opaque_triangles;  // indices of non-portal triangles
+  std::vector<std::uint32_t> portal_triangles;  // indices of the portals' triangles
+  std::vector<std::uint32_t> portal_of_triangle;  // for each of those: its portal
   std::span<const float> vertex_albedo;         // 3 per vertex
   std::size_t vertex_count = 0, sensor_count = 0;
   TransferView view;

@@ -75,7 +75,8 @@ void parse_uniform(const JsonNode& node, EnvironmentSpec& spec) {
   }
 }
 
-void parse_map(const JsonNode& node, const fs::path& base_dir, EnvironmentSpec& spec) {
+void parse_map(const JsonNode& node, const fs::path& base_dir, bool require_file,
+               EnvironmentSpec& spec) {
   node.expect_keys({"type", "file", "rotate_deg", "scale"});
   spec.type = EnvironmentType::kMap;
   const JsonNode f = node.at("file");
@@ -86,7 +87,7 @@ void parse_map(const JsonNode& node, const fs::path& base_dir, EnvironmentSpec& 
     f.fail("expected an OpenEXR (.exr) or Radiance (.hdr) file, got \"" + relative.string() + "\"");
   }
   const fs::path path = relative.is_absolute() ? relative : base_dir / relative;
-  if (!fs::is_regular_file(path)) f.fail("file not found: " + path.string());
+  if (require_file && !fs::is_regular_file(path)) f.fail("file not found: " + path.string());
   spec.file = path;
   if (const auto r = node.find("rotate_deg")) spec.rotate_deg = r->number();
   if (const auto s = node.find("scale")) spec.scale = s->number_at_least(0);
@@ -220,7 +221,8 @@ std::optional<CivilDateTime> parse_civil_datetime(std::string_view text) {
   return t;
 }
 
-EnvironmentSpec parse_environment(const JsonNode& node, const fs::path& base_dir) {
+EnvironmentSpec parse_environment(const JsonNode& node, const fs::path& base_dir,
+                                  bool require_files) {
   if (!node.is_object()) node.fail("expected an environment object");
   EnvironmentSpec spec;
   spec.where = node.where();
@@ -228,7 +230,7 @@ EnvironmentSpec parse_environment(const JsonNode& node, const fs::path& base_dir
   if (type == "uniform") {
     parse_uniform(node, spec);
   } else if (type == "map") {
-    parse_map(node, base_dir, spec);
+    parse_map(node, base_dir, require_files, spec);
   } else if (type == "cie_sky") {
     parse_cie_sky(node, spec);
   } else {
@@ -236,6 +238,24 @@ EnvironmentSpec parse_environment(const JsonNode& node, const fs::path& base_dir
                          "\" (expected uniform, map or cie_sky)");
   }
   return spec;
+}
+
+}  // namespace relight
+
+namespace relight {
+
+Rgb parse_tint(const JsonNode& node) {
+  const Rgb tint = node.rgb_non_negative();
+  if (tint.r > 1 || tint.g > 1 || tint.b > 1) {
+    node.fail("a window's tint is a transmittance: each channel must lie in 0..1");
+  }
+  return tint;
+}
+
+double parse_frost_deg(const JsonNode& node) {
+  const double frost = node.number_at_least(0);
+  if (frost > 90) node.fail("frost_deg must lie in 0..90");
+  return frost;
 }
 
 }  // namespace relight

@@ -69,6 +69,7 @@ struct CivilDateTime {
   int year = 2000, month = 1, day = 1;
   int hour = 0, minute = 0;
   double second = 0;
+  bool operator==(const CivilDateTime&) const = default;
 };
 
 enum class SunPlacement {
@@ -85,6 +86,7 @@ struct SunSpec {
   CivilDateTime local_time;
   double azimuth_deg = 0;   // from north (−z) clockwise toward east (+x)
   double altitude_deg = 0;  // above the horizon
+  bool operator==(const SunSpec&) const = default;
 };
 
 struct EnvironmentSpec {
@@ -104,6 +106,7 @@ struct EnvironmentSpec {
   SunSpec sun;
   double sun_illuminance = 0;  // lx on a plane normal to the sun; 0 = no sun disc
   std::string where;           // "FILE:JSON-PATH" of the object, for messages
+  bool operator==(const EnvironmentSpec&) const = default;
 };
 
 // True for the CIE standard sky types whose luminance distribution depends on the sun's
@@ -117,6 +120,14 @@ std::optional<CivilDateTime> parse_civil_datetime(std::string_view text);
 
 // Parses an ENV object; relative map paths resolve against base_dir. Throws InputError
 // "FILE:/json/pointer: reason" for unknown keys, missing or out-of-range values.
-EnvironmentSpec parse_environment(const JsonNode& node, const std::filesystem::path& base_dir);
+// With require_files false a map's file need not exist yet (a .rlt keeps only the path; the
+// file is read when the environment is first used).
+EnvironmentSpec parse_environment(const JsonNode& node, const std::filesystem::path& base_dir,
+                                  bool require_files = true);
+
+// Window glass, in a scene's portal or a lighting state's: "tint" [r, g, b], a transmittance
+// per channel in 0..1; "frost_deg" in 0..90, the angular width of frosted glass's blur.
+Rgb parse_tint(const JsonNode& node);
+double parse_frost_deg(const JsonNode& node);
 
 }  // namespace relight

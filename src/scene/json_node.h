@@ -23,6 +23,8 @@ class JsonNode {
   JsonNode(const nlohmann::json& value, std::string file, std::string pointer);
 
   const nlohmann::json& value() const { return *value_; }
+  const std::string& file() const { return file_; }
+  const std::string& pointer() const { return pointer_; }
   // "FILE:/pointer" (the pointer of the root is "/").
   std::string where() const;
   [[noreturn]] void fail(const std::string& reason) const;

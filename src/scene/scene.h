@@ -57,6 +57,23 @@ struct Portal {
   std::string name;
   std::vector<std::uint32_t> materials;  // indices into Scene::materials, all "portal": true
   EnvironmentSpec environment;
+  Rgb tint{1, 1, 1};    // window glass colour (transmittance per channel)
+  double frost_deg = 0;  // frosted glass: angular width of the blur of the shell
+  // The shell-size check of the interior-scene paper §6: the nearest exterior object is
+  // `exterior_distance` m away (0: only sky, no check) and the directional error l/(2r) may
+  // be at most `shell_tolerance_deg`.
+  double exterior_distance = 0;
+  double shell_tolerance_deg = 5;
+};
+
+// Exterior geometry seen through the portals (issue 4, the paper's §6 dynamic environment):
+// drawn into every portal's shell from the portal centre, over the sky, never part of the
+// interior's transfer. The lighting state moves it (translate, turn about the vertical axis
+// through `pivot`, hide).
+struct ExteriorGeometry {
+  std::string name;  // "" when unnamed (then it cannot be moved)
+  TriangleSoup geometry;
+  Vec3 pivot;  // centre of its bounding box
 };
 
 struct Camera {
@@ -76,6 +93,14 @@ struct PrecomputeSettings {
   double tolerance = 1e-4;  // relative change that ends the bounce iteration
   int max_bounces = 100;
   std::string direct = "exact";  // "exact" | "sh" (the lighting-design paper's mode)
+  // Portals (issue 4, the interior-scene paper §4.1): the direct component is a cubemap of
+  // portal_face_size² cells a face per receiver, estimated from points sampled on the portal,
+  // about portal_samples_per_cell per cell the portal covers (at least 64, at most
+  // portal_max_samples per receiver); the indirect component is SH, l < portal_sh_order, RGB.
+  int portal_face_size = 32;
+  int portal_sh_order = 6;
+  int portal_samples_per_cell = 4;
+  int portal_max_samples = 4096;
 };
 
 struct Bounds {
@@ -90,6 +115,7 @@ struct Scene {
   std::vector<SensorSet> sensors;
   std::vector<Camera> cameras;
   std::vector<Portal> portals;
+  std::vector<ExteriorGeometry> exterior;
   PrecomputeSettings precompute;
 
   Bounds bounds() const;

@@ -112,34 +112,68 @@ struct Loader {
   }
 
   void load_geometry(const JsonNode& node) {
-    for (const JsonNode& g : node.elements()) {
+    for (const JsonNode& g : node.elements()) scene.geometry.append(geometry_entry(g));
+  }
+
+  // Exterior entries are geometry entries with an optional "name".
+  void load_exterior(const JsonNode& node) {
+    std::set<std::string> names;
+    for (const JsonNode& e : node.elements()) {
+      ExteriorGeometry object;
+      nlohmann::json entry = e.value();
+      if (const auto n = e.find("name")) {
+        object.name = n->string();
+        if (object.name.empty()) n->fail("name must not be empty");
+        if (!names.insert(object.name).second) {
+          n->fail("duplicate exterior object \"" + object.name + "\"");
+        }
+        entry.erase("name");
+      }
+      object.geometry = geometry_entry(JsonNode(entry, e.file(), e.pointer()));
+      for (std::uint32_t m : object.geometry.triangle_material) {
+        if (scene.materials[m].portal) e.fail("exterior geometry cannot be window glass");
+      }
+      if (object.geometry.triangles.empty()) e.fail("exterior object has no triangles");
+      Vec3 lo = object.geometry.positions.front(), hi = lo;
+      for (const Vec3& p : object.geometry.positions) {
+        if (!is_finite(p)) e.fail("exterior geometry has a non-finite coordinate");
+        lo = min(lo, p);
+        hi = max(hi, p);
+      }
+      object.pivot = (lo + hi) * 0.5;
+      scene.exterior.push_back(std::move(object));
+    }
+  }
+
+  TriangleSoup geometry_entry(const JsonNode& g) {
+    TriangleSoup soup;
+    {
       const std::string type = g.at("type").string();
       if (type == "quad") {
         g.expect_keys({"type", "corner", "u", "v", "material"});
         const Vec3 u = g.at("u").vec3(), v = g.at("v").vec3();
         if (length(cross(u, v)) < 1e-12) g.fail("quad edges u and v must span an area");
-        scene.geometry.append(
-            make_quad(g.at("corner").vec3(), u, v, material_named(g.at("material"))));
+        soup = make_quad(g.at("corner").vec3(), u, v, material_named(g.at("material")));
       } else if (type == "box") {
         g.expect_keys({"type", "min", "max", "normals", "material"});
         const Vec3 lo = g.at("min").vec3(), hi = g.at("max").vec3();
         if (!(hi.x > lo.x && hi.y > lo.y && hi.z > lo.z)) {
           g.at("max").fail("box max must exceed min in every axis");
         }
-        scene.geometry.append(make_box(lo, hi, facing(g), material_named(g.at("material"))));
+        soup = make_box(lo, hi, facing(g), material_named(g.at("material")));
       } else if (type == "sphere") {
         g.expect_keys({"type", "center", "radius", "normals", "subdivisions", "material"});
         const int subdivisions = g.find("subdivisions") ? g.at("subdivisions").integer_in(0, 7) : 5;
-        scene.geometry.append(make_sphere(g.at("center").vec3(), g.at("radius").positive(),
-                                          facing(g), subdivisions,
-                                          material_named(g.at("material"))));
+        soup = make_sphere(g.at("center").vec3(), g.at("radius").positive(), facing(g),
+                           subdivisions, material_named(g.at("material")));
       } else if (type == "mesh") {
-        scene.geometry.append(load_mesh(g));
+        soup = load_mesh(g);
       } else {
         g.at("type").fail("unknown geometry type \"" + type +
                           "\" (expected quad, box, sphere or mesh)");
       }
     }
+    return soup;
   }
 
   void load_luminaires(const JsonNode& node) {
@@ -239,7 +273,8 @@ struct Loader {
     std::set<std::string> names;
     std::map<std::uint32_t, std::string> owner;  // portal material -> portal
     for (const JsonNode& p : node.elements()) {
-      p.expect_keys({"name", "material", "materials", "environment"});
+      p.expect_keys({"name", "material", "materials", "environment", "tint", "frost_deg",
+                     "exterior_distance", "shell_tolerance_deg"});
       Portal portal;
       portal.name = p.at("name").string();
       if (portal.name.empty()) p.at("name").fail("name must not be empty");
@@ -269,14 +304,22 @@ struct Loader {
         }
         portal.materials.push_back(index);
       }
-      portal.environment = parse_environment(p.at("environment"), base_dir);
+      portal.environment = parse_environment(p.at("environment"), base_dir, embedded == nullptr);
+      if (const auto t = p.find("tint")) portal.tint = parse_tint(*t);
+      if (const auto f = p.find("frost_deg")) portal.frost_deg = parse_frost_deg(*f);
+      if (const auto d = p.find("exterior_distance")) portal.exterior_distance = d->number_at_least(0);
+      if (const auto t = p.find("shell_tolerance_deg")) {
+        portal.shell_tolerance_deg = t->positive();
+        if (portal.shell_tolerance_deg >= 90) t->fail("shell_tolerance_deg must be below 90");
+      }
       scene.portals.push_back(std::move(portal));
     }
   }
 
   void load_precompute(const JsonNode& p) {
     p.expect_keys({"max_edge", "sh_order", "crease_deg", "gather_rays", "sensor_gather_rays",
-                   "tolerance", "max_bounces", "direct"});
+                   "tolerance", "max_bounces", "direct", "portal_face_size", "portal_sh_order",
+                   "portal_samples_per_cell", "portal_max_samples"});
     PrecomputeSettings& s = scene.precompute;
     if (const auto n = p.find("max_edge")) s.max_edge = n->positive();
     if (const auto n = p.find("sh_order")) s.sh_order = n->integer_in(1, 32);
@@ -293,6 +336,19 @@ struct Loader {
     if (const auto n = p.find("direct")) {
       s.direct = n->string();
       if (s.direct != "exact" && s.direct != "sh") n->fail("expected \"exact\" or \"sh\"");
+    }
+    if (const auto n = p.find("portal_face_size")) {
+      s.portal_face_size = n->integer_in(1, 256);
+      if ((s.portal_face_size & (s.portal_face_size - 1)) != 0) {
+        n->fail("portal_face_size must be a power of two (the per-face Haar transform)");
+      }
+    }
+    if (const auto n = p.find("portal_sh_order")) s.portal_sh_order = n->integer_in(1, 16);
+    if (const auto n = p.find("portal_samples_per_cell")) {
+      s.portal_samples_per_cell = n->integer_in(1, 1024);
+    }
+    if (const auto n = p.find("portal_max_samples")) {
+      s.portal_max_samples = n->integer_in(64, 1 << 20);
     }
   }
 };
@@ -363,7 +419,7 @@ Scene scene_from_json(const nlohmann::json& document, const fs::path& file,
                       const EmbeddedFiles* embedded) {
   const JsonNode root(document, file.string(), "/");
   root.expect_keys({"description", "materials", "geometry", "luminaires", "sensors", "cameras",
-                    "portals", "precompute"});
+                    "portals", "exterior", "precompute"});
   Loader loader;
   loader.scene.file = file;
   loader.base_dir = file.has_parent_path() ? file.parent_path() : fs::path(".");
@@ -375,6 +431,7 @@ Scene scene_from_json(const nlohmann::json& document, const fs::path& file,
   if (const auto n = root.find("sensors")) loader.load_sensors(*n);
   if (const auto n = root.find("cameras")) loader.load_cameras(*n);
   if (const auto n = root.find("portals")) loader.load_portals(*n);
+  if (const auto n = root.find("exterior")) loader.load_exterior(*n);
   if (const auto n = root.find("precompute")) loader.load_precompute(*n);
   for (const Vec3& p : loader.scene.geometry.positions) {
     if (!is_finite(p)) root.at("geometry").fail("geometry has a non-finite coordinate");

@@ -28,30 +28,6 @@ namespace {
 // Receivers per unit of parallel work: rows of one chunk share their hit buffers.
 constexpr std::size_t kChunkRows = 64;
 
-// The first two dimensions of the Sobol sequence (van der Corput and Sobol's second
-// generator matrix), each scrambled by a random XOR (Kollig & Keller 2002, "Efficient
-// multidimensional sampling"): a (0,2)-sequence, so any power-of-two prefix stratifies
-// every elementary interval, and the scramble decorrelates neighbouring receivers.
-std::uint32_t van_der_corput(std::uint32_t i, std::uint32_t scramble) {
-  i = (i << 16) | (i >> 16);
-  i = ((i & 0x00ff00ffu) << 8) | ((i & 0xff00ff00u) >> 8);
-  i = ((i & 0x0f0f0f0fu) << 4) | ((i & 0xf0f0f0f0u) >> 4);
-  i = ((i & 0x33333333u) << 2) | ((i & 0xccccccccu) >> 2);
-  i = ((i & 0x55555555u) << 1) | ((i & 0xaaaaaaaau) >> 1);
-  return i ^ scramble;
-}
-
-std::uint32_t sobol2(std::uint32_t i, std::uint32_t scramble) {
-  for (std::uint32_t v = 1u << 31; i != 0; i >>= 1, v ^= v >> 1) {
-    if (i & 1u) scramble ^= v;
-  }
-  return scramble;
-}
-
-double unit_interval(std::uint32_t bits) {
-  return bits * (1.0 / 4294967296.0);
-}
-
 // One thread's row accumulator: a dense weight per mesh vertex, the row that last
 // touched each vertex, and the vertices the current row touched. Merging duplicates this
 // way costs one sort of the distinct vertices, not of every barycentric weight.

@@ -29,8 +29,17 @@ Precomputed precompute_transfer(const Scene& scene, const PrecomputeOptions& opt
   auto start = Clock::now();
   out.mesh = prepare_scene_mesh(scene);
   out.receivers = make_receivers(scene, out.mesh);
+  std::vector<std::uint32_t> material_portal(scene.materials.size(), 0);
+  for (std::size_t m = 0; m < scene.materials.size(); ++m) {
+    if (scene.materials[m].portal) material_portal[m] = kGlassOutsidePortals;
+  }
+  for (std::size_t p = 0; p < scene.portals.size(); ++p) {
+    for (std::uint32_t m : scene.portals[p].materials) {
+      material_portal[m] = static_cast<std::uint32_t>(p + 1);
+    }
+  }
   for (std::uint32_t m : out.mesh.triangle_material) {
-    out.triangle_is_portal.push_back(scene.materials.at(m).portal ? 1 : 0);
+    out.triangle_portal.push_back(material_portal.at(m));
   }
   const TracedScene traced = build_traced_scene(out.mesh, scene.materials);
   out.phases.push_back({"prepare", seconds_since(start), 0});
@@ -47,7 +56,10 @@ Precomputed precompute_transfer(const Scene& scene, const PrecomputeOptions& opt
   const int k = sh_count(out.sh_order);
   const auto n = static_cast<Eigen::Index>(out.receivers.size());
   const auto luminaire_count = static_cast<Eigen::Index>(scene.luminaires.size());
-  Eigen::MatrixXf direct_columns(n, k * luminaire_count);
+  out.portal_sh_order = scene.precompute.portal_sh_order;
+  const int kp = sh_count(out.portal_sh_order);
+  const auto portal_count = static_cast<Eigen::Index>(scene.portals.size());
+  Eigen::MatrixXf direct_columns(n, k * luminaire_count + kp * portal_count);
   for (Eigen::Index j = 0; j < luminaire_count; ++j) {
     const Luminaire& l = scene.luminaires[static_cast<std::size_t>(j)];
     const PlacedLuminaire placed = place_luminaire(l);
@@ -67,6 +79,35 @@ Precomputed precompute_transfer(const Scene& scene, const PrecomputeOptions& opt
   }
   out.phases.push_back({"direct visibility", seconds_since(start), direct_rays});
 
+  // Per portal: the direct cubemaps, and the SH-basis direct columns after the luminaires'.
+  start = Clock::now();
+  std::uint64_t portal_rays = 0;
+  if (portal_count > 0) {
+    const std::vector<std::uint8_t> glass = [&] {
+      std::vector<std::uint8_t> skip = portal_vertices(out.mesh, scene.materials);
+      skip.resize(out.receivers.size(), 0);  // sensors always receive
+      return skip;
+    }();
+    PortalDirectSettings settings;
+    settings.face_size = scene.precompute.portal_face_size;
+    settings.sh_order = out.portal_sh_order;
+    settings.samples_per_cell = scene.precompute.portal_samples_per_cell;
+    settings.max_samples = scene.precompute.portal_max_samples;
+    std::vector<PortalGeometry> geometry = portal_geometry(scene, out.mesh);
+    for (Eigen::Index p = 0; p < portal_count; ++p) {
+      PortalTransfer t;
+      t.geometry = std::move(geometry[static_cast<std::size_t>(p)]);
+      settings.seed = options.seed + 0x9e3779b97f4a7c15ULL * static_cast<std::uint64_t>(p + 1);
+      t.direct = compute_portal_direct(out.receivers, ray_points, glass, out.mesh, traced,
+                                       t.geometry, settings, options.progress);
+      portal_rays += t.direct.rays;
+      direct_columns.middleCols(k * luminaire_count + p * kp, kp) = t.direct.sh_columns;
+      t.direct.sh_columns.resize(0, 0);
+      out.portals.push_back(std::move(t));
+    }
+    out.phases.push_back({"portal direct", seconds_since(start), portal_rays});
+  }
+
   BounceSettings bounce;
   bounce.tolerance = scene.precompute.tolerance;
   bounce.max_bounces = scene.precompute.max_bounces;
@@ -81,6 +122,13 @@ Precomputed precompute_transfer(const Scene& scene, const PrecomputeOptions& opt
     const Eigen::MatrixXf g = result.indirect[1].middleCols(j * k, k);
     const Eigen::MatrixXf b = result.indirect[2].middleCols(j * k, k);
     out.luminaires[static_cast<std::size_t>(j)].indirect_blocks = pack_blocks({&r, &g, &b});
+  }
+  for (Eigen::Index p = 0; p < portal_count; ++p) {
+    const Eigen::Index first = k * luminaire_count + p * kp;
+    const Eigen::MatrixXf r = result.indirect[0].middleCols(first, kp);
+    const Eigen::MatrixXf g = result.indirect[1].middleCols(first, kp);
+    const Eigen::MatrixXf b = result.indirect[2].middleCols(first, kp);
+    out.portals[static_cast<std::size_t>(p)].indirect_blocks = pack_blocks({&r, &g, &b});
   }
   out.phases.push_back({"pack", seconds_since(start), 0});
   return out;

@@ -322,7 +322,7 @@ TEST(RelightAccuracy, FurnishedRoomImageMatchesReference) {
   }
   const RayTracer tracer(r.precomputed.mesh.positions, opaque, ids);
   const ShadedImages shaded = shade_vertices(
-      camera, {tracer, r.precomputed.mesh.positions, r.precomputed.mesh.triangles, albedo, e, {}},
+      camera, {tracer, r.precomputed.mesh.positions, r.precomputed.mesh.triangles, albedo, e, {}, {}},
       4);
 
   const std::vector<PlacedLuminaire> luminaires = place_luminaires(r.scene);
@@ -390,7 +390,7 @@ TEST(RelightAccuracy, FurnishedRoomImageMatchesReference) {
   const ShadedImages pixel = shade_vertices(
       camera,
       {tracer, r.precomputed.mesh.positions, r.precomputed.mesh.triangles, albedo, indirect,
-       [&](Vec3 q, Vec3 n) { return exact_direct_irradiance(tracer, lights, q, n); }},
+       [&](Vec3 q, Vec3 n) { return exact_direct_irradiance(tracer, lights, q, n); }, {}},
       4);
   const Stats exact = compare_images(pixel.luminance);
   report("pixel", exact);

@@ -1,0 +1,77 @@
+#include "runtime/portal_lighting.h"
+
+#include <chrono>
+#include <cmath>
+#include <map>
+
+#include "common/input_error.h"
+#include "math/sh.h"
+#include "runtime/relighter.h"
+
+namespace relight {
+
+Environment environment_without_images(const EnvironmentSpec& spec) {
+  if (spec.type == EnvironmentType::kMap) {
+    fail_input(spec.where, "map environments need their image loaded (not available here)");
+  }
+  return make_environment(spec);
+}
+
+std::vector<ExteriorObject> placed_exterior(const Scene& scene,
+                                            const std::vector<ExteriorPlacement>& placements) {
+  std::vector<ExteriorObject> objects;
+  for (std::size_t i = 0; i < scene.exterior.size(); ++i) {
+    const ExteriorGeometry& g = scene.exterior[i];
+    const ExteriorPlacement p = i < placements.size() ? placements[i] : ExteriorPlacement{};
+    if (!p.visible) continue;
+    const double a = p.rotate_deg * kPi / 180, c = std::cos(a), s = std::sin(a);
+    std::vector<Vec3> positions;
+    positions.reserve(g.geometry.positions.size());
+    for (const Vec3& x : g.geometry.positions) {
+      const Vec3 d = x - g.pivot;  // counter-clockwise about +y seen from above
+      positions.push_back(g.pivot + Vec3{c * d.x + s * d.z, d.y, -s * d.x + c * d.z} +
+                          p.translate);
+    }
+    std::map<std::uint32_t, std::size_t> by_material;
+    for (std::size_t t = 0; t < g.geometry.triangles.size(); ++t) {
+      const std::uint32_t m = g.geometry.triangle_material[t];
+      auto it = by_material.find(m);
+      if (it == by_material.end()) {
+        it = by_material.emplace(m, objects.size()).first;
+        objects.push_back({positions, {}, scene.materials.at(m).albedo});
+      }
+      objects[it->second].triangles.push_back(g.geometry.triangles[t]);
+    }
+  }
+  return objects;
+}
+
+void update_portal_lighting(PortalLighting& lighting, const PortalTransferView& portal,
+                            int sh_order, const PortalState& state, const Scene& scene,
+                            const EnvironmentLoader& load) {
+  const auto start = std::chrono::steady_clock::now();
+  const Environment environment = load(state.environment);
+  const std::vector<ExteriorObject> exterior = placed_exterior(scene, state.exterior);
+  ShellInputs inputs;
+  inputs.environment = &environment;
+  inputs.tint = state.tint;
+  inputs.frost_deg = state.frost_deg;
+  inputs.exterior = exterior;
+  render_shell(inputs, {portal.centre, portal.outward}, portal.face_size, sh_order,
+               lighting.shell, lighting.workspace);
+  prepare_shell_cubemap(portal.face_size, lighting.shell.cubemap, lighting.cubemap);
+  const auto k = static_cast<std::size_t>(sh_count(sh_order));
+  lighting.weights.resize(3 * k);
+  lighting.active = false;
+  for (std::size_t b = 0; b < k; ++b) {
+    const Rgb c = lighting.shell.sh[b];
+    lighting.weights[3 * b] = static_cast<float>(c.r);
+    lighting.weights[3 * b + 1] = static_cast<float>(c.g);
+    lighting.weights[3 * b + 2] = static_cast<float>(c.b);
+    lighting.active = lighting.active || c.r != 0 || c.g != 0 || c.b != 0;
+  }
+  lighting.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace relight
