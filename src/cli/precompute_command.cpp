@@ -38,6 +38,7 @@ void run_precompute(const nlohmann::json& document, const std::filesystem::path&
   }
   const Scene scene = scene_from_json(document, scene_file);
   const Precomputed p = precompute_transfer(scene, options);
+  for (const std::string& w : p.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
   write_transfer_file(output, p, scene, document, scene_file);
 
   std::uint64_t rays = 0;
@@ -56,6 +57,20 @@ void run_precompute(const nlohmann::json& document, const std::filesystem::path&
     }
   }
   std::printf("  bounces: %d (tolerance %g)\n", p.bounces, scene.precompute.tolerance);
+  for (const PortalTransfer& t : p.portals) {
+    const CubemapEncodingStats& s = t.direct.stats;
+    const double n = std::max<double>(1, static_cast<double>(s.receivers));
+    std::printf(
+        "  portal \"%s\": %.2f m², %.2f m across; direct %d² a face: %.1f B/receiver "
+        "(%zu empty, %zu pulse %.1f B avg, %zu Haar %.1f B avg; all pulse %.1f, all Haar %.1f "
+        "B/receiver), %.0f samples/receiver; indirect l < %d RGB: %.0f B/receiver\n",
+        t.geometry.name.c_str(), t.geometry.area, t.geometry.diameter, t.direct.face_size,
+        bytes_per_receiver(s), s.empty, s.pulse,
+        s.pulse ? double(s.pulse_bytes) / double(s.pulse) : 0.0, s.haar,
+        s.haar ? double(s.haar_bytes) / double(s.haar) : 0.0, double(s.all_pulse_bytes) / n,
+        double(s.all_haar_bytes) / n, double(t.direct.samples) / n, p.portal_sh_order,
+        double(t.indirect_blocks.size() * sizeof(float)) / n);
+  }
   std::printf("  total %.2f s, %.3g rays, %.2f Mrays/s\n", seconds, double(rays),
               rays * 1e-6 / std::max(seconds, 1e-9));
   std::printf("wrote %s (%.2f MB)\n", output.string().c_str(),

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "common/input_error.h"
 
@@ -70,6 +71,70 @@ std::vector<std::uint8_t> portal_vertices(const PreparedMesh& mesh,
 
 double shell_direction_error(double diameter, double distance) {
   return distance > 0 ? diameter / (2 * distance) : INFINITY;
+}
+
+namespace {
+
+// Closest point of triangle abc to p (Ericson, Real-Time Collision Detection, §5.1.5).
+Vec3 closest_point_on_triangle(Vec3 p, Vec3 a, Vec3 b, Vec3 c) {
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = dot(ab, ap), d2 = dot(ac, ap);
+  if (d1 <= 0 && d2 <= 0) return a;
+  const Vec3 bp = p - b;
+  const double d3 = dot(ab, bp), d4 = dot(ac, bp);
+  if (d3 >= 0 && d4 <= d3) return b;
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + ab * (d1 / (d1 - d3));
+  const Vec3 cp = p - c;
+  const double d5 = dot(ab, cp), d6 = dot(ac, cp);
+  if (d6 >= 0 && d5 <= d6) return c;
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + ac * (d2 / (d2 - d6));
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
+    return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
+  }
+  const double denominator = 1 / (va + vb + vc);
+  return a + ab * (vb * denominator) + ac * (vc * denominator);
+}
+
+}  // namespace
+
+double nearest_exterior_distance(Vec3 point, const std::vector<ExteriorGeometry>& exterior) {
+  double nearest = INFINITY;
+  for (const ExteriorGeometry& object : exterior) {
+    const TriangleSoup& g = object.geometry;
+    for (const Triangle& t : g.triangles) {
+      const Vec3 q =
+          closest_point_on_triangle(point, g.positions[t[0]], g.positions[t[1]], g.positions[t[2]]);
+      nearest = std::min(nearest, length(q - point));
+    }
+  }
+  return nearest;
+}
+
+std::vector<std::string> shell_size_warnings(const Scene& scene,
+                                             const std::vector<PortalGeometry>& portals) {
+  std::vector<std::string> warnings;
+  for (std::size_t p = 0; p < portals.size() && p < scene.portals.size(); ++p) {
+    const Portal& portal = scene.portals[p];
+    const PortalGeometry& g = portals[p];
+    const bool given = portal.exterior_distance > 0;
+    const double r = given ? portal.exterior_distance : nearest_exterior_distance(g.centre, scene.exterior);
+    if (!std::isfinite(r)) continue;
+    const double error_deg = shell_direction_error(g.diameter, r) * 180 / kPi;
+    if (error_deg <= portal.shell_tolerance_deg) continue;
+    char text[512];
+    std::snprintf(text, sizeof text,
+                  "portal \"%s\" is %.2f m across and the exterior is %.2f m away (%s): the "
+                  "shell's direction error l/(2r) = %.1f deg exceeds shell_tolerance_deg %.1f; "
+                  "split the window into portals of at most %.2f m (interior-scene paper, section 6)",
+                  g.name.c_str(), g.diameter, r, given ? "exterior_distance" : "nearest exterior geometry",
+                  error_deg, portal.shell_tolerance_deg,
+                  2 * r * portal.shell_tolerance_deg * kPi / 180);
+    warnings.emplace_back(text);
+  }
+  return warnings;
 }
 
 }  // namespace relight

@@ -38,4 +38,14 @@ std::vector<std::uint8_t> portal_vertices(const PreparedMesh& mesh,
 // gives it (radians). The largest portal size for a tolerance θ_M is 2·r·θ_M.
 double shell_direction_error(double diameter, double distance);
 
+// Distance from `point` to the nearest triangle of the scene's exterior geometry (infinity
+// when there is none).
+double nearest_exterior_distance(Vec3 point, const std::vector<ExteriorGeometry>& exterior);
+
+// The §6 check of every portal: one message per portal whose shell assumption breaks for
+// the nearest exterior object — the portal's "exterior_distance" when given, else the
+// nearest exterior geometry of the scene; portals that see only sky are never flagged.
+std::vector<std::string> shell_size_warnings(const Scene& scene,
+                                             const std::vector<PortalGeometry>& portals);
+
 }  // namespace relight

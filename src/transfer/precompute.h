@@ -61,6 +61,7 @@ struct Precomputed {
   int portal_sh_order = 6;
   std::vector<PortalTransfer> portals;  // in scene order
   std::vector<PhaseTiming> phases;
+  std::vector<std::string> warnings;  // e.g. portals too large for their shells (§6)
 };
 
 Precomputed precompute_transfer(const Scene& scene, const PrecomputeOptions& options);
