@@ -55,8 +55,8 @@ ShadedImages RelitScene::render(const Camera& camera, int width, int height, boo
     return shell.cubemap[cubemap_texel_index(shell.face_size, cubemap_texel(shell.face_size, dir))];
   };
   if (!pixel_direct) {
-    return shade_vertices(pinhole, {*tracer, t.positions, t.triangles, t.vertex_albedo,
-                                    irradiance, {}, background});
+    return shade_vertices(
+        pinhole, {*tracer, t.positions, t.triangles, t.vertex_albedo, irradiance, {}, background});
   }
   std::vector<float> indirect(irradiance.size());
   relighter->relight(indirect, false);

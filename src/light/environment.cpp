@@ -2,6 +2,9 @@
 // disc) and cubemap rasterisation; see environment.h.
 #include "light/environment.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -111,28 +114,71 @@ double integrate_rect(int face, double u0, double u1, double v0, double v1, int 
   return sum;
 }
 
+// The sub-cell solid angles of the uniform grid of m×m sub-cells on a face (the same on every
+// face), from the (m+1)² corner values of face_area: one atan2 per corner instead of four per
+// sub-cell, the bulk of a sky shell's cost when rebuilt per frame.
+std::vector<double> subcell_solid_angles(int m) {
+  std::vector<double> corner(static_cast<std::size_t>(m + 1) * (m + 1));
+  for (int b = 0; b <= m; ++b) {
+    for (int a = 0; a <= m; ++a) {
+      corner[static_cast<std::size_t>(b) * (m + 1) + a] =
+          face_area(2.0 * a / m - 1.0, 2.0 * b / m - 1.0);
+    }
+  }
+  std::vector<double> omega(static_cast<std::size_t>(m) * m);
+  const auto at = [&](int a, int b) { return corner[static_cast<std::size_t>(b) * (m + 1) + a]; };
+  for (int b = 0; b < m; ++b) {
+    for (int a = 0; a < m; ++a) {
+      omega[static_cast<std::size_t>(b) * m + a] =
+          at(a + 1, b + 1) - at(a, b + 1) - at(a + 1, b) + at(a, b);
+    }
+  }
+  return omega;
+}
+
 std::vector<Rgb> sky_cubemap(const SkyModel& sky, int n) {
   const int sub = std::max(4, (64 + n - 1) / n);
   const std::vector<double> omega = cubemap_solid_angles(n);
   std::vector<Rgb> out(cubemap_texel_count(n));
   auto f = [&](Vec3 d) { return sky_diffuse_luminance(sky, d); };
-  for (int face = 0; face < 6; ++face) {
-    const bool side = face != kPosY && face != kNegY;  // y = −v on the four side faces
-    for (int j = 0; j < n; ++j) {
+  const int m = n * sub;
+  const std::vector<double> sub_omega = subcell_solid_angles(m);
+  // Σ f·Ω over the sub×sub sub-cells of texel (i, j) of `face`, with the tabulated angles.
+  const auto integrate_texel = [&](int face, int i, int j) {
+    double sum = 0;
+    for (int b = j * sub; b < (j + 1) * sub; ++b) {
+      for (int a = i * sub; a < (i + 1) * sub; ++a) {
+        const Vec3 dir = cubemap_direction({face, (a + 0.5) / m, (b + 0.5) / m});
+        sum += f(dir) * sub_omega[static_cast<std::size_t>(b) * m + a];
+      }
+    }
+    return sum;
+  };
+  // Rows are independent (the run time rebuilds a shell per sky change: use every core);
+  // texels wholly below the horizon see the uniform ground and need no quadrature.
+  tbb::parallel_for(tbb::blocked_range<int>(0, 6 * n), [&](const tbb::blocked_range<int>& rows) {
+    for (int row = rows.begin(); row != rows.end(); ++row) {
+      const int face = row / n, j = row % n;
+      const bool side = face != kPosY && face != kNegY;  // y = −v on the four side faces
       const double v0 = 2.0 * j / n - 1.0, v1 = 2.0 * (j + 1) / n - 1.0;
+      const bool below = face == kNegY || (side && v0 >= 0);
       for (int i = 0; i < n; ++i) {
         const double u0 = 2.0 * i / n - 1.0, u1 = 2.0 * (i + 1) / n - 1.0;
+        if (below) {
+          out[cubemap_texel_index(n, {face, i, j})] = grey(sky.ground_luminance);
+          continue;
+        }
         double sum;
         if (side && v0 < 0 && v1 > 0) {  // the horizon crosses the texel: split it there
           sum = integrate_rect(face, u0, u1, v0, 0.0, sub, f) +
                 integrate_rect(face, u0, u1, 0.0, v1, sub, f);
         } else {
-          sum = integrate_rect(face, u0, u1, v0, v1, sub, f);
+          sum = integrate_texel(face, i, j);
         }
         out[cubemap_texel_index(n, {face, i, j})] = grey(sum / omega[j * n + i]);
       }
     }
-  }
+  });
   if (sky.sun) {
     const CubemapTexel t = cubemap_texel(n, sky.sun->direction);
     out[cubemap_texel_index(n, t)] += grey(sky.sun->integrated_luminance() / omega[t.j * n + t.i]);

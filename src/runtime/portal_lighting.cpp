@@ -29,8 +29,7 @@ std::vector<ExteriorObject> placed_exterior(const Scene& scene,
     positions.reserve(g.geometry.positions.size());
     for (const Vec3& x : g.geometry.positions) {
       const Vec3 d = x - g.pivot;  // counter-clockwise about +y seen from above
-      positions.push_back(g.pivot + Vec3{c * d.x + s * d.z, d.y, -s * d.x + c * d.z} +
-                          p.translate);
+      positions.push_back(g.pivot + Vec3{c * d.x + s * d.z, d.y, -s * d.x + c * d.z} + p.translate);
     }
     std::map<std::uint32_t, std::size_t> by_material;
     for (std::size_t t = 0; t < g.geometry.triangles.size(); ++t) {
@@ -57,8 +56,8 @@ void update_portal_lighting(PortalLighting& lighting, const PortalTransferView& 
   inputs.tint = state.tint;
   inputs.frost_deg = state.frost_deg;
   inputs.exterior = exterior;
-  render_shell(inputs, {portal.centre, portal.outward}, portal.face_size, sh_order,
-               lighting.shell, lighting.workspace);
+  render_shell(inputs, {portal.centre, portal.outward}, portal.face_size, sh_order, lighting.shell,
+               lighting.workspace);
   prepare_shell_cubemap(portal.face_size, lighting.shell.cubemap, lighting.cubemap);
   const auto k = static_cast<std::size_t>(sh_count(sh_order));
   lighting.weights.resize(3 * k);

@@ -41,10 +41,14 @@ constexpr std::uint32_t portal_section(char a, char b, std::size_t p) {
 }
 
 nlohmann::json encoding_stats_json(const CubemapEncodingStats& s) {
-  return {{"receivers", s.receivers}, {"empty", s.empty},
-          {"pulse", s.pulse},         {"haar", s.haar},
-          {"bytes", s.bytes},         {"pulse_bytes", s.pulse_bytes},
-          {"haar_bytes", s.haar_bytes}, {"all_pulse_bytes", s.all_pulse_bytes},
+  return {{"receivers", s.receivers},
+          {"empty", s.empty},
+          {"pulse", s.pulse},
+          {"haar", s.haar},
+          {"bytes", s.bytes},
+          {"pulse_bytes", s.pulse_bytes},
+          {"haar_bytes", s.haar_bytes},
+          {"all_pulse_bytes", s.all_pulse_bytes},
           {"all_haar_bytes", s.all_haar_bytes}};
 }
 
@@ -289,7 +293,8 @@ TransferFile open_transfer_file(const fs::path& file) {
     if (glass == 0) {
       t.opaque_triangles.push_back(static_cast<std::uint32_t>(i / 3));
     } else if (glass != kGlassOutsidePortals) {
-      if (glass > t.scene.portals.size()) fail_input(where, "a triangle refers to a missing portal");
+      if (glass > t.scene.portals.size())
+        fail_input(where, "a triangle refers to a missing portal");
       t.portal_triangles.push_back(static_cast<std::uint32_t>(i / 3));
       t.portal_of_triangle.push_back(glass - 1);
     }

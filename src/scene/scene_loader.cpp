@@ -307,7 +307,8 @@ struct Loader {
       portal.environment = parse_environment(p.at("environment"), base_dir, embedded == nullptr);
       if (const auto t = p.find("tint")) portal.tint = parse_tint(*t);
       if (const auto f = p.find("frost_deg")) portal.frost_deg = parse_frost_deg(*f);
-      if (const auto d = p.find("exterior_distance")) portal.exterior_distance = d->number_at_least(0);
+      if (const auto d = p.find("exterior_distance"))
+        portal.exterior_distance = d->number_at_least(0);
       if (const auto t = p.find("shell_tolerance_deg")) {
         portal.shell_tolerance_deg = t->positive();
         if (portal.shell_tolerance_deg >= 90) t->fail("shell_tolerance_deg must be below 90");

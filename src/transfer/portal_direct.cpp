@@ -29,8 +29,11 @@ double triangle_solid_angle(Vec3 a, Vec3 b, Vec3 c) {
 
 struct Scratch {
   Scratch(int n, std::size_t triangles, int bases)
-      : cells(cubemap_texel_count(n), 0.0), omega(triangles), cdf(triangles),
-        sh(static_cast<std::size_t>(bases)), basis(static_cast<std::size_t>(bases)) {}
+      : cells(cubemap_texel_count(n), 0.0),
+        omega(triangles),
+        cdf(triangles),
+        sh(static_cast<std::size_t>(bases)),
+        basis(static_cast<std::size_t>(bases)) {}
   std::vector<double> cells;
   std::vector<std::uint32_t> touched;
   std::vector<double> omega, cdf, sh, basis;
@@ -165,8 +168,8 @@ PortalDirect compute_portal_direct(const Receivers& receivers, const std::vector
           out.bytes.push_back(static_cast<std::uint8_t>(CubemapCodeKind::kEmpty));
           out.encoded.push_back({CubemapCodeKind::kEmpty, 1, 1, 1, 0, 0});
         } else {
-          out.encoded.push_back(encode_receiver_cubemap(n, scratch.cells, {}, out.bytes,
-                                                        scratch.encode));
+          out.encoded.push_back(
+              encode_receiver_cubemap(n, scratch.cells, {}, out.bytes, scratch.encode));
           for (int b = 0; b < bases; ++b) {
             result.sh_columns(static_cast<Eigen::Index>(r), b) =
                 static_cast<float>(scratch.sh[static_cast<std::size_t>(b)]);

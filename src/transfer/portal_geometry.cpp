@@ -28,7 +28,8 @@ std::vector<PortalGeometry> portal_geometry(const Scene& scene, const PreparedMe
     g.areas.push_back(area);
     g.area += area;
     g.centre = g.centre + (a + b + c) * (area / 3.0);
-    weighted_normal[static_cast<std::size_t>(p)] = weighted_normal[static_cast<std::size_t>(p)] + face * 0.5;
+    weighted_normal[static_cast<std::size_t>(p)] =
+        weighted_normal[static_cast<std::size_t>(p)] + face * 0.5;
   }
   for (std::size_t p = 0; p < portals.size(); ++p) {
     PortalGeometry& g = portals[p];
@@ -49,8 +50,8 @@ std::vector<PortalGeometry> portal_geometry(const Scene& scene, const PreparedMe
     vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
     for (std::size_t i = 0; i < vertices.size(); ++i) {
       for (std::size_t j = i + 1; j < vertices.size(); ++j) {
-        g.diameter = std::max(
-            g.diameter, length(mesh.positions[vertices[i]] - mesh.positions[vertices[j]]));
+        g.diameter =
+            std::max(g.diameter, length(mesh.positions[vertices[i]] - mesh.positions[vertices[j]]));
       }
     }
   }
@@ -120,18 +121,19 @@ std::vector<std::string> shell_size_warnings(const Scene& scene,
     const Portal& portal = scene.portals[p];
     const PortalGeometry& g = portals[p];
     const bool given = portal.exterior_distance > 0;
-    const double r = given ? portal.exterior_distance : nearest_exterior_distance(g.centre, scene.exterior);
+    const double r =
+        given ? portal.exterior_distance : nearest_exterior_distance(g.centre, scene.exterior);
     if (!std::isfinite(r)) continue;
     const double error_deg = shell_direction_error(g.diameter, r) * 180 / kPi;
     if (error_deg <= portal.shell_tolerance_deg) continue;
     char text[512];
-    std::snprintf(text, sizeof text,
-                  "portal \"%s\" is %.2f m across and the exterior is %.2f m away (%s): the "
-                  "shell's direction error l/(2r) = %.1f deg exceeds shell_tolerance_deg %.1f; "
-                  "split the window into portals of at most %.2f m (interior-scene paper, section 6)",
-                  g.name.c_str(), g.diameter, r, given ? "exterior_distance" : "nearest exterior geometry",
-                  error_deg, portal.shell_tolerance_deg,
-                  2 * r * portal.shell_tolerance_deg * kPi / 180);
+    std::snprintf(
+        text, sizeof text,
+        "portal \"%s\" is %.2f m across and the exterior is %.2f m away (%s): the "
+        "shell's direction error l/(2r) = %.1f deg exceeds shell_tolerance_deg %.1f; "
+        "split the window into portals of at most %.2f m (interior-scene paper, section 6)",
+        g.name.c_str(), g.diameter, r, given ? "exterior_distance" : "nearest exterior geometry",
+        error_deg, portal.shell_tolerance_deg, 2 * r * portal.shell_tolerance_deg * kPi / 180);
     warnings.emplace_back(text);
   }
   return warnings;
