@@ -1,7 +1,8 @@
 // `relight demo [-o DIR]`: the built-in furnished room on the precomputed path. Writes
 // the scene, precomputes it once (cached beside the images, reused while the scene is
-// unchanged), relights it under two lighting states written as state files, renders
-// and probes each, and says where the files are. `--reference` also renders the same
+// unchanged), relights it under two lighting states written as state files and under a
+// clear day through its south window at three times (images side by side), renders and
+// probes each, and says where the files are. `--reference` also renders the same
 // room with the independent path tracer for comparison.
 #include <filesystem>
 #include <iostream>
@@ -41,6 +42,10 @@ const char* kEvening = R"({
     "downlight right": { "dimmer": 0.3, "cct_kelvin": 2700 },
     "wall washer":     { "on": false },
     "pendant":         { "dimmer": 1.0, "cct_kelvin": 2200 }
+  },
+  "portals": {
+    "south window": { "environment": { "type": "cie_sky", "sky_type": "overcast",
+                                       "horizontal_illuminance": 30 } }
   }
 })";
 const char* kWork = R"({
@@ -51,6 +56,36 @@ const char* kWork = R"({
     "pendant":         { "on": false }
   }
 })";
+
+// A clear equinox day in Munich (48.14° N, 11.58° E, CET) through the south window, the
+// luminaires as the scene sets them: the sun moves from the south-east to the south-west.
+std::string clear_day_state(const char* local_time) {
+  return std::string(R"({
+  "portals": {
+    "south window": { "environment": {
+      "type": "cie_sky", "sky_type": 12, "horizontal_illuminance": 12000, "ground_albedo": 0.2,
+      "sun": { "latitude": 48.14, "longitude": 11.58, "utc_offset": 1,
+               "datetime": "2026-03-21T)") +
+         local_time + R"(" },
+      "sun_illuminance": 70000 } }
+  }
+})";
+}
+
+// Images of equal size, left to right, in one image (one exposure for all).
+Image side_by_side(const std::vector<Image>& images) {
+  Image strip =
+      make_image(images.front().width * static_cast<int>(images.size()), images.front().height);
+  for (std::size_t k = 0; k < images.size(); ++k) {
+    const Image& image = images[k];
+    for (int y = 0; y < image.height; ++y) {
+      for (int x = 0; x < image.width; ++x) {
+        strip.at(static_cast<int>(k) * image.width + x, y) = image.at(x, y);
+      }
+    }
+  }
+  return strip;
+}
 
 bool cached_precompute_matches(const fs::path& rlt, const nlohmann::json& document) {
   if (!fs::exists(rlt)) return false;
@@ -102,6 +137,22 @@ int run_demo(const DemoArgs& args) {
     print_sensor_statistics(std::cout, sensor_statistics(scene, e));
   }
 
+  // Daylight: one clear day at three times, side by side with one exposure.
+  std::vector<Image> day;
+  for (const char* time : {"10:00", "13:00", "16:00"}) {
+    const std::string name = std::string("day-") + time[0] + time[1] + time[3] + time[4];
+    const fs::path state_file = dir / (name + ".json");
+    write_text_atomically(state_file, clear_day_state(time));
+    relit.apply(load_lighting_state(scene, state_file));
+    const ShadedImages images = relit.render(camera, args.width, args.height, true);
+    write_image(dir / ("room-" + name + ".png"), images.luminance, {});
+    write_sensor_csv(dir / ("work-plane-" + name + ".csv"), scene, relit.sensor_irradiance());
+    std::cout << name << ": ";
+    print_sensor_statistics(std::cout, sensor_statistics(scene, relit.sensor_irradiance()));
+    day.push_back(images.luminance);
+  }
+  write_image(dir / "room-day-side-by-side.png", side_by_side(day), {});
+
   if (args.reference) {
     ReferenceRequest request;
     request.spp = args.spp;
@@ -121,6 +172,9 @@ int run_demo(const DemoArgs& args) {
             << "  room-evening.png         the room under each state, tone-mapped\n"
             << "  room-work.png\n"
             << "  room-*-lux.png           illuminance in lux, false colour with legend\n"
+            << "  day-1000.json, ...       a clear day through the south window at 10, 13, 16 h\n"
+            << "  room-day-*.png           the room at each time; room-day-side-by-side.png all\n"
+            << "                           three with one exposure\n"
             << "  work-plane-*.csv         work-plane illuminance per sensor\n";
   if (args.reference) {
     std::cout << "  reference.png/.exr       the same room by the reference path tracer\n";

@@ -19,6 +19,7 @@ json box(json lo, json hi, const char* material) {
 
 json demo_room_scene() {
   constexpr double W = 6.0, H = 2.8, D = 4.5;  // room width (x), height (y), depth (z)
+  constexpr double kLeft = 1.5, kRight = 4.5, kSill = 0.8, kHead = 2.3;  // the window
   json geometry = json::array({
       // Room shell, normals facing the interior.
       quad({0, 0, 0}, {0, 0, D}, {W, 0, 0}, "oak floor"),
@@ -26,7 +27,12 @@ json demo_room_scene() {
       quad({0, 0, 0}, {0, H, 0}, {0, 0, D}, "plaster"),
       quad({W, 0, 0}, {0, 0, D}, {0, H, 0}, "plaster"),
       quad({0, 0, 0}, {W, 0, 0}, {0, H, 0}, "blue accent"),
-      quad({0, 0, D}, {0, H, 0}, {W, 0, 0}, "plaster"),
+      // South wall (z = D) around a 3 × 1.5 m window, and the window glass (a portal).
+      quad({0, 0, D}, {0, kSill, 0}, {W, 0, 0}, "plaster"),
+      quad({0, kHead, D}, {0, H - kHead, 0}, {W, 0, 0}, "plaster"),
+      quad({0, kSill, D}, {0, kHead - kSill, 0}, {kLeft, 0, 0}, "plaster"),
+      quad({kRight, kSill, D}, {0, kHead - kSill, 0}, {W - kRight, 0, 0}, "plaster"),
+      quad({kLeft, kSill, D}, {0, kHead - kSill, 0}, {kRight - kLeft, 0, 0}, "window glass"),
       // Rug.
       quad({1.5, 0.005, 1.0}, {0, 0, 2.4}, {3.0, 0, 0}, "wool rug"),
       // Dining table: top and four legs.
@@ -60,7 +66,15 @@ json demo_room_scene() {
       {"red fabric", {{"albedo", {0.55, 0.14, 0.11}}}},
       {"graphite", {{"albedo", {0.22, 0.22, 0.24}}}},
       {"white paint", {{"albedo", {0.80, 0.80, 0.80}}}},
+      {"window glass", {{"albedo", {0, 0, 0}}, {"portal", true}}},
   };
+  // An overcast day by default; the demo's states set clear days with the sun.
+  json portals = json::array({
+      {{"name", "south window"},
+       {"material", "window glass"},
+       {"environment",
+        {{"type", "cie_sky"}, {"sky_type", "overcast"}, {"horizontal_illuminance", 10000}}}},
+  });
   json luminaires = json::array({
       {{"name", "downlight left"},
        {"position", {2.0, 2.75, 2.0}},
@@ -103,13 +117,15 @@ json demo_room_scene() {
        {"target", {2.6, 0.9, 0.0}},
        {"fov_deg", 68}},
       {{"name", "sofa"}, {"eye", {5.6, 1.5, 3.9}}, {"target", {0.5, 0.7, 2.0}}, {"fov_deg", 60}},
+      {{"name", "window"}, {"eye", {3.0, 1.5, 0.6}}, {"target", {3.0, 1.1, 4.5}}, {"fov_deg", 70}},
   });
-  return {{"description", "relight demo: a furnished living room"},
+  return {{"description", "relight demo: a furnished living room with a south window"},
           {"materials", materials},
           {"geometry", geometry},
           {"luminaires", luminaires},
           {"sensors", sensors},
           {"cameras", cameras},
+          {"portals", portals},
           {"precompute", {{"max_edge", 0.3}}}};
 }
 
