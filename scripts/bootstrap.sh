@@ -17,6 +17,8 @@ debian_packages=(
   libopenexr-dev libstb-dev
   nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  # Test assets: the CC0 HDR environment maps (OpenEXR, DWAB) of the daylight tests.
+  blender-data
 )
 if $bench; then
   debian_packages+=(gzip)
