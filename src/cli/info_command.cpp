@@ -10,6 +10,7 @@
 #include "light/luminaire_frame.h"
 #include "scene/scene_loader.h"
 #include "trace/traced_scene.h"
+#include "transfer/portal_geometry.h"
 
 namespace relight {
 
@@ -40,10 +41,22 @@ void add_info_command(CLI::App& app, Action& action) {
                 << "cameras: " << scene.cameras.size() << "\n"
                 << "portals: " << scene.portals.size() << "\n"
                 << "bounds: " << box << "\n";
-      for (const Portal& p : scene.portals) {
+      const std::vector<PortalGeometry> geometry = portal_geometry(scene, mesh);
+      for (std::size_t i = 0; i < scene.portals.size(); ++i) {
+        const Portal& p = scene.portals[i];
+        const PortalGeometry& g = geometry[i];
         std::cout << "  portal " << p.name << ":";
         for (std::uint32_t m : p.materials) std::cout << " " << scene.materials[m].name;
-        std::cout << "\n";
+        char line[256];
+        std::snprintf(line, sizeof line, " (%.3g m², %.3g m across, centre [%.4g, %.4g, %.4g])\n",
+                      g.area, g.diameter, g.centre.x, g.centre.y, g.centre.z);
+        std::cout << line;
+      }
+      if (!scene.exterior.empty()) {
+        std::cout << "exterior objects: " << scene.exterior.size() << "\n";
+      }
+      for (const std::string& w : shell_size_warnings(scene, geometry)) {
+        std::cerr << "warning: " << w << "\n";
       }
       for (std::size_t i = 0; i < luminaires.size(); ++i) {
         char line[256];

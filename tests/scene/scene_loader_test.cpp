@@ -226,3 +226,82 @@ TEST(SceneLoaderPortals, RulesAreEnforcedWithJsonPaths) {
 
 }  // namespace
 }  // namespace relight
+
+namespace relight {
+namespace {
+
+TEST(SceneLoaderPortals, GlassDefaultsAndShellCheckSettingsAreRead) {
+  const nlohmann::json portals = {{{"name", "window"},
+                                   {"material", "glass"},
+                                   {"environment", nlohmann::json::parse(kSky)},
+                                   {"tint", {0.5, 0.6, 0.7}},
+                                   {"frost_deg", 12},
+                                   {"exterior_distance", 3},
+                                   {"shell_tolerance_deg", 2}}};
+  const Scene scene = scene_from_json(scene_with_portals(portals), "p.json");
+  const Portal& p = scene.portals.at(0);
+  EXPECT_EQ(p.tint, (Rgb{0.5, 0.6, 0.7}));
+  EXPECT_DOUBLE_EQ(p.frost_deg, 12);
+  EXPECT_DOUBLE_EQ(p.exterior_distance, 3);
+  EXPECT_DOUBLE_EQ(p.shell_tolerance_deg, 2);
+  nlohmann::json bad = portals;
+  bad[0]["tint"] = {1.5, 1, 1};
+  EXPECT_NE(portal_error(bad).find("/portals/0/tint: a window's tint is a transmittance"),
+            std::string::npos);
+  bad = portals;
+  bad[0]["frost_deg"] = 95;
+  EXPECT_NE(portal_error(bad).find("/portals/0/frost_deg: frost_deg must lie in 0..90"),
+            std::string::npos);
+}
+
+TEST(SceneLoaderExterior, NamedEntriesAreGeometryWithAPivot) {
+  nlohmann::json scene = scene_with_portals(nlohmann::json::array());
+  scene["exterior"] = {{{"name", "tower"},
+                        {"type", "box"},
+                        {"min", {4, 0, 10}},
+                        {"max", {6, 20, 12}},
+                        {"material", "wall"}},
+                       {{"type", "quad"},
+                        {"corner", {0, 0, 20}},
+                        {"u", {1, 0, 0}},
+                        {"v", {0, 1, 0}},
+                        {"material", "wall"}}};
+  const Scene s = scene_from_json(scene, "p.json");
+  ASSERT_EQ(s.exterior.size(), 2u);
+  EXPECT_EQ(s.exterior[0].name, "tower");
+  EXPECT_EQ(s.exterior[0].geometry.triangles.size(), 12u);
+  EXPECT_EQ(s.exterior[0].pivot, (Vec3{5, 10, 11}));
+  EXPECT_EQ(s.exterior[1].name, "");
+  EXPECT_EQ(s.geometry.triangles.size(), 2u);  // the exterior is not interior geometry
+
+  scene["exterior"][1]["name"] = "tower";
+  EXPECT_NE(load_error(scene).find("/exterior/1/name: duplicate exterior object \"tower\""),
+            std::string::npos);
+  scene["exterior"][1]["name"] = "sign";
+  scene["exterior"][1]["material"] = "glass";
+  EXPECT_NE(load_error(scene).find("/exterior/1: exterior geometry cannot be window glass"),
+            std::string::npos);
+  scene["exterior"][1]["material"] = "wall";
+  scene["exterior"][1]["colour"] = "red";
+  EXPECT_NE(load_error(scene).find("/exterior/1/colour: unknown key"), std::string::npos);
+}
+
+TEST(SceneLoaderPortals, PortalPrecomputeSettingsAreChecked) {
+  nlohmann::json scene = scene_with_portals(nlohmann::json::array());
+  scene["precompute"] = {{"portal_face_size", 16},
+                         {"portal_sh_order", 4},
+                         {"portal_samples_per_cell", 8},
+                         {"portal_max_samples", 512}};
+  const Scene s = scene_from_json(scene, "p.json");
+  EXPECT_EQ(s.precompute.portal_face_size, 16);
+  EXPECT_EQ(s.precompute.portal_sh_order, 4);
+  EXPECT_EQ(s.precompute.portal_samples_per_cell, 8);
+  EXPECT_EQ(s.precompute.portal_max_samples, 512);
+  scene["precompute"]["portal_face_size"] = 24;
+  EXPECT_NE(load_error(scene).find("/precompute/portal_face_size: portal_face_size must be a "
+                                   "power of two"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace relight
