@@ -1,0 +1,543 @@
+// Issue 4 acceptance, run-time side: daylight through portals precomputed once and relit
+// from lighting states (scene_from_json → precompute_transfer → in_memory_view → Relighter),
+// against closed forms (black rooms: E = L·π·F, flux through the window) and against the
+// independent reference path tracer (grey rooms: uniform sky, an HDR map, the CIE overcast
+// sky, the sun patch at two dates). Every test prints its measured figures.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "light/environment.h"
+#include "light/luminaire_frame.h"
+#include "render/environment_map_io.h"
+#include "render/reference_tracer.h"
+#include "runtime/lighting_state.h"
+#include "runtime/relighter.h"
+#include "runtime/transfer_file.h"
+#include "scene/scene_loader.h"
+#include "support/daylight_room.h"
+#include "trace/traced_scene.h"
+#include "transfer/precompute.h"
+
+namespace relight {
+namespace {
+
+using nlohmann::json;
+using testing::parallel_rect_factor;
+using testing::perpendicular_rect_factor;
+using testing::Rect;
+using testing::WindowRoom;
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// One precompute of a scene and a Relighter over it (map environments read from files).
+// Neither copied nor moved: the Relighter points into the scene and the transfer.
+class Daylight {
+ public:
+  explicit Daylight(const json& document) : scene_(scene_from_json(document, "daylight.json")) {
+    const auto start = std::chrono::steady_clock::now();
+    PrecomputeOptions options;
+    options.progress = false;
+    precomputed_ = precompute_transfer(scene_, options);
+    relighter_ = std::make_unique<Relighter>(in_memory_view(precomputed_), scene_,
+                                             RelighterSettings{ShWindow::kSigma, load_environment});
+    std::printf("precompute: %zu receivers (%zu sensors), %.2f s\n", precomputed_.receivers.size(),
+                precomputed_.receivers.sensor_count, seconds_since(start));
+  }
+  Daylight(const Daylight&) = delete;
+  Daylight& operator=(const Daylight&) = delete;
+
+  const Scene& scene() const { return scene_; }
+
+  LightingState state(const json& document) const {
+    LightingState s = default_lighting_state(scene_);
+    apply_lighting_state(s, scene_, document, "state.json", ".");
+    return s;
+  }
+
+  // Sensor irradiance (RGB, scene order) under `document` applied to the scene's state.
+  std::vector<Rgb> sensors(const json& document = json::object()) const {
+    relighter_->set_state(state(document));
+    std::vector<float> e(3 * relighter_->receivers());
+    relighter_->relight(e);
+    std::vector<Rgb> out;
+    for (std::size_t s = 0; s < precomputed_.receivers.sensor_count; ++s) {
+      const std::size_t r = 3 * (precomputed_.receivers.vertex_count + s);
+      out.push_back({e[r], e[r + 1], e[r + 2]});
+    }
+    return out;
+  }
+
+ private:
+  Scene scene_;
+  Precomputed precomputed_;
+  std::unique_ptr<Relighter> relighter_;
+};
+
+// The reference tracer's sensors of `document`, each portal showing its own environment.
+std::vector<Rgb> reference(const json& document, int spp) {
+  const auto start = std::chrono::steady_clock::now();
+  const Scene scene = scene_from_json(document, "reference.json");
+  std::vector<Environment> environments;
+  for (const Portal& portal : scene.portals) {
+    environments.push_back(load_environment(portal.environment));
+  }
+  const std::vector<PlacedLuminaire> luminaires = place_luminaires(scene);
+  PreparationSettings preparation;
+  preparation.max_edge = 0;
+  const PreparedMesh mesh = prepare_mesh(scene.geometry, preparation);
+  const TracedScene traced = build_traced_scene(mesh, scene.materials);
+  ReferenceSettings settings;
+  settings.spp = spp;
+  settings.seed = 5;
+  settings.progress = false;
+  const std::vector<Rgb> e = reference_sensor_illuminance(
+      scene, make_reference_scene(scene, mesh, traced, luminaires, std::move(environments)),
+      settings);
+  std::printf("reference: %zu sensors × %d spp, %.2f s\n", e.size(), spp, seconds_since(start));
+  return e;
+}
+
+json sensor_points(const std::string& name, const std::vector<Vec3>& points) {
+  json p = json::array();
+  for (Vec3 v : points) p.push_back({v.x, v.y, v.z});
+  return {{"name", name}, {"points", p}, {"normal", {0, 1, 0}}};
+}
+
+json grid(const std::string& name, Vec3 corner, Vec3 u, Vec3 v, int nu, int nv, Vec3 normal) {
+  return {{"name", name},
+          {"grid",
+           {{"corner", {corner.x, corner.y, corner.z}},
+            {"u", {u.x, u.y, u.z}},
+            {"v", {v.x, v.y, v.z}},
+            {"nu", nu},
+            {"nv", nv}}},
+          {"normal", {normal.x, normal.y, normal.z}}};
+}
+
+// Points of a grid sensor set, as docs/scene-format.md numbers them (j·nu + i).
+std::vector<Vec3> grid_points(Vec3 corner, Vec3 u, Vec3 v, int nu, int nv) {
+  std::vector<Vec3> out;
+  for (int j = 0; j < nv; ++j) {
+    for (int i = 0; i < nu; ++i)
+      out.push_back(corner + u * ((i + 0.5) / nu) + v * ((j + 0.5) / nv));
+  }
+  return out;
+}
+
+json portal_state(const std::string& portal, const json& fields) {
+  return {{"portals", {{portal, fields}}}};
+}
+
+struct Comparison {
+  double mean = 0, worst = 0;
+};
+
+// Relative differences |a − b| / b of the sensors' photometric illuminance.
+Comparison compare(const std::vector<Rgb>& a, const std::vector<Rgb>& b, const char* what) {
+  EXPECT_EQ(a.size(), b.size());
+  Comparison c;
+  for (std::size_t i = 0; i < a.size() && i < b.size(); ++i) {
+    const double rel = std::abs(luminance(a[i]) - luminance(b[i])) / luminance(b[i]);
+    c.mean += rel / a.size();
+    c.worst = std::max(c.worst, rel);
+    if (rel > 0.04) {
+      std::printf("  %s sensor %zu: %.2f vs reference %.2f lx\n", what, i, luminance(a[i]),
+                  luminance(b[i]));
+    }
+  }
+  std::printf("%s: mean relative difference %.4f, worst %.4f\n", what, c.mean, c.worst);
+  ::testing::Test::RecordProperty(std::string(what) + "_mean", std::to_string(c.mean));
+  ::testing::Test::RecordProperty(std::string(what) + "_worst", std::to_string(c.worst));
+  return c;
+}
+
+// ---------------------------------------------------------------------------------------
+// 1. Black room, uniform sky: E = L·π·F through the relighter (both portals at once).
+
+constexpr Rect kSkylight{1.5, 2.5, 2, 3.5};  // in the 4 × 3 × 5 m room
+constexpr Rect kWindow{1, 3, 0.9, 2.1};
+
+double skylight_factor(Vec3 p) {
+  return parallel_rect_factor(kSkylight.u0 - p.x, kSkylight.u1 - p.x, kSkylight.v0 - p.z,
+                              kSkylight.v1 - p.z, 3 - p.y);
+}
+
+double window_factor(Vec3 p) {
+  return perpendicular_rect_factor(kWindow.u0 - p.x, kWindow.u1 - p.x, kWindow.v0 - p.y,
+                                   kWindow.v1 - p.y, 5 - p.z);
+}
+
+TEST(DaylightAccuracy, BlackRoomRelitFromUniformSkiesMatchesLPiF) {
+  WindowRoom room;
+  room.skylight = kSkylight;
+  room.south_window = kWindow;
+  const std::vector<Vec3> points = {{2, 0, 2.75}, {1.5, 0, 2},   {0.6, 0, 1},
+                                    {2, 0, 4},    {3.9, 0, 4.6}, {0.1, 0, 3}};
+  json scene = testing::window_room_json(room);
+  scene["sensors"] = json::array({sensor_points("floor", points)});
+  scene["precompute"] = {{"max_edge", 0.5}, {"gather_rays", 4}, {"sensor_gather_rays", 4}};
+  const Daylight d(scene);
+  // The scene's skies (1000 cd/m² each), then a state: skylight 2500 cd/m², window dark.
+  const std::vector<Rgb> both = d.sensors();
+  const json state = {
+      {"portals",
+       {{"skylight", {{"environment", {{"type", "uniform"}, {"luminance", 2500}}}}},
+        {"south window", {{"environment", {{"type", "uniform"}, {"luminance", 0}}}}}}}};
+  const std::vector<Rgb> skylight_only = d.sensors(state);
+  ASSERT_EQ(both.size(), points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const double e_both = 1000 * kPi * (skylight_factor(points[i]) + window_factor(points[i]));
+    const double e_sky = 2500 * kPi * skylight_factor(points[i]);
+    std::printf(
+        "sensor (%.1f, 0, %.2f): both portals %.3f vs L·π·F %.3f lx (%+.3f%%); skylight at "
+        "2500 cd/m² %.3f vs %.3f lx (%+.3f%%)\n",
+        points[i].x, points[i].z, luminance(both[i]), e_both,
+        100 * (luminance(both[i]) / e_both - 1), luminance(skylight_only[i]), e_sky,
+        100 * (luminance(skylight_only[i]) / e_sky - 1));
+    EXPECT_NEAR(luminance(both[i]), e_both, 0.02 * e_both) << "sensor " << i;
+    EXPECT_NEAR(luminance(skylight_only[i]), e_sky, 0.02 * e_sky) << "sensor " << i;
+  }
+}
+
+// ---------------------------------------------------------------------------------------
+// 2. Grey room (albedo 0.5) with both openings, against the reference.
+
+json grey_room(const json& environment) {
+  WindowRoom room;
+  room.skylight = kSkylight;
+  room.south_window = kWindow;
+  room.albedo = 0.5;
+  json scene = testing::window_room_json(room);
+  for (json& p : scene["portals"]) p["environment"] = environment;
+  scene["sensors"] =
+      json::array({grid("floor", {0, 0, 0}, {4, 0, 0}, {0, 0, 5}, 4, 5, {0, 1, 0})});  // 20 sensors
+  scene["precompute"] = {{"max_edge", 0.5}, {"gather_rays", 128}, {"sensor_gather_rays", 2048}};
+  return scene;
+}
+
+void grey_room_against_reference(const json& environment, const char* what) {
+  const json scene = grey_room(environment);
+  const Daylight d(scene);
+  const Comparison c = compare(d.sensors(), reference(scene, 8192), what);
+  EXPECT_LE(c.mean, 0.03) << what;
+  EXPECT_LE(c.worst, 0.08) << what;
+}
+
+TEST(DaylightAccuracy, GreyRoomUniformSkyMatchesReference) {
+  grey_room_against_reference({{"type", "uniform"}, {"luminance", 1000}}, "grey room uniform sky");
+}
+
+TEST(DaylightAccuracy, GreyRoomHdrMapMatchesReference) {
+  const std::filesystem::path map = "/usr/share/blender/datafiles/studiolights/world/forest.exr";
+  if (!std::filesystem::exists(map)) GTEST_SKIP() << map << " not found (Debian blender-data)";
+  grey_room_against_reference(
+      {{"type", "map"}, {"file", map.string()}, {"rotate_deg", 30}, {"scale", 1000}},
+      "grey room forest.exr");
+}
+
+// ---------------------------------------------------------------------------------------
+// 3. An office 6 × 3 × 6 m, albedo 0.5, south window x ∈ [2.5, 4.5], y ∈ [0.3, 2.1]: the
+// CIE overcast daylight factor on the work plane, and the sun patch on the floor.
+
+constexpr Rect kOfficeWindow{2.5, 4.5, 0.3, 2.1};
+const Vec3 kFloorCorner{0, 0, 0}, kFloorU{6, 0, 0}, kFloorV{0, 0, 6};
+constexpr int kFloorN = 24;  // 0.25 m spacing
+
+json office(bool work_plane, bool floor) {
+  WindowRoom room;
+  room.width = 6;
+  room.depth = 6;
+  room.south_window = kOfficeWindow;
+  room.albedo = 0.5;
+  json scene = testing::window_room_json(room);
+  scene["sensors"] = json::array();
+  if (work_plane) {
+    scene["sensors"].push_back(
+        grid("work plane", {0.5, 0.8, 0.5}, {5, 0, 0}, {0, 0, 5}, 5, 5, {0, 1, 0}));
+  }
+  if (floor) {
+    scene["sensors"].push_back(
+        grid("floor", kFloorCorner, kFloorU, kFloorV, kFloorN, kFloorN, {0, 1, 0}));
+  }
+  scene["precompute"] = {{"max_edge", 0.5}, {"gather_rays", 128}, {"sensor_gather_rays", 1024}};
+  return scene;
+}
+
+// Work plane (25 sensors) first, then the floor grid.
+const Daylight& office_transfer() {
+  static const Daylight d(office(true, true));
+  return d;
+}
+
+const json kOvercast = {
+    {"type", "cie_sky"}, {"sky_type", "overcast"}, {"horizontal_illuminance", 10000}};
+
+TEST(DaylightAccuracy, OvercastDaylightFactorOnTheWorkPlaneMatchesReference) {
+  const Daylight& d = office_transfer();
+  std::vector<Rgb> transfer = d.sensors(portal_state("south window", {{"environment", kOvercast}}));
+  transfer.resize(25);  // the work plane
+  json scene = office(true, false);
+  scene["portals"][0]["environment"] = kOvercast;
+  const std::vector<Rgb> ref = reference(scene, 4096);
+  double mean_df = 0, mean_df_ref = 0;
+  for (std::size_t i = 0; i < ref.size(); ++i) {
+    mean_df += 100 * luminance(transfer[i]) / 10000 / ref.size();
+    mean_df_ref += 100 * luminance(ref[i]) / 10000 / ref.size();
+  }
+  std::printf(
+      "daylight factor on the work plane: mean %.3f%% (reference %.3f%%), front row %.2f%%, "
+      "back row %.2f%%\n",
+      mean_df, mean_df_ref, 100 * luminance(transfer[22]) / 10000,
+      100 * luminance(transfer[2]) / 10000);
+  const Comparison c = compare(transfer, ref, "overcast daylight factor");
+  EXPECT_LE(c.mean, 0.03);
+  EXPECT_NEAR(mean_df, mean_df_ref, 0.03 * mean_df_ref);
+}
+
+struct SunCase {
+  const char* name;
+  const char* datetime;
+};
+
+json sunny_sky(const char* datetime, double sun_illuminance) {
+  return {
+      {"type", "cie_sky"},
+      {"sky_type", 12},
+      {"horizontal_illuminance", 10000},
+      {"sun", {{"latitude", 48.1}, {"longitude", 11.6}, {"utc_offset", 1}, {"datetime", datetime}}},
+      {"sun_illuminance", sun_illuminance}};
+}
+
+struct Patch {
+  Vec3 centroid;
+  double area = 0;  // m², sensors over half of the direct sun level
+  double peak = 0;  // lx
+};
+
+// The sun's part S = E(sky + sun) − E(sky) on the floor grid: its centroid weighted by S
+// over the sensors where S exceeds 30% of its maximum (the interreflected sunlight stays
+// below), and the area where S exceeds half of `direct` (E_sun · sin altitude).
+Patch sun_patch(const std::vector<Rgb>& with_sun, const std::vector<Rgb>& sky, std::size_t first,
+                double direct) {
+  const std::vector<Vec3> points = grid_points(kFloorCorner, kFloorU, kFloorV, kFloorN, kFloorN);
+  std::vector<double> s(points.size());
+  Patch patch;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    s[i] = luminance(with_sun[first + i]) - luminance(sky[first + i]);
+    patch.peak = std::max(patch.peak, s[i]);
+  }
+  double weight = 0;
+  const double cell = (6.0 / kFloorN) * (6.0 / kFloorN);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (s[i] > 0.3 * patch.peak) {
+      patch.centroid = patch.centroid + points[i] * s[i];
+      weight += s[i];
+    }
+    if (s[i] > 0.5 * direct) patch.area += cell;
+  }
+  patch.centroid = patch.centroid * (1 / weight);
+  return patch;
+}
+
+TEST(DaylightAccuracy, SunPatchLandsWhereTheReferenceAndTheGeometryPutIt) {
+  const Daylight& d = office_transfer();
+  const double e_sun = 80000, spacing = 6.0 / kFloorN;
+  for (const SunCase& c : {SunCase{"equinox 10:00", "2026-03-21T10:00"},
+                           SunCase{"midsummer 14:00", "2026-06-21T14:00"}}) {
+    const json with_sun = sunny_sky(c.datetime, e_sun), sky = sunny_sky(c.datetime, 0);
+    const LightingState state = d.state(portal_state("south window", {{"environment", with_sun}}));
+    const Vec3 s = sun_direction(state.portals.at(0).environment.sun);
+    ASSERT_GT(s.y, 0.2) << c.name;
+    ASSERT_GT(s.z, 0.2) << c.name << ": the sun should shine through the south window";
+    const double direct = e_sun * s.y;
+
+    // The geometric patch: the window projected along the sun onto the floor.
+    const Vec3 window_centre{0.5 * (kOfficeWindow.u0 + kOfficeWindow.u1),
+                             0.5 * (kOfficeWindow.v0 + kOfficeWindow.v1), 6};
+    const Vec3 geometric = window_centre - s * (window_centre.y / s.y);
+    const double geometric_area =
+        (kOfficeWindow.u1 - kOfficeWindow.u0) * (kOfficeWindow.v1 - kOfficeWindow.v0) * s.z / s.y;
+
+    const Patch transfer =
+        sun_patch(d.sensors(portal_state("south window", {{"environment", with_sun}})),
+                  d.sensors(portal_state("south window", {{"environment", sky}})), 25, direct);
+    json scene = office(false, true);
+    scene["portals"][0]["environment"] = with_sun;
+    const std::vector<Rgb> ref_sun = reference(scene, 256);
+    scene["portals"][0]["environment"] = sky;
+    const Patch ref = sun_patch(ref_sun, reference(scene, 256), 0, direct);
+
+    const double to_ref = length(transfer.centroid - ref.centroid);
+    const double to_geometry = length(transfer.centroid - geometric);
+    const double ref_to_geometry = length(ref.centroid - geometric);
+    std::printf(
+        "%s: sun azimuth %.1f°, altitude %.1f°; patch centroid transfer (%.3f, %.3f), reference "
+        "(%.3f, %.3f), geometric (%.3f, %.3f): transfer−reference %.3f m, transfer−geometry "
+        "%.3f m, reference−geometry %.3f m; area transfer %.2f, reference %.2f, geometric "
+        "%.2f m²; peak sun part transfer %.0f, reference %.0f, E_sun·sin(alt) %.0f lx\n",
+        c.name, degrees(std::atan2(s.x, -s.z)) + (s.x < 0 ? 360 : 0), degrees(std::asin(s.y)),
+        transfer.centroid.x, transfer.centroid.z, ref.centroid.x, ref.centroid.z, geometric.x,
+        geometric.z, to_ref, to_geometry, ref_to_geometry, transfer.area, ref.area, geometric_area,
+        transfer.peak, ref.peak, direct);
+    RecordProperty(std::string(c.name) + "_centroid_to_reference_m", std::to_string(to_ref));
+    RecordProperty(std::string(c.name) + "_centroid_to_geometry_m", std::to_string(to_geometry));
+    EXPECT_LE(to_ref, spacing) << c.name;
+    EXPECT_LE(to_geometry, spacing) << c.name;
+    EXPECT_LE(ref_to_geometry, spacing) << c.name;
+    EXPECT_NEAR(transfer.area, geometric_area, 0.25 * geometric_area) << c.name;
+  }
+}
+
+// ---------------------------------------------------------------------------------------
+// 4. Tinted and frosted glass: flux through the south window of the black 4 × 3 × 5 m room,
+// summed over sensor grids of 0.2 m cells on the floor, ceiling and the three other walls
+// (the window's own wall receives nothing from it). A uniform sky (CIE type 5) of 1000 cd/m²
+// over a black ground and a sun of 50 000 lx due south at altitude atan(3/4): the flux is
+// A·(π·L/2 + E_sun·cos(altitude)), and the sun patch is x ∈ [1, 3], z ∈ [2.2, 3.8], whose
+// edges fall halfway between grid points.
+
+struct FluxRoom {
+  std::vector<Rgb> sensors;
+  Rgb flux;         // lm per channel
+  double peak = 0;  // floor sensor maximum, lx
+};
+
+constexpr double kFluxCell = 0.2 * 0.2;
+constexpr std::size_t kFloorSensors = 20 * 25;
+
+json flux_room() {
+  WindowRoom room;
+  room.south_window = kWindow;
+  json scene = testing::window_room_json(room);
+  scene["portals"][0]["environment"] = {
+      {"type", "cie_sky"},
+      {"sky_type", 5},
+      {"zenith_luminance", 1000},
+      {"ground_albedo", 0},
+      {"sun", {{"azimuth_deg", 180}, {"altitude_deg", degrees(std::atan2(3.0, 4.0))}}},
+      {"sun_illuminance", 50000}};
+  scene["sensors"] = json::array({
+      grid("floor", {0, 0, 0}, {4, 0, 0}, {0, 0, 5}, 20, 25, {0, 1, 0}),
+      grid("ceiling", {0, 3, 0}, {4, 0, 0}, {0, 0, 5}, 20, 25, {0, -1, 0}),
+      grid("north", {0, 0, 0}, {4, 0, 0}, {0, 3, 0}, 20, 15, {0, 0, 1}),
+      grid("west", {0, 0, 0}, {0, 0, 5}, {0, 3, 0}, 25, 15, {1, 0, 0}),
+      grid("east", {4, 0, 0}, {0, 0, 5}, {0, 3, 0}, 25, 15, {-1, 0, 0}),
+  });
+  scene["precompute"] = {{"max_edge", 0.5}, {"gather_rays", 1}, {"sensor_gather_rays", 1}};
+  return scene;
+}
+
+const Daylight& flux_transfer() {
+  static const Daylight d(flux_room());
+  return d;
+}
+
+FluxRoom flux(const json& state) {
+  FluxRoom f;
+  f.sensors = flux_transfer().sensors(state);
+  for (std::size_t i = 0; i < f.sensors.size(); ++i) {
+    f.flux = f.flux + f.sensors[i] * kFluxCell;
+    if (i < kFloorSensors) f.peak = std::max(f.peak, luminance(f.sensors[i]));
+  }
+  return f;
+}
+
+TEST(DaylightAccuracy, ClearWindowFluxMatchesClosedForm) {
+  const FluxRoom clear = flux(json::object());
+  const double a = (kWindow.u1 - kWindow.u0) * (kWindow.v1 - kWindow.v0);
+  const double expected = a * (kPi * 1000 / 2 + 50000 * 0.8);
+  std::printf(
+      "clear window: flux %.1f lm vs A·(πL/2 + E_sun·cos alt) = %.1f lm (%+.3f%%), floor "
+      "peak %.0f lx (E_sun·sin alt + sky = %.0f)\n",
+      luminance(clear.flux), expected, 100 * (luminance(clear.flux) / expected - 1), clear.peak,
+      50000 * 0.6 + 1000 * kPi * window_factor({2, 0, 3}));
+  RecordProperty("clear_flux_relative_error", std::to_string(luminance(clear.flux) / expected - 1));
+  EXPECT_NEAR(luminance(clear.flux), expected, 0.02 * expected);
+}
+
+TEST(DaylightAccuracy, TintScalesFluxExactlyPerChannel) {
+  const FluxRoom clear = flux(json::object());
+  const Rgb tint{0.5, 0.7, 0.9};
+  const FluxRoom tinted = flux(portal_state("south window", {{"tint", {0.5, 0.7, 0.9}}}));
+  const double r = tinted.flux.r / clear.flux.r, g = tinted.flux.g / clear.flux.g,
+               b = tinted.flux.b / clear.flux.b;
+  std::printf("tint [0.5, 0.7, 0.9]: flux ratios %.9f %.9f %.9f\n", r, g, b);
+  RecordProperty("tint_ratio_error",
+                 std::to_string(std::max({std::abs(r / tint.r - 1), std::abs(g / tint.g - 1),
+                                          std::abs(b / tint.b - 1)})));
+  EXPECT_NEAR(r, tint.r, 1e-6 * tint.r);
+  EXPECT_NEAR(g, tint.g, 1e-6 * tint.g);
+  EXPECT_NEAR(b, tint.b, 1e-6 * tint.b);
+  // And per sensor, wherever light arrives.
+  for (std::size_t i = 0; i < clear.sensors.size(); ++i) {
+    if (clear.sensors[i].r <= 0) continue;
+    ASSERT_NEAR(tinted.sensors[i].r, 0.5 * clear.sensors[i].r, 1e-5 * clear.sensors[i].r) << i;
+    ASSERT_NEAR(tinted.sensors[i].b, 0.9 * clear.sensors[i].b, 1e-5 * clear.sensors[i].b) << i;
+  }
+}
+
+TEST(DaylightAccuracy, FrostKeepsTheFluxAndSoftensTheSunPatch) {
+  const FluxRoom clear = flux(json::object());
+  double previous_peak = clear.peak;
+  std::printf("frost 0°: flux %.1f lm, floor peak %.0f lx\n", luminance(clear.flux), clear.peak);
+  for (double frost : {10.0, 30.0}) {
+    const FluxRoom frosted = flux(portal_state("south window", {{"frost_deg", frost}}));
+    const double ratio = luminance(frosted.flux) / luminance(clear.flux);
+    std::printf(
+        "frost %.0f°: flux %.1f lm (ratio to clear %.5f), floor peak %.0f lx (%.3f of "
+        "clear)\n",
+        frost, luminance(frosted.flux), ratio, frosted.peak, frosted.peak / clear.peak);
+    RecordProperty("frost" + std::to_string(int(frost)) + "_flux_ratio", std::to_string(ratio));
+    RecordProperty("frost" + std::to_string(int(frost)) + "_peak_ratio",
+                   std::to_string(frosted.peak / clear.peak));
+    EXPECT_NEAR(ratio, 1.0, 0.02) << "frost " << frost;
+    EXPECT_LT(frosted.peak, 0.95 * previous_peak) << "frost " << frost;
+    previous_peak = frosted.peak;
+  }
+}
+
+TEST(DaylightAccuracy, ClearWindowSunPatchIsUniformInside) {
+  // Inside the sun patch of the black room (0.3 m or more from its edges) the sun adds
+  // E_sun·sin(altitude) = 30 000 lx everywhere; the sky part is L·π·F. Each receiver's sun
+  // comes from the one cubemap cell the sun is deposited in, so this pins the per-cell
+  // accuracy of the direct portal transfer (Monte Carlo points on the window, about
+  // portal_samples_per_cell = 4 per covered cell by default).
+  const std::vector<Rgb> e = flux_transfer().sensors();
+  const std::vector<Vec3> points = grid_points({0, 0, 0}, {4, 0, 0}, {0, 0, 5}, 20, 25);
+  double lo = 1e300, hi = 0, mean = 0, square = 0;
+  int n = 0;
+  for (std::size_t i = 0; i < kFloorSensors; ++i) {
+    const Vec3 p = points[i];
+    if (p.x < 1.3 || p.x > 2.7 || p.z < 2.5 || p.z > 3.5) continue;
+    const double sun = luminance(e[i]) - 1000 * kPi * window_factor(p);
+    lo = std::min(lo, sun);
+    hi = std::max(hi, sun);
+    mean += sun;
+    square += sun * sun;
+    ++n;
+  }
+  mean /= n;
+  const double sd = std::sqrt(square / n - mean * mean);
+  std::printf(
+      "sun part inside the patch (%d floor sensors): mean %.0f, sd %.0f, min %.0f, max "
+      "%.0f lx; expected 30000 lx\n",
+      n, mean, sd, lo, hi);
+  RecordProperty("sun_part_min", std::to_string(lo));
+  RecordProperty("sun_part_max", std::to_string(hi));
+  EXPECT_NEAR(mean, 30000, 0.05 * 30000);
+  EXPECT_GE(lo, 0.9 * 30000);
+  EXPECT_LE(hi, 1.1 * 30000);
+}
+
+}  // namespace
+}  // namespace relight
