@@ -19,5 +19,6 @@ void add_precompute_command(CLI::App& app, Action& action);
 void add_render_command(CLI::App& app, Action& action);
 void add_probe_command(CLI::App& app, Action& action);
 void add_bench_command(CLI::App& app, Action& action);
+void add_analyze_command(CLI::App& app, Action& action);
 
 }  // namespace relight
