@@ -61,11 +61,14 @@ ShadedImages RelitScene::render(const Camera& camera, int width, int height, boo
   std::vector<float> indirect(irradiance.size());
   relighter->relight(indirect, false);
   const std::vector<PixelLight> lights = pixel_lights(t.scene, *relighter);
+  const std::vector<PixelSun> suns = pixel_suns(*relighter, t.scene.portals.size());
   const RayTracer& occluders = *tracer;
-  return shade_vertices(
-      pinhole, {*tracer, t.positions, t.triangles, t.vertex_albedo, indirect,
-                [&](Vec3 p, Vec3 n) { return exact_direct_irradiance(occluders, lights, p, n); },
-                background});
+  return shade_vertices(pinhole, {*tracer, t.positions, t.triangles, t.vertex_albedo, indirect,
+                                  [&](Vec3 p, Vec3 n) {
+                                    return exact_direct_irradiance(occluders, lights, p, n) +
+                                           sun_irradiance(occluders, windows, suns, p, n);
+                                  },
+                                  background});
 }
 
 }  // namespace relight

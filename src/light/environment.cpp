@@ -114,35 +114,13 @@ double integrate_rect(int face, double u0, double u1, double v0, double v1, int 
   return sum;
 }
 
-// The sub-cell solid angles of the uniform grid of m×m sub-cells on a face (the same on every
-// face), from the (m+1)² corner values of face_area: one atan2 per corner instead of four per
-// sub-cell, the bulk of a sky shell's cost when rebuilt per frame.
-std::vector<double> subcell_solid_angles(int m) {
-  std::vector<double> corner(static_cast<std::size_t>(m + 1) * (m + 1));
-  for (int b = 0; b <= m; ++b) {
-    for (int a = 0; a <= m; ++a) {
-      corner[static_cast<std::size_t>(b) * (m + 1) + a] =
-          face_area(2.0 * a / m - 1.0, 2.0 * b / m - 1.0);
-    }
-  }
-  std::vector<double> omega(static_cast<std::size_t>(m) * m);
-  const auto at = [&](int a, int b) { return corner[static_cast<std::size_t>(b) * (m + 1) + a]; };
-  for (int b = 0; b < m; ++b) {
-    for (int a = 0; a < m; ++a) {
-      omega[static_cast<std::size_t>(b) * m + a] =
-          at(a + 1, b + 1) - at(a, b + 1) - at(a + 1, b) + at(a, b);
-    }
-  }
-  return omega;
-}
-
 std::vector<Rgb> sky_cubemap(const SkyModel& sky, int n) {
   const int sub = std::max(4, (64 + n - 1) / n);
   const std::vector<double> omega = cubemap_solid_angles(n);
   std::vector<Rgb> out(cubemap_texel_count(n));
   auto f = [&](Vec3 d) { return sky_diffuse_luminance(sky, d); };
   const int m = n * sub;
-  const std::vector<double> sub_omega = subcell_solid_angles(m);
+  const std::vector<double> sub_omega = cubemap_solid_angles(m);
   // Σ f·Ω over the sub×sub sub-cells of texel (i, j) of `face`, with the tabulated angles.
   const auto integrate_texel = [&](int face, int i, int j) {
     double sum = 0;

@@ -64,9 +64,23 @@ double cubemap_texel_solid_angle(int n, int i, int j) {
 }
 
 std::vector<double> cubemap_solid_angles(int n) {
+  // From the (n+1)² corner values of A(u, v): one atan2 per corner, not four per texel (fine
+  // grids of sub-texels are tabulated this way for quadratures).
+  const auto stride = static_cast<std::size_t>(n) + 1;
+  std::vector<double> corner(stride * stride);
+  for (int j = 0; j <= n; ++j) {
+    for (int i = 0; i <= n; ++i) {
+      corner[j * stride + i] = area_element_integral(2.0 * i / n - 1.0, 2.0 * j / n - 1.0);
+    }
+  }
   std::vector<double> omega(static_cast<std::size_t>(n) * n);
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) omega[j * n + i] = cubemap_texel_solid_angle(n, i, j);
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      omega[static_cast<std::size_t>(j) * n + i] =
+          corner[(j + 1) * stride + i + 1] - corner[(j + 1) * stride + i] -
+          corner[j * stride + i + 1] + corner[j * stride + i];
+    }
+  }
   return omega;
 }
 

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "light/environment.h"
@@ -25,11 +26,25 @@ struct PortalTransferView;
 using EnvironmentLoader = std::function<Environment(const EnvironmentSpec&)>;
 Environment environment_without_images(const EnvironmentSpec& spec);
 
+// A sun seen through clear glass: what a renderer can trace per pixel instead of taking it
+// from the shell's cubemap cell (2.8° at 32² a face) interpolated between vertices.
+struct PortalSun {
+  Vec3 direction;   // unit, toward the sun
+  Rgb illuminance;  // lx on a plane facing the sun, tint included
+};
+
 struct PortalLighting {
   Shell shell;
   ShellWorkspace workspace;
-  ShellCubemap cubemap;        // the shell's cells and their per-face Haar transform
-  std::vector<float> weights;  // K × 3: the shell's SH coefficients (indirect weights)
+  ShellCubemap cubemap;  // the shell's cells and their per-face Haar transform
+  // The same without a sharp sun's cell deposit (equal to `cubemap` when there is none):
+  // direct light for renderers that add the sun per pixel.
+  ShellCubemap sky_cubemap;
+  // Set when the shell holds an unoccluded sun behind clear (unfrosted) glass; frosted
+  // glass spreads the sun over the shell and it stays in the cubemap.
+  std::optional<PortalSun> sharp_sun;
+  std::vector<float> weights;  // K × 3: SH of the shell's outward half (indirect weights)
+  std::vector<Rgb> masked;     // scratch: the shell with its inward half zeroed
   bool active = false;         // any light at all
   double seconds = 0;          // wall time of the last update
 };

@@ -145,8 +145,7 @@ void Relighter::update_luminaire(std::size_t j, const LuminaireState& s, bool ge
   if (transfer_.direct_sh_mode) l.direct_weights = l.weights;
 }
 
-void Relighter::relight(std::span<float> out, bool include_direct,
-                        bool include_portal_direct) const {
+void Relighter::relight(std::span<float> out, bool include_direct) const {
   const std::size_t n = transfer_.receivers;
   if (out.size() != 3 * n) throw std::invalid_argument("Relighter: output size mismatch");
   const auto k = static_cast<std::size_t>(sh_count(transfer_.sh_order));
@@ -190,11 +189,12 @@ void Relighter::relight(std::span<float> out, bool include_direct,
         const PortalLighting& l = portals_[p];
         if (!l.active) continue;
         const PortalTransferView& v = transfer_.portals[p];
-        if (include_portal_direct) {
+        {
+          const ShellCubemap& shell = include_direct ? l.cubemap : l.sky_cubemap;
           for (std::size_t i = 0; i < count; ++i) {
             const std::uint64_t at = v.offsets[base + i];
-            const Rgb e = dot_receiver_cubemap(v.records.subspan(at, v.offsets[base + i + 1] - at),
-                                               l.cubemap);
+            const Rgb e =
+                dot_receiver_cubemap(v.records.subspan(at, v.offsets[base + i + 1] - at), shell);
             acc[0][i] += static_cast<float>(e.r);
             acc[1][i] += static_cast<float>(e.g);
             acc[2][i] += static_cast<float>(e.b);

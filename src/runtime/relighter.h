@@ -20,8 +20,8 @@
 #include "light/distribution.h"
 #include "math/sh_window.h"
 #include "runtime/lighting_state.h"
-#include "runtime/portal_lighting.h"
 #include "runtime/luminaire_sh_curve.h"
+#include "runtime/portal_lighting.h"
 #include "scene/scene.h"
 
 namespace relight {
@@ -71,11 +71,14 @@ class Relighter {
   const LightingState& state() const { return state_; }
 
   // Irradiance per receiver, RGB interleaved: out.size() == 3 · receivers. Without
-  // direct light only the interreflected part (for renderers that evaluate the luminaires'
-  // direct light themselves, per pixel); the portals' direct light is included unless
-  // include_portal_direct is false.
-  void relight(std::span<float> out, bool include_direct = true,
-               bool include_portal_direct = true) const;
+  // direct light, what renderers that evaluate direct light per pixel still need: the
+  // interreflected light and the portals' direct skylight, but not the luminaires' direct
+  // light nor the portals' sharp suns (see sharp_sun()).
+  void relight(std::span<float> out, bool include_direct = true) const;
+  // The sun of portal p when it is sharp (clear glass, unoccluded), for per-pixel tracing.
+  const std::optional<PortalSun>& sharp_sun(std::size_t p) const {
+    return portals_.at(p).sharp_sun;
+  }
   // The current shell of portal p (for renderers showing the view out of a window).
   const Shell& shell(std::size_t p) const { return portals_.at(p).shell; }
   // Wall time of the last shell update of portal p, seconds.

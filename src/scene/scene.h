@@ -94,13 +94,12 @@ struct PrecomputeSettings {
   int max_bounces = 100;
   std::string direct = "exact";  // "exact" | "sh" (the lighting-design paper's mode)
   // Portals (issue 4, the interior-scene paper §4.1): the direct component is a cubemap of
-  // portal_face_size² cells a face per receiver, estimated from points sampled on the portal,
-  // about portal_samples_per_cell per cell the portal covers (at least 64, at most
-  // portal_max_samples per receiver); the indirect component is SH, l < portal_sh_order, RGB.
+  // portal_face_size² cells a face per receiver, each cell the portal covers integrated over
+  // portal_samples_per_cell directions (16× as many on the window's outline); the indirect
+  // component is SH, l < portal_sh_order, RGB.
   int portal_face_size = 32;
   int portal_sh_order = 6;
   int portal_samples_per_cell = 4;
-  int portal_max_samples = 4096;
 };
 
 struct Bounds {

@@ -320,7 +320,7 @@ struct Loader {
   void load_precompute(const JsonNode& p) {
     p.expect_keys({"max_edge", "sh_order", "crease_deg", "gather_rays", "sensor_gather_rays",
                    "tolerance", "max_bounces", "direct", "portal_face_size", "portal_sh_order",
-                   "portal_samples_per_cell", "portal_max_samples"});
+                   "portal_samples_per_cell"});
     PrecomputeSettings& s = scene.precompute;
     if (const auto n = p.find("max_edge")) s.max_edge = n->positive();
     if (const auto n = p.find("sh_order")) s.sh_order = n->integer_in(1, 32);
@@ -347,9 +347,6 @@ struct Loader {
     if (const auto n = p.find("portal_sh_order")) s.portal_sh_order = n->integer_in(1, 16);
     if (const auto n = p.find("portal_samples_per_cell")) {
       s.portal_samples_per_cell = n->integer_in(1, 1024);
-    }
-    if (const auto n = p.find("portal_max_samples")) {
-      s.portal_max_samples = n->integer_in(64, 1 << 20);
     }
   }
 };

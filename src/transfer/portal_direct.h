@@ -2,17 +2,21 @@
 // 2009, §4.1.2 and Figure 5(a)): per receiver, a cubemap of the light arriving from the
 // portal's shell through the portal, geometry only — cell c holds
 //   t_c = ∫_{ω ∈ c, through the portal, unoccluded} cos θ_r dω,
-// so that the irradiance from a shell of radiance L is E = Σ_c t_c · L_c. Estimated from
-// points y sampled on the portal: the triangle by its solid angle seen from the receiver,
-// the point uniformly on it (scrambled (0,2)-sequence), each weighted by cos θ_r / pdf_ω with
-// pdf_ω = P(triangle)·d²/(A·cos θ_y). One ray from the receiver through y to infinity checks
-// both the visibility of y and the paper's *backward occlusion* (the continuation past the
-// portal must reach the shell). The number of points follows the portal's solid angle —
-// about `samples_per_cell` per cubemap cell it covers — so a near window gets as many per
-// cell as a far one. Each cubemap is stored in the smaller of pulse or per-face Haar, 8-bit
-// (transfer/cubemap_encoding.h).
+// so that the irradiance from a shell of radiance L is E = Σ_c t_c · L_c. Per receiver:
+// points sampled on the portal (the triangle by its solid angle seen from the receiver, the
+// point uniformly on it; no rays) find the cells the portal covers, widened by their
+// neighbours; then each such cell is integrated over its own directions — about
+// `samples_per_cell` jittered sub-cells (k×k), each direction traced once through the portal
+// (it must meet this portal first) and once against opaque geometry to infinity, which checks
+// the visibility of the portal and the paper's *backward occlusion* (the continuation past
+// the portal must reach the shell) together. Cells whose four corners all see the portal are
+// inside the window's outline and need no more; cells the outline crosses are traced on a
+// 4× finer grid. So a cell inside the window carries no sampling noise from the outline — the
+// sun, which the shell puts in one cell, lights neighbouring receivers alike — and only the
+// outline is noisy, on the finer scale. Each cubemap is stored in the smaller of pulse or
+// per-face Haar, 8-bit (transfer/cubemap_encoding.h).
 //
-// The same samples give the response to each SH basis Y_k (l < sh_order) as direct
+// The same directions give the response to each SH basis Y_k (l < sh_order) as direct
 // irradiance columns for the bounce solver (the indirect component, §4.1.1): where the
 // paper shoots a photon map per basis, here every basis shares these rays and the gather
 // operator's.
@@ -33,9 +37,8 @@ namespace relight {
 struct PortalDirectSettings {
   int face_size = 32;
   int sh_order = 6;
-  int samples_per_cell = 4;
-  int min_samples = 64;
-  int max_samples = 4096;
+  int samples_per_cell = 4;  // directions per cell inside the window (k×k, k = round(√·))
+  int min_samples = 64;      // points on the portal to find its cells, at least
   std::uint64_t seed = 1;
 };
 

@@ -92,7 +92,6 @@ Precomputed precompute_transfer(const Scene& scene, const PrecomputeOptions& opt
     settings.face_size = scene.precompute.portal_face_size;
     settings.sh_order = out.portal_sh_order;
     settings.samples_per_cell = scene.precompute.portal_samples_per_cell;
-    settings.max_samples = scene.precompute.portal_max_samples;
     std::vector<PortalGeometry> geometry = portal_geometry(scene, out.mesh);
     out.warnings = shell_size_warnings(scene, geometry);
     for (Eigen::Index p = 0; p < portal_count; ++p) {

@@ -47,9 +47,11 @@ class AnalyzeCommand : public ::testing::Test {
     scene["materials"]["room"]["albedo"] = {0.7, 0.5, 0.3};
     scene["sensors"] = {
         {{"name", "floor"}, {"points", {{2, 0, 2}, {2, 0, 4}}}, {"normal", {0, 1, 0}}}};
-    scene["precompute"] = {{"max_edge", 0.6},          {"gather_rays", 32},
-                           {"sensor_gather_rays", 64}, {"portal_sh_order", kPortalShOrder},
-                           {"portal_face_size", 8},    {"portal_max_samples", 256}};
+    scene["precompute"] = {{"max_edge", 0.6},
+                           {"gather_rays", 32},
+                           {"sensor_gather_rays", 64},
+                           {"portal_sh_order", kPortalShOrder},
+                           {"portal_face_size", 8}};
     rlt_ = dir_->path() / "window.rlt";
     precompute_ = std::make_unique<CommandResult>(
         run_relight("precompute " + quoted(dir_->write("window.json", scene.dump())) + " -o " +

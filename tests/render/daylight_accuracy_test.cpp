@@ -16,6 +16,7 @@
 
 #include "light/environment.h"
 #include "light/luminaire_frame.h"
+#include "math/cubemap.h"
 #include "render/environment_map_io.h"
 #include "render/reference_tracer.h"
 #include "runtime/lighting_state.h"
@@ -225,10 +226,12 @@ json grey_room(const json& environment) {
   return scene;
 }
 
-void grey_room_against_reference(const json& environment, const char* what) {
-  const json scene = grey_room(environment);
+void grey_room_against_reference(const json& environment, const char* what, int portal_sh_order = 6,
+                                 int reference_spp = 8192) {
+  json scene = grey_room(environment);
+  scene["precompute"]["portal_sh_order"] = portal_sh_order;
   const Daylight d(scene);
-  const Comparison c = compare(d.sensors(), reference(scene, 8192), what);
+  const Comparison c = compare(d.sensors(), reference(scene, reference_spp), what);
   EXPECT_LE(c.mean, 0.03) << what;
   EXPECT_LE(c.worst, 0.08) << what;
 }
@@ -240,9 +243,13 @@ TEST(DaylightAccuracy, GreyRoomUniformSkyMatchesReference) {
 TEST(DaylightAccuracy, GreyRoomHdrMapMatchesReference) {
   const std::filesystem::path map = "/usr/share/blender/datafiles/studiolights/world/forest.exr";
   if (!std::filesystem::exists(map)) GTEST_SKIP() << map << " not found (Debian blender-data)";
+  // forest.exr holds a sun and bright sky patches: its indirect light needs more SH bands
+  // than a smooth sky (here l < 6: mean 3.3 %, worst 10 %; l < 8: 1.7 %, 7.0 %; l < 10: 1.6 %,
+  // 4.7 %, against 32768 spp), and the reference, which samples the window's area, needs
+  // more samples to converge on it (at 8192 spp and l < 10: 3.0 %, 8.9 %).
   grey_room_against_reference(
       {{"type", "map"}, {"file", map.string()}, {"rotate_deg", 30}, {"scale", 1000}},
-      "grey room forest.exr");
+      "grey room forest.exr, portal_sh_order 10", 10, 32768);
 }
 
 // ---------------------------------------------------------------------------------------
@@ -452,10 +459,22 @@ FluxRoom flux(const json& state) {
   return f;
 }
 
+// The shell puts the sun's energy into the one 32² cubemap cell that holds it, so through the
+// transfer the sun arrives from that cell (2.8° wide), not from its exact direction: the
+// flux through the window is A·E_sun·cos of the cell's direction to the window normal (here
+// the sun at altitude 36.87° sits 1.4° from its cell's centre: +1.8 % of the sun's flux), and
+// the closed form is taken with it. The exact direction is reported beside it.
 TEST(DaylightAccuracy, ClearWindowFluxMatchesClosedForm) {
   const FluxRoom clear = flux(json::object());
   const double a = (kWindow.u1 - kWindow.u0) * (kWindow.v1 - kWindow.v0);
-  const double expected = a * (kPi * 1000 / 2 + 50000 * 0.8);
+  const double exact = a * (kPi * 1000 / 2 + 50000 * 0.8);
+  const Vec3 sun{0, 0.6, 0.8};  // due south (+z), altitude atan(3/4)
+  const Vec3 cell = cubemap_texel_direction(32, cubemap_texel(32, sun));
+  const double expected = a * (kPi * 1000 / 2 + 50000 * cell.z);
+  std::printf(
+      "sun cell direction (%.4f, %.4f, %.4f): cos to the window normal %.4f (exact 0.8); "
+      "flux vs the exact sun direction %+.3f%%\n",
+      cell.x, cell.y, cell.z, cell.z, 100 * (luminance(clear.flux) / exact - 1));
   std::printf(
       "clear window: flux %.1f lm vs A·(πL/2 + E_sun·cos alt) = %.1f lm (%+.3f%%), floor "
       "peak %.0f lx (E_sun·sin alt + sky = %.0f)\n",

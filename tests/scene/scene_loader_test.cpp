@@ -290,13 +290,11 @@ TEST(SceneLoaderPortals, PortalPrecomputeSettingsAreChecked) {
   nlohmann::json scene = scene_with_portals(nlohmann::json::array());
   scene["precompute"] = {{"portal_face_size", 16},
                          {"portal_sh_order", 4},
-                         {"portal_samples_per_cell", 8},
-                         {"portal_max_samples", 512}};
+                         {"portal_samples_per_cell", 8}};
   const Scene s = scene_from_json(scene, "p.json");
   EXPECT_EQ(s.precompute.portal_face_size, 16);
   EXPECT_EQ(s.precompute.portal_sh_order, 4);
   EXPECT_EQ(s.precompute.portal_samples_per_cell, 8);
-  EXPECT_EQ(s.precompute.portal_max_samples, 512);
   scene["precompute"]["portal_face_size"] = 24;
   EXPECT_NE(load_error(scene).find("/precompute/portal_face_size: portal_face_size must be a "
                                    "power of two"),

@@ -84,7 +84,6 @@ PortalCase precompute_case(const json& document) {
   settings.face_size = c.scene.precompute.portal_face_size;
   settings.sh_order = p.portal_sh_order;
   settings.samples_per_cell = c.scene.precompute.portal_samples_per_cell;
-  settings.max_samples = c.scene.precompute.portal_max_samples;
   settings.seed = options.seed + 0x9e3779b97f4a7c15ULL;
   c.sh_columns = compute_portal_direct(p.receivers, receiver_ray_points(p.receivers, p.mesh), skip,
                                        p.mesh, traced, p.portals.at(0).geometry, settings, false)
