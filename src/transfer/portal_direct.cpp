@@ -203,8 +203,8 @@ void trace_cells(Vec3 origin, Vec3 normal, std::size_t receiver, const CellGrid&
     const CubemapTexel c = cubemap_texel_from_index(grid.n, cell);
     int corners_in = 0;
     for (int corner = 0; corner < 4; ++corner) {
-      const Vec3 dir = cubemap_direction(
-          {c.face, double(c.i + corner % 2) / grid.n, double(c.j + corner / 2) / grid.n});
+      const int ci = c.i + (corner & 1), cj = c.j + (corner >> 1);
+      const Vec3 dir = cubemap_direction({c.face, double(ci) / grid.n, double(cj) / grid.n});
       ++out.rays;
       const RayHit window = traced.portals.intersect({origin, dir});
       corners_in += window.hit() && in_portal[window.triangle] ? 1 : 0;
