@@ -29,7 +29,7 @@ bench: build
 	@scripts/bootstrap.sh --bench
 	@$(BUILD)/relight_benchmarks
 	@BUILD=$(BUILD) scripts/bench-dragon.sh
-	@BUILD=$(BUILD) scripts/bench-dragon-window.sh
+	@BUILD=$(BUILD) scripts/bench-dragon.sh dragon-window
 
 format:
 	@clang-format -i $$(git ls-files 'src/*.cpp' 'src/*.h' 'tests/*.cpp' 'tests/*.h' 'bench/*.cpp')

@@ -165,18 +165,10 @@ Comparison compare(const std::vector<Rgb>& a, const std::vector<Rgb>& b, const c
 // ---------------------------------------------------------------------------------------
 // 1. Black room, uniform sky: E = L·π·F through the relighter (both portals at once).
 
-constexpr Rect kSkylight{1.5, 2.5, 2, 3.5};  // in the 4 × 3 × 5 m room
-constexpr Rect kWindow{1, 3, 0.9, 2.1};
-
-double skylight_factor(Vec3 p) {
-  return parallel_rect_factor(kSkylight.u0 - p.x, kSkylight.u1 - p.x, kSkylight.v0 - p.z,
-                              kSkylight.v1 - p.z, 3 - p.y);
-}
-
-double window_factor(Vec3 p) {
-  return perpendicular_rect_factor(kWindow.u0 - p.x, kWindow.u1 - p.x, kWindow.v0 - p.y,
-                                   kWindow.v1 - p.y, 5 - p.z);
-}
+using testing::kSkylight;
+using testing::kWindow;
+using testing::skylight_factor;
+using testing::window_factor;
 
 TEST(DaylightAccuracy, BlackRoomRelitFromUniformSkiesMatchesLPiF) {
   WindowRoom room;

@@ -61,6 +61,22 @@ struct WindowRoom {
   double albedo = 0;                        // of every opaque surface
 };
 
+// The default 4 × 3 × 5 m room's standard openings, shared by the daylight tests: a skylight
+// x ∈ [1.5, 2.5], z ∈ [2, 3.5], and a south window (wall z = 5) x ∈ [1, 3], y ∈ [0.9, 2.1];
+// their configuration factors from a receiver at p facing up.
+inline constexpr Rect kSkylight{1.5, 2.5, 2, 3.5};
+inline constexpr Rect kWindow{1, 3, 0.9, 2.1};
+
+inline double skylight_factor(Vec3 p) {
+  return parallel_rect_factor(kSkylight.u0 - p.x, kSkylight.u1 - p.x, kSkylight.v0 - p.z,
+                              kSkylight.v1 - p.z, 3 - p.y);
+}
+
+inline double window_factor(Vec3 p) {
+  return perpendicular_rect_factor(kWindow.u0 - p.x, kWindow.u1 - p.x, kWindow.v0 - p.y,
+                                   kWindow.v1 - p.y, 5 - p.z);
+}
+
 inline nlohmann::json quad_json(Vec3 corner, Vec3 u, Vec3 v, const std::string& material) {
   return {{"type", "quad"},
           {"corner", {corner.x, corner.y, corner.z}},

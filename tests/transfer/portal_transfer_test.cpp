@@ -36,18 +36,10 @@ constexpr double kLuminance = 1000;  // cd/m², the placeholder sky of window_ro
 
 // Room 4 × 3 × 5 m (tests/support/daylight_room.h): skylight x ∈ [1.5, 2.5], z ∈ [2, 3.5];
 // south window (wall z = 5) x ∈ [1, 3], y ∈ [0.9, 2.1].
-constexpr Rect kSkylight{1.5, 2.5, 2, 3.5};
-constexpr Rect kWindow{1, 3, 0.9, 2.1};
-
-double skylight_factor(Vec3 p) {
-  return parallel_rect_factor(kSkylight.u0 - p.x, kSkylight.u1 - p.x, kSkylight.v0 - p.z,
-                              kSkylight.v1 - p.z, 3 - p.y);
-}
-
-double window_factor(Vec3 p) {
-  return perpendicular_rect_factor(kWindow.u0 - p.x, kWindow.u1 - p.x, kWindow.v0 - p.y,
-                                   kWindow.v1 - p.y, 5 - p.z);
-}
+using testing::kSkylight;
+using testing::kWindow;
+using testing::skylight_factor;
+using testing::window_factor;
 
 json floor_sensors(const std::vector<Vec3>& points) {
   json p = json::array();
