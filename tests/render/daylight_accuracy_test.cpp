@@ -550,5 +550,48 @@ TEST(DaylightAccuracy, ClearWindowSunPatchIsUniformInside) {
   EXPECT_LE(hi, 1.1 * 30000);
 }
 
+// ---------------------------------------------------------------------------------------
+// 5. The dynamic exterior through the relighter: a black wall 2 m south of the window, 4 m
+// high (up to 51° above the horizon seen from the window's centre), takes that sky away from
+// the floor; moved away or hidden, the room reads exactly as without it.
+
+TEST(DaylightAccuracy, ExteriorObjectsChangeTheShellAtRunTime) {
+  WindowRoom room;
+  room.south_window = kWindow;
+  json scene = testing::window_room_json(room);
+  scene["materials"]["black wall"] = {{"albedo", {0, 0, 0}}};
+  // 2 m south of the window, 4 m high, 20 m wide.
+  scene["exterior"] = {{{"name", "wall"},
+                        {"type", "box"},
+                        {"min", {-8, 0, 7}},
+                        {"max", {12, 4, 7.3}},
+                        {"normals", "outward"},
+                        {"material", "black wall"}}};
+  scene["sensors"] = json::array({sensor_points("floor", {{2, 0, 2}, {2, 0, 3.5}, {1, 0, 4.5}})});
+  scene["precompute"] = {{"max_edge", 0.5}, {"gather_rays", 64}, {"sensor_gather_rays", 256}};
+  const Daylight d(scene);
+  const std::vector<Rgb> with_wall = d.sensors();
+  const std::vector<Rgb> moved =
+      d.sensors({{"exterior", {{"wall", {{"translate", {0, -10, 0}}}}}}});
+  const std::vector<Rgb> hidden = d.sensors({{"exterior", {{"wall", {{"visible", false}}}}}});
+  json no_wall_scene = scene;
+  no_wall_scene.erase("exterior");
+  const std::vector<Rgb> without = Daylight(no_wall_scene).sensors();
+  for (std::size_t i = 0; i < with_wall.size(); ++i) {
+    std::printf("sensor %zu: no exterior %.2f lx, wall %.2f, wall 10 m down %.2f, hidden %.2f\n", i,
+                luminance(without[i]), luminance(with_wall[i]), luminance(moved[i]),
+                luminance(hidden[i]));
+    EXPECT_NEAR(luminance(hidden[i]), luminance(without[i]), 1e-6 * luminance(without[i]));
+    EXPECT_NEAR(luminance(moved[i]), luminance(without[i]), 1e-6 * luminance(without[i]));
+  }
+  // Through the window (y 0.9..2.1) the floor point 3 m in sees 17°..35° above the horizon:
+  // all wall, nothing left in a black room; the point 1.5 m in (31°..54°) keeps the sky
+  // above 51°; the point 0.5 m in (61°..76°) looks over the wall and loses nothing.
+  EXPECT_LT(luminance(with_wall[0]), 1e-6 * luminance(without[0]));
+  EXPECT_GT(luminance(with_wall[1]), 0.02 * luminance(without[1]));
+  EXPECT_LT(luminance(with_wall[1]), 0.5 * luminance(without[1]));
+  EXPECT_NEAR(luminance(with_wall[2]), luminance(without[2]), 1e-6 * luminance(without[2]));
+}
+
 }  // namespace
 }  // namespace relight
