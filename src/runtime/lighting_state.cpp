@@ -94,7 +94,8 @@ void apply_placement(ExteriorPlacement& p, const JsonNode& node) {
 }
 
 // Applies an "exterior" object (names → placements) to every portal in `portals`.
-void apply_exterior(std::vector<PortalState*> portals, const Scene& scene, const JsonNode& node) {
+void apply_exterior(const std::vector<PortalState*>& portals, const Scene& scene,
+                    const JsonNode& node) {
   if (!node.is_object())
     node.fail("expected an object mapping exterior object names to placements");
   for (const auto& [name, unused] : node.value().items()) {

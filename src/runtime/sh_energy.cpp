@@ -21,7 +21,7 @@ using BlockColumns =
 // 2l+1 bases of order l are columns of 64 vertices, kChannels · 64 floats apart.
 Eigen::MatrixXd order_gram(std::span<const float> blocks, std::size_t vertex_count,
                            std::size_t k_count, int l, std::size_t channel) {
-  const auto first = static_cast<std::size_t>(l * l);
+  const std::size_t first = static_cast<std::size_t>(l) * static_cast<std::size_t>(l);
   const Eigen::Index width = 2 * l + 1;
   Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(width, width);
   for (std::size_t b = 0; b < block_count(vertex_count); ++b) {
@@ -42,7 +42,8 @@ std::vector<ShOrderEnergy> portal_sh_energy(const PortalTransferView& portal,
   if (sh_order < 1 || vertex_count > receivers) {
     throw std::invalid_argument("portal_sh_energy: bad order or vertex count");
   }
-  const auto k_count = static_cast<std::size_t>(sh_order * sh_order);
+  const std::size_t k_count =
+      static_cast<std::size_t>(sh_order) * static_cast<std::size_t>(sh_order);
   if (portal.indirect.size() != blocked_floats(receivers, k_count, kChannels)) {
     throw std::invalid_argument("portal_sh_energy: transfer of portal \"" + portal.name +
                                 "\" has the wrong size");
