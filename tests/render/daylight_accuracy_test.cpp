@@ -454,7 +454,7 @@ FluxRoom flux(const json& state) {
 // The shell puts the sun's energy into the one 32² cubemap cell that holds it, so through the
 // transfer the sun arrives from that cell (2.8° wide), not from its exact direction: the
 // flux through the window is A·E_sun·cos of the cell's direction to the window normal (here
-// the sun at altitude 36.87° sits 1.4° from its cell's centre: +1.8 % of the sun's flux), and
+// the sun at altitude 36.87° sits 1.85° from its cell's centre: +1.5 % of the sun's flux), and
 // the closed form is taken with it. The exact direction is reported beside it.
 TEST(DaylightAccuracy, ClearWindowFluxMatchesClosedForm) {
   const FluxRoom clear = flux(json::object());
