@@ -49,6 +49,10 @@ Relighter::Relighter(TransferView transfer, const Scene& scene, RelighterSetting
   for (std::size_t j = 0; j < luminaires_.size(); ++j) {
     update_luminaire(j, state_.luminaires[j], true);
   }
+  for (PartialSum* sum :
+       {&luminaire_sums_[0], &luminaire_sums_[1], &portal_sums_[0], &portal_sums_[1]}) {
+    sum->values.assign(3 * transfer_.receivers, 0.0f);
+  }
   portals_.resize(scene.portals.size());
   for (std::size_t p = 0; p < portals_.size(); ++p) {
     update_portal_lighting(portals_[p], transfer_.portals[p], transfer_.portal_sh_order,
@@ -63,11 +67,16 @@ void Relighter::set_state(const LightingState& state) {
     const bool geometry_changed = !(now.aim == next.aim) || !(now.c0 == next.c0) ||
                                   !same_distribution(now.distribution, next.distribution);
     update_luminaire(j, next, geometry_changed);
+    if (geometry_changed || now.on != next.on || now.dimmer != next.dimmer ||
+        !(now.color == next.color)) {
+      luminaire_sums_[0].valid = luminaire_sums_[1].valid = false;
+    }
   }
   for (std::size_t p = 0; p < portals_.size(); ++p) {
     if (state.portals.at(p) == state_.portals[p]) continue;
     update_portal_lighting(portals_[p], transfer_.portals[p], transfer_.portal_sh_order,
                            state.portals[p], *scene_, settings_.load_environment);
+    portal_sums_[0].valid = portal_sums_[1].valid = false;
   }
   state_ = state;
 }
@@ -145,78 +154,113 @@ void Relighter::update_luminaire(std::size_t j, const LuminaireState& s, bool ge
   if (transfer_.direct_sh_mode) l.direct_weights = l.weights;
 }
 
-void Relighter::relight(std::span<float> out, bool include_direct) const {
+void Relighter::add_luminaires(std::size_t b, bool include_direct, float (&acc)[3][kBlock]) const {
+  const std::size_t n = transfer_.receivers;
+  const auto k = static_cast<std::size_t>(sh_count(transfer_.sh_order));
+  const std::size_t base = b * kBlock;
+  const std::size_t count = std::min(kBlock, n - base);
+  for (std::size_t j = 0; j < luminaires_.size(); ++j) {
+    const Luminaire& l = luminaires_[j];
+    if (!l.active) continue;
+    const LuminaireTransferView& v = transfer_.luminaires[j];
+    if (!include_direct) {
+      // interreflected light only
+    } else if (transfer_.direct_sh_mode) {
+      const float* s = v.direct_sh.data() + b * k * kBlock;
+      for (std::size_t basis = 0; basis < k; ++basis) {
+        const float* t = s + basis * kBlock;
+        for (int c = 0; c < 3; ++c) {
+          const float w = l.direct_weights[3 * basis + c];
+          for (std::size_t i = 0; i < kBlock; ++i) acc[c][i] += w * t[i];
+        }
+      }
+    } else {
+      const float* d = l.direct.data() + base;
+      for (int c = 0; c < 3; ++c) {
+        for (std::size_t i = 0; i < count; ++i) acc[c][i] += l.rgb[c] * d[i];
+      }
+    }
+    const float* t = v.indirect.data() + b * k * 3 * kBlock;
+    for (std::size_t basis = 0; basis < k; ++basis) {
+      for (int c = 0; c < 3; ++c) {
+        const float w = l.weights[3 * basis + c];
+        const float* tc = t + (3 * basis + c) * kBlock;
+        for (std::size_t i = 0; i < kBlock; ++i) acc[c][i] += w * tc[i];
+      }
+    }
+  }
+}
+
+void Relighter::add_portals(std::size_t b, bool include_direct, float (&acc)[3][kBlock]) const {
+  const std::size_t n = transfer_.receivers;
+  const auto kp = static_cast<std::size_t>(sh_count(transfer_.portal_sh_order));
+  const std::size_t base = b * kBlock;
+  const std::size_t count = std::min(kBlock, n - base);
+  for (std::size_t p = 0; p < portals_.size(); ++p) {
+    const PortalLighting& l = portals_[p];
+    if (!l.active) continue;
+    const PortalTransferView& v = transfer_.portals[p];
+    const ShellCubemap& shell = include_direct ? l.cubemap : l.sky_cubemap;
+    for (std::size_t i = 0; i < count; ++i) {
+      const std::uint64_t at = v.offsets[base + i];
+      const Rgb e =
+          dot_receiver_cubemap(v.records.subspan(at, v.offsets[base + i + 1] - at), shell);
+      acc[0][i] += static_cast<float>(e.r);
+      acc[1][i] += static_cast<float>(e.g);
+      acc[2][i] += static_cast<float>(e.b);
+    }
+    const float* t = v.indirect.data() + b * kp * 3 * kBlock;
+    for (std::size_t basis = 0; basis < kp; ++basis) {
+      for (int c = 0; c < 3; ++c) {
+        const float w = l.weights[3 * basis + c];
+        const float* tc = t + (3 * basis + c) * kBlock;
+        for (std::size_t i = 0; i < kBlock; ++i) acc[c][i] += w * tc[i];
+      }
+    }
+  }
+}
+
+void Relighter::relight(std::span<float> out, bool include_direct) {
   const std::size_t n = transfer_.receivers;
   if (out.size() != 3 * n) throw std::invalid_argument("Relighter: output size mismatch");
-  const auto k = static_cast<std::size_t>(sh_count(transfer_.sh_order));
-  const auto kp = static_cast<std::size_t>(sh_count(transfer_.portal_sh_order));
+  // Each kind of source keeps its own sum (per direct mode), recomputed only after a change
+  // to it: a frame in which only the sky moves reads the portals' transfer, not the
+  // luminaires', and the other way round.
+  const std::size_t slot = include_direct ? 1 : 0;
+  PartialSum& lum = luminaire_sums_[slot];
+  PartialSum& por = portal_sums_[slot];
+  const bool redo_lum = !lum.valid, redo_por = !por.valid;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, block_count(n)), [&](const auto& blocks) {
     for (std::size_t b = blocks.begin(); b != blocks.end(); ++b) {
-      alignas(64) float acc[3][kBlock] = {};
       const std::size_t base = b * kBlock;
       const std::size_t count = std::min(kBlock, n - base);
-      for (std::size_t j = 0; j < luminaires_.size(); ++j) {
-        const Luminaire& l = luminaires_[j];
-        if (!l.active) continue;
-        const LuminaireTransferView& v = transfer_.luminaires[j];
-        if (!include_direct) {
-          // interreflected light only
-        } else if (transfer_.direct_sh_mode) {
-          const float* s = v.direct_sh.data() + b * k * kBlock;
-          for (std::size_t basis = 0; basis < k; ++basis) {
-            const float* t = s + basis * kBlock;
-            for (int c = 0; c < 3; ++c) {
-              const float w = l.direct_weights[3 * basis + c];
-              for (std::size_t i = 0; i < kBlock; ++i) acc[c][i] += w * t[i];
-            }
-          }
-        } else {
-          const float* d = l.direct.data() + base;
-          for (int c = 0; c < 3; ++c) {
-            for (std::size_t i = 0; i < count; ++i) acc[c][i] += l.rgb[c] * d[i];
-          }
+      const auto store = [&](PartialSum& sum, const float(&acc)[3][kBlock]) {
+        for (std::size_t i = 0; i < count; ++i) {
+          for (int c = 0; c < 3; ++c) sum.values[3 * (base + i) + c] = acc[c][i];
         }
-        const float* t = v.indirect.data() + b * k * 3 * kBlock;
-        for (std::size_t basis = 0; basis < k; ++basis) {
-          for (int c = 0; c < 3; ++c) {
-            const float w = l.weights[3 * basis + c];
-            const float* tc = t + (3 * basis + c) * kBlock;
-            for (std::size_t i = 0; i < kBlock; ++i) acc[c][i] += w * tc[i];
-          }
-        }
+      };
+      if (redo_lum) {
+        alignas(64) float acc[3][kBlock] = {};
+        add_luminaires(b, include_direct, acc);
+        store(lum, acc);
       }
-      for (std::size_t p = 0; p < portals_.size(); ++p) {
-        const PortalLighting& l = portals_[p];
-        if (!l.active) continue;
-        const PortalTransferView& v = transfer_.portals[p];
-        {
-          const ShellCubemap& shell = include_direct ? l.cubemap : l.sky_cubemap;
-          for (std::size_t i = 0; i < count; ++i) {
-            const std::uint64_t at = v.offsets[base + i];
-            const Rgb e =
-                dot_receiver_cubemap(v.records.subspan(at, v.offsets[base + i + 1] - at), shell);
-            acc[0][i] += static_cast<float>(e.r);
-            acc[1][i] += static_cast<float>(e.g);
-            acc[2][i] += static_cast<float>(e.b);
-          }
-        }
-        const float* t = v.indirect.data() + b * kp * 3 * kBlock;
-        for (std::size_t basis = 0; basis < kp; ++basis) {
-          for (int c = 0; c < 3; ++c) {
-            const float w = l.weights[3 * basis + c];
-            const float* tc = t + (3 * basis + c) * kBlock;
-            for (std::size_t i = 0; i < kBlock; ++i) acc[c][i] += w * tc[i];
-          }
-        }
+      if (redo_por) {
+        alignas(64) float acc[3][kBlock] = {};
+        add_portals(b, include_direct, acc);
+        store(por, acc);
       }
-      for (std::size_t i = 0; i < count; ++i) {
-        for (int c = 0; c < 3; ++c) out[3 * (base + i) + c] = acc[c][i];
+      for (std::size_t i = 3 * base; i < 3 * (base + count); ++i) {
+        out[i] = lum.values[i] + por.values[i];
       }
     }
   });
+  lum.valid = por.valid = true;
+  last_frame_bytes_ = (redo_lum ? luminaire_bytes() : 0) + (redo_por ? portal_bytes() : 0) +
+                      (2 + std::size_t{redo_lum} + std::size_t{redo_por} + 1) * 3 * n *
+                          sizeof(float);  // the sums read, those redone written, out written
 }
 
-std::size_t Relighter::transfer_bytes() const {
+std::size_t Relighter::luminaire_bytes() const {
   std::size_t bytes = 0;
   for (std::size_t j = 0; j < luminaires_.size(); ++j) {
     if (!luminaires_[j].active) continue;
@@ -225,12 +269,21 @@ std::size_t Relighter::transfer_bytes() const {
     bytes += transfer_.direct_sh_mode ? v.direct_sh.size_bytes()
                                       : luminaires_[j].direct.size() * sizeof(float);
   }
+  return bytes;
+}
+
+std::size_t Relighter::portal_bytes() const {
+  std::size_t bytes = 0;
   for (std::size_t p = 0; p < portals_.size(); ++p) {
     if (!portals_[p].active) continue;
     const PortalTransferView& v = transfer_.portals[p];
     bytes += v.indirect.size_bytes() + v.records.size_bytes() + v.offsets.size_bytes();
   }
   return bytes;
+}
+
+std::size_t Relighter::transfer_bytes() const {
+  return luminaire_bytes() + portal_bytes();
 }
 
 }  // namespace relight

@@ -23,6 +23,7 @@
 #include "runtime/luminaire_sh_curve.h"
 #include "runtime/portal_lighting.h"
 #include "scene/scene.h"
+#include "transfer/transfer_blocks.h"
 
 namespace relight {
 
@@ -74,7 +75,9 @@ class Relighter {
   // direct light, what renderers that evaluate direct light per pixel still need: the
   // interreflected light and the portals' direct skylight, but not the luminaires' direct
   // light nor the portals' sharp suns (see sharp_sun()).
-  void relight(std::span<float> out, bool include_direct = true) const;
+  // Each kind of source (luminaires, portals) keeps its partial sum between calls, and only
+  // the kinds whose state changed since are summed again.
+  void relight(std::span<float> out, bool include_direct = true);
   // The sun of portal p when it is sharp (clear glass, unoccluded), for per-pixel tracing.
   const std::optional<PortalSun>& sharp_sun(std::size_t p) const {
     return portals_.at(p).sharp_sun;
@@ -91,8 +94,11 @@ class Relighter {
   // How many distribution changes were one moved curve control point, updated
   // incrementally (the lighting-design paper's Eq. 21) instead of projected anew.
   std::size_t incremental_curve_updates() const { return incremental_curve_updates_; }
-  // Bytes of stored transfer one relight() reads.
+  // Bytes of stored transfer a relight() of every source reads.
   std::size_t transfer_bytes() const;
+  // Bytes the last relight() read and wrote: the transfer of the sources it summed again,
+  // and the partial sums and the output.
+  std::size_t last_frame_bytes() const { return last_frame_bytes_; }
 
  private:
   struct Luminaire {
@@ -106,7 +112,16 @@ class Relighter {
     bool active = false;
   };
 
+  struct PartialSum {
+    std::vector<float> values;  // 3 per receiver
+    bool valid = false;
+  };
+
   void update_luminaire(std::size_t j, const LuminaireState& s, bool geometry_changed);
+  void add_luminaires(std::size_t block, bool include_direct, float (&acc)[3][kBlock]) const;
+  void add_portals(std::size_t block, bool include_direct, float (&acc)[3][kBlock]) const;
+  std::size_t luminaire_bytes() const;
+  std::size_t portal_bytes() const;
   void project_distribution(std::size_t j, const LuminaireState& s);
 
   TransferView transfer_;
@@ -116,6 +131,8 @@ class Relighter {
   LightingState state_;
   std::vector<Luminaire> luminaires_;
   std::size_t incremental_curve_updates_ = 0;
+  PartialSum luminaire_sums_[2], portal_sums_[2];  // [include_direct]
+  std::size_t last_frame_bytes_ = 0;
 };
 
 }  // namespace relight

@@ -452,10 +452,13 @@ TEST_F(TransferCommands, BenchPrintsOneJsonLine) {
   EXPECT_EQ(j.at("luminaires").get<std::size_t>(), kLuminaires);
   EXPECT_EQ(j.at("frames").get<int>(), 3);
   // Per luminaire in "exact" mode: the blocked RGB SH transfer plus one direct float per
-  // receiver.
+  // receiver. A dimmer frame sums the luminaires again and keeps the portals' partial sum:
+  // it reads that transfer and both partial sums and writes the luminaires' sum and the
+  // output (3 floats per receiver each).
   const std::size_t k = static_cast<std::size_t>(sh_count(kShOrder));
-  EXPECT_EQ(j.at("transfer_bytes").get<std::size_t>(),
-            kLuminaires * 4 * (blocked_floats(receivers, k, 3) + receivers));
+  const std::size_t stored = kLuminaires * 4 * (blocked_floats(receivers, k, 3) + receivers);
+  EXPECT_EQ(j.at("stored_transfer_bytes").get<std::size_t>(), stored);
+  EXPECT_EQ(j.at("transfer_bytes").get<std::size_t>(), stored + 4 * 3 * receivers * 4);
   EXPECT_NEAR(j.at("ratio").get<double>(),
               j.at("effective_gbps").get<double>() / j.at("stream_gbps").get<double>(), 1e-9);
 
