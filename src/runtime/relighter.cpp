@@ -36,6 +36,19 @@ int single_moved_point(const DistributionSpec& a, const DistributionSpec& b) {
   return moved;
 }
 
+// acc_c[i] += Σ_k w[3k + c] · T[k][c][i] over one block of RGB transfer in the blocked layout
+// (transfer/transfer_blocks.h): K bases, each three channels of kBlock receivers.
+void add_weighted_block(const float* t, std::size_t k, const std::vector<float>& w,
+                        float (&acc)[3][kBlock]) {
+  for (std::size_t basis = 0; basis < k; ++basis) {
+    for (int c = 0; c < 3; ++c) {
+      const float weight = w[3 * basis + c];
+      const float* tc = t + (3 * basis + c) * kBlock;
+      for (std::size_t i = 0; i < kBlock; ++i) acc[c][i] += weight * tc[i];
+    }
+  }
+}
+
 }  // namespace
 
 Relighter::Relighter(TransferView transfer, const Scene& scene, RelighterSettings settings)
@@ -180,14 +193,7 @@ void Relighter::add_luminaires(std::size_t b, bool include_direct, float (&acc)[
         for (std::size_t i = 0; i < count; ++i) acc[c][i] += l.rgb[c] * d[i];
       }
     }
-    const float* t = v.indirect.data() + b * k * 3 * kBlock;
-    for (std::size_t basis = 0; basis < k; ++basis) {
-      for (int c = 0; c < 3; ++c) {
-        const float w = l.weights[3 * basis + c];
-        const float* tc = t + (3 * basis + c) * kBlock;
-        for (std::size_t i = 0; i < kBlock; ++i) acc[c][i] += w * tc[i];
-      }
-    }
+    add_weighted_block(v.indirect.data() + b * k * 3 * kBlock, k, l.weights, acc);
   }
 }
 
@@ -209,14 +215,7 @@ void Relighter::add_portals(std::size_t b, bool include_direct, float (&acc)[3][
       acc[1][i] += static_cast<float>(e.g);
       acc[2][i] += static_cast<float>(e.b);
     }
-    const float* t = v.indirect.data() + b * kp * 3 * kBlock;
-    for (std::size_t basis = 0; basis < kp; ++basis) {
-      for (int c = 0; c < 3; ++c) {
-        const float w = l.weights[3 * basis + c];
-        const float* tc = t + (3 * basis + c) * kBlock;
-        for (std::size_t i = 0; i < kBlock; ++i) acc[c][i] += w * tc[i];
-      }
-    }
+    add_weighted_block(v.indirect.data() + b * kp * 3 * kBlock, kp, l.weights, acc);
   }
 }
 
