@@ -53,7 +53,7 @@ struct ChunkOutput {
 };
 
 struct PortalTriangles {
-  std::vector<Vec3> a, b, c, unit_normal;
+  std::vector<Vec3> a, b, c;
 };
 
 PortalTriangles portal_triangles(const PreparedMesh& mesh, const PortalGeometry& portal) {
@@ -63,7 +63,6 @@ PortalTriangles portal_triangles(const PreparedMesh& mesh, const PortalGeometry&
     t.a.push_back(mesh.positions[tri[0]]);
     t.b.push_back(mesh.positions[tri[1]]);
     t.c.push_back(mesh.positions[tri[2]]);
-    t.unit_normal.push_back(normalize(cross(t.b.back() - t.a.back(), t.c.back() - t.a.back())));
   }
   return t;
 }
