@@ -51,7 +51,13 @@ void update_portal_lighting(PortalLighting& lighting, const PortalTransferView& 
                             int sh_order, const PortalState& state, const Scene& scene,
                             const EnvironmentLoader& load) {
   const auto start = std::chrono::steady_clock::now();
-  const Environment environment = load(state.environment);
+  const Environment environment = [&] {
+    try {
+      return load(state.environment);
+    } catch (const InputError& e) {  // e.g. a map file moved since the precompute
+      fail_input(state.environment.where, e.what());
+    }
+  }();
   const std::vector<ExteriorObject> exterior = placed_exterior(scene, state.exterior);
   ShellInputs inputs;
   inputs.environment = &environment;
