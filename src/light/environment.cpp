@@ -89,15 +89,6 @@ std::vector<Rgb> map_sh(const Environment& env, int order) {
   return c;
 }
 
-// ∫ over the face rectangle [u0,u1]×[v0,v1] (u, v ∈ [−1, 1]) of the unit-distance face,
-// A(u, v) = atan2(u v, sqrt(1 + u² + v²)) (math/cubemap.h).
-double face_area(double u, double v) {
-  return std::atan2(u * v, std::sqrt(1.0 + u * u + v * v));
-}
-double rect_solid_angle(double u0, double u1, double v0, double v1) {
-  return face_area(u1, v1) - face_area(u0, v1) - face_area(u1, v0) + face_area(u0, v0);
-}
-
 // Σ f(centre)·Ω over k×k sub-rectangles of [u0,u1]×[v0,v1] on `face`.
 template <class F>
 double integrate_rect(int face, double u0, double u1, double v0, double v1, int k, F&& f) {
@@ -108,7 +99,7 @@ double integrate_rect(int face, double u0, double u1, double v0, double v1, int 
       const double ua = u0 + (u1 - u0) * a / k, ub = u0 + (u1 - u0) * (a + 1) / k;
       const Vec3 dir =
           cubemap_direction({face, 0.5 * (ua + ub) * 0.5 + 0.5, 0.5 * (va + vb) * 0.5 + 0.5});
-      sum += f(dir) * rect_solid_angle(ua, ub, va, vb);
+      sum += f(dir) * cubemap_rect_solid_angle(ua, ub, va, vb);
     }
   }
   return sum;

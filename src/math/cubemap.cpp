@@ -56,11 +56,14 @@ Vec3 cubemap_texel_direction(int n, CubemapTexel c) {
   return cubemap_direction({c.face, (c.i + 0.5) / n, (c.j + 0.5) / n});
 }
 
-double cubemap_texel_solid_angle(int n, int i, int j) {
-  const double u0 = 2.0 * i / n - 1.0, u1 = 2.0 * (i + 1) / n - 1.0;
-  const double v0 = 2.0 * j / n - 1.0, v1 = 2.0 * (j + 1) / n - 1.0;
+double cubemap_rect_solid_angle(double u0, double u1, double v0, double v1) {
   return area_element_integral(u1, v1) - area_element_integral(u0, v1) -
          area_element_integral(u1, v0) + area_element_integral(u0, v0);
+}
+
+double cubemap_texel_solid_angle(int n, int i, int j) {
+  return cubemap_rect_solid_angle(2.0 * i / n - 1.0, 2.0 * (i + 1) / n - 1.0, 2.0 * j / n - 1.0,
+                                  2.0 * (j + 1) / n - 1.0);
 }
 
 std::vector<double> cubemap_solid_angles(int n) {

@@ -55,6 +55,8 @@ constexpr CubemapTexel cubemap_texel_from_index(int n, std::size_t index) {
 Vec3 cubemap_direction(CubemapCoord c);
 // Unit direction of a texel centre.
 Vec3 cubemap_texel_direction(int n, CubemapTexel c);
+// Exact solid angle of the face rectangle [u0,u1]×[v0,v1] (u, v ∈ [−1, 1], any face).
+double cubemap_rect_solid_angle(double u0, double u1, double v0, double v1);
 // Exact solid angle of texel (i, j) (the same on every face).
 double cubemap_texel_solid_angle(int n, int i, int j);
 // Solid angles of one face's texels, index j·N + i. They sum to 4π over 6 faces.

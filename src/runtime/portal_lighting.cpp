@@ -6,7 +6,6 @@
 #include <map>
 
 #include "common/input_error.h"
-#include "math/cubemap.h"
 #include "math/sh.h"
 #include "runtime/relighter.h"
 
@@ -64,47 +63,34 @@ void update_portal_lighting(PortalLighting& lighting, const PortalTransferView& 
   inputs.tint = state.tint;
   inputs.frost_deg = state.frost_deg;
   inputs.exterior = exterior;
+  // The indirect weights are the SH of the shell's outward half: no light from behind the
+  // portal's plane can pass it (its direct transfer is zero), but in a band-limited projection
+  // of the whole shell a bright feature there — a sun behind the building, a bright map
+  // region — rings into the directions that do pass and lights the room through the indirect
+  // transfer (a map of high contrast through a window: floor error against the reference
+  // 4.4 % mean, 16 % worst unmasked; see docs/design-notes.md).
+  inputs.sh_outward_half = true;
+  const Shell& shell = lighting.shell;
   render_shell(inputs, {portal.centre, portal.outward}, portal.face_size, sh_order, lighting.shell,
                lighting.workspace);
-  prepare_shell_cubemap(portal.face_size, lighting.shell.cubemap, lighting.cubemap);
+  prepare_shell_cubemap(portal.face_size, shell.cubemap, lighting.cubemap);
   lighting.sharp_sun.reset();
-  const std::optional<SunDisc>& sun = environment.sun();
-  if (sun && lighting.shell.sun_in_shell && state.frost_deg == 0) {
-    // Take the disc's deposit (shell.h: ∫ L dω / Ω of the cell, times the tint) back out.
-    const int n = portal.face_size;
-    const CubemapTexel cell = cubemap_texel(n, sun->direction);
-    std::vector<Rgb> sky = lighting.shell.cubemap;
-    Rgb& value = sky[cubemap_texel_index(n, cell)];
-    const double deposit =
-        sun->integrated_luminance() / cubemap_texel_solid_angle(n, cell.i, cell.j);
-    value = Rgb{std::max(0.0, value.r - deposit * state.tint.r),
-                std::max(0.0, value.g - deposit * state.tint.g),
-                std::max(0.0, value.b - deposit * state.tint.b)};
-    prepare_shell_cubemap(n, sky, lighting.sky_cubemap);
-    lighting.sharp_sun = PortalSun{sun->direction, state.tint * sun->normal_illuminance};
-  } else {
-    lighting.sky_cubemap = lighting.cubemap;
+  if (shell.sun_in_shell && state.frost_deg == 0) {
+    // The same shell without the sun's deposit, for renderers that trace the sun per pixel.
+    lighting.sky_cells = shell.cubemap;
+    Rgb& value = lighting.sky_cells[shell.sun_texel];
+    value = Rgb{std::max(0.0, value.r - shell.sun_radiance.r),
+                std::max(0.0, value.g - shell.sun_radiance.g),
+                std::max(0.0, value.b - shell.sun_radiance.b)};
+    prepare_shell_cubemap(portal.face_size, lighting.sky_cells, lighting.sky_cubemap);
+    const SunDisc& sun = *environment.sun();
+    lighting.sharp_sun = PortalSun{sun.direction, state.tint * sun.normal_illuminance};
   }
-  // The indirect weights: the SH of the shell with the half behind the portal's plane set to
-  // zero. No light from there can pass the portal (its direct transfer is zero), but in a
-  // band-limited projection of the whole shell a bright feature there — a sun behind the
-  // building, a bright map region — rings into the directions that do pass and lights the
-  // room through the indirect transfer. Masked, the projection holds only light that can
-  // enter (a map of high contrast through a window: floor error against the reference 4.4 %
-  // mean, 16 % worst unmasked; see docs/design-notes.md).
-  const int n = portal.face_size;
-  lighting.masked = lighting.shell.cubemap;
-  for (std::size_t t = 0; t < lighting.masked.size(); ++t) {
-    if (dot(cubemap_texel_direction(n, cubemap_texel_from_index(n, t)), portal.outward) <= 0) {
-      lighting.masked[t] = Rgb{};
-    }
-  }
-  const std::vector<Rgb> sh = sh_project_cubemap(sh_order, n, lighting.masked);
   const auto k = static_cast<std::size_t>(sh_count(sh_order));
   lighting.weights.resize(3 * k);
   lighting.active = false;
   for (std::size_t b = 0; b < k; ++b) {
-    const Rgb c = sh[b];
+    const Rgb c = shell.sh[b];
     lighting.weights[3 * b] = static_cast<float>(c.r);
     lighting.weights[3 * b + 1] = static_cast<float>(c.g);
     lighting.weights[3 * b + 2] = static_cast<float>(c.b);

@@ -37,14 +37,14 @@ struct PortalLighting {
   Shell shell;
   ShellWorkspace workspace;
   ShellCubemap cubemap;  // the shell's cells and their per-face Haar transform
-  // The same without a sharp sun's cell deposit (equal to `cubemap` when there is none):
-  // direct light for renderers that add the sun per pixel.
+  // The same without a sharp sun's cell deposit, valid when sharp_sun is set: direct light
+  // for renderers that add the sun per pixel.
   ShellCubemap sky_cubemap;
+  std::vector<Rgb> sky_cells;  // scratch: its cells
   // Set when the shell holds an unoccluded sun behind clear (unfrosted) glass; frosted
   // glass spreads the sun over the shell and it stays in the cubemap.
   std::optional<PortalSun> sharp_sun;
   std::vector<float> weights;  // K × 3: SH of the shell's outward half (indirect weights)
-  std::vector<Rgb> masked;     // scratch: the shell with its inward half zeroed
   bool active = false;         // any light at all
   double seconds = 0;          // wall time of the last update
 };

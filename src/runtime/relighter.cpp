@@ -206,7 +206,7 @@ void Relighter::add_portals(std::size_t b, bool include_direct, float (&acc)[3][
     const PortalLighting& l = portals_[p];
     if (!l.active) continue;
     const PortalTransferView& v = transfer_.portals[p];
-    const ShellCubemap& shell = include_direct ? l.cubemap : l.sky_cubemap;
+    const ShellCubemap& shell = include_direct || !l.sharp_sun ? l.cubemap : l.sky_cubemap;
     for (std::size_t i = 0; i < count; ++i) {
       const std::uint64_t at = v.offsets[base + i];
       const Rgb e =

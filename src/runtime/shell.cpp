@@ -59,8 +59,14 @@ void render_shell(const ShellInputs& inputs, const PortalFrame& portal, int face
                            sun ? &*sun : nullptr, shell.cubemap);
     if (sun) sun_seen = sun_visible(scene, portal.centre, sun->direction);
   }
-  if (sun && sun_seen) deposit_sun(*sun, face_size, shell.cubemap);
   shell.sun_in_shell = sun && sun_seen;
+  shell.sun_texel = 0;
+  shell.sun_radiance = Rgb{};
+  if (shell.sun_in_shell) {
+    const SunDeposit d = deposit_sun(*sun, face_size, shell.cubemap);
+    shell.sun_texel = d.texel;
+    shell.sun_radiance = Rgb{d.radiance, d.radiance, d.radiance} * inputs.tint;
+  }
 
   // 3. Frosted glass.
   if (inputs.frost_deg > 0) {
@@ -72,9 +78,19 @@ void render_shell(const ShellInputs& inputs, const PortalFrame& portal, int face
   // 4. Tint.
   for (Rgb& l : shell.cubemap) l = l * inputs.tint;
 
-  // 5. SH of the final cubemap.
+  // 5. SH of the final cubemap, or of its outward half.
   shell.sh_order = sh_order;
-  shell.sh = sh_project_cubemap(sh_order, face_size, std::span<const Rgb>(shell.cubemap));
+  if (!inputs.sh_outward_half) {
+    shell.sh = sh_project_cubemap(sh_order, face_size, std::span<const Rgb>(shell.cubemap));
+    return;
+  }
+  std::vector<Rgb>& half = workspace.sh_scratch;
+  half = shell.cubemap;
+  for (std::size_t t = 0; t < half.size(); ++t) {
+    const Vec3 dir = cubemap_texel_direction(face_size, cubemap_texel_from_index(face_size, t));
+    if (dot(dir, portal.outward) <= 0) half[t] = Rgb{};
+  }
+  shell.sh = sh_project_cubemap(sh_order, face_size, std::span<const Rgb>(half));
 }
 
 Shell render_shell(const ShellInputs& inputs, const PortalFrame& portal, int face_size,

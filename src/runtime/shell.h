@@ -18,8 +18,9 @@
 //  3. Frost (runtime/shell_frost.h): flux-preserving von Mises–Fisher blur in the portal frame.
 //  4. Tint: every texel × tint, exactly (the last change to the cubemap, so cubemap[i] is
 //     bit-for-bit untinted[i]·tint; tint and frost commute, being linear per channel).
-//  5. SH: math/cubemap.h sh_project_cubemap of the final cubemap, so both representations
-//     agree to the projection's quadrature (c_lm = Σ L·Y_lm(centre)·Ω).
+//  5. SH: math/cubemap.h sh_project_cubemap of the final cubemap (or of its outward half, with
+//     ShellInputs::sh_outward_half), so both representations agree to the projection's
+//     quadrature (c_lm = Σ L·Y_lm(centre)·Ω).
 // A pure function of its inputs. ShellWorkspace keeps what is reusable between calls (the frost
 // plan, which depends only on face size, outward normal and frost width).
 #pragma once
@@ -42,14 +43,23 @@ struct ShellInputs {
                          // (runtime/shell_frost.h), 0 = clear
   std::span<const ExteriorObject> exterior;  // dynamic exterior geometry, may be empty
   int exterior_subrays = 3;                  // k: k×k sub-rays per texel for the exterior
+  // Project only the half of the shell in front of the portal (ω · outward > 0) onto SH: the
+  // rest cannot pass the portal, and in a band-limited projection a bright feature there
+  // rings into directions that do (the relighter's indirect weights use this).
+  bool sh_outward_half = false;
 };
 
 struct Shell {
   int face_size = 0;
   std::vector<Rgb> cubemap;  // 6·N² per-texel radiances, cd/m² (math/cubemap.h layout)
   int sh_order = 0;
-  std::vector<Rgb> sh;              // sh_order² coefficients c_lm of the cubemap (math/sh.h)
-  bool sun_in_shell = false;        // the sun disc was deposited (a sun exists and is unoccluded)
+  std::vector<Rgb> sh;        // sh_order² coefficients c_lm of the cubemap (math/sh.h), or
+                              // of its outward half (ShellInputs::sh_outward_half)
+  bool sun_in_shell = false;  // the sun disc was deposited (a sun exists and is unoccluded)
+  // What the sun added to cubemap[sun_texel], tint included (when sun_in_shell); frost then
+  // spreads it over the texels around.
+  std::size_t sun_texel = 0;
+  Rgb sun_radiance;
   std::size_t exterior_texels = 0;  // texels any exterior sub-ray hit
 };
 
@@ -57,6 +67,7 @@ struct Shell {
 struct ShellWorkspace {
   FrostPlan frost;
   std::vector<Rgb> frost_scratch;
+  std::vector<Rgb> sh_scratch;  // the outward half, for sh_outward_half
 };
 
 // Renders the shell into `shell`, reusing its storage and the workspace. face_size ≥ 1 (32 is

@@ -15,12 +15,14 @@ Environment environment_without_sun(const Environment& env) {
   return out;
 }
 
-void deposit_sun(const SunDisc& sun, int face_size, std::span<Rgb> cubemap) {
+SunDeposit deposit_sun(const SunDisc& sun, int face_size, std::span<Rgb> cubemap) {
   if (face_size < 1 || cubemap.size() != cubemap_texel_count(face_size))
     throw std::invalid_argument("deposit_sun: cubemap must hold 6·N² texels");
   const CubemapTexel t = cubemap_texel(face_size, sun.direction);
   const double l = sun.integrated_luminance() / cubemap_texel_solid_angle(face_size, t.i, t.j);
-  cubemap[cubemap_texel_index(face_size, t)] += Rgb{l, l, l};
+  const std::size_t texel = cubemap_texel_index(face_size, t);
+  cubemap[texel] += Rgb{l, l, l};
+  return {texel, l};
 }
 
 Rgb IrradianceSh::irradiance(Vec3 n) const {

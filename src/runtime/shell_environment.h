@@ -20,6 +20,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <span>
 
 #include "light/environment.h"
@@ -31,9 +32,15 @@ namespace relight {
 // The environment without its sun disc (a copy; the same environment for maps and uniform).
 Environment environment_without_sun(const Environment& env);
 
+// What deposit_sun added: the radiance, to the texel at index `texel`.
+struct SunDeposit {
+  std::size_t texel = 0;
+  double radiance = 0;
+};
+
 // Adds the disc's ∫ L dω / Ω_texel (every channel; the sun is grey) to the texel containing its
 // centre; cubemap holds 6·N² texels (math/cubemap.h layout).
-void deposit_sun(const SunDisc& sun, int face_size, std::span<Rgb> cubemap);
+SunDeposit deposit_sun(const SunDisc& sun, int face_size, std::span<Rgb> cubemap);
 
 // Irradiance E(n) on a plane of unit normal n from an environment's l ≤ 2 SH (Ramamoorthi &
 // Hanrahan 2001).

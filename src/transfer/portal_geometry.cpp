@@ -25,7 +25,6 @@ std::vector<PortalGeometry> portal_geometry(const Scene& scene, const PreparedMe
     const double area = 0.5 * length(face);
     PortalGeometry& g = portals[static_cast<std::size_t>(p)];
     g.triangles.push_back(t);
-    g.areas.push_back(area);
     g.area += area;
     g.centre = g.centre + (a + b + c) * (area / 3.0);
     weighted_normal[static_cast<std::size_t>(p)] =

@@ -1,5 +1,5 @@
 // A portal as the precompute and the run time see it (the interior-scene paper, Yue et al.
-// 2009, §3.1): the prepared-mesh triangles of its window materials, their areas, the
+// 2009, §3.1): the prepared-mesh triangles of its window materials, its area, the
 // area-weighted centre (the centre of the portal's shell), a unit normal and the largest
 // distance between two of its points (l in the paper's §6 criterion l/(2r) < θ_M).
 #pragma once
@@ -17,10 +17,9 @@ namespace relight {
 struct PortalGeometry {
   std::string name;
   std::vector<std::uint32_t> triangles;  // prepared-mesh triangle ids
-  std::vector<double> areas;             // per triangle, m²
   double area = 0;                       // m²
   Vec3 centre;                           // area-weighted centroid
-  Vec3 normal;  // unit, area-weighted geometric normal (front side); (0,0,0) if they cancel
+  Vec3 normal;          // unit, area-weighted geometric normal (front side); (0,0,0) if they cancel
   double diameter = 0;  // m, largest distance between two vertices
 };
 
