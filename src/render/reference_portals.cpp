@@ -103,16 +103,13 @@ ReferencePortals make_reference_portals(const Scene& scene, const PreparedMesh& 
                                 " portals");
   }
   ReferencePortals out;
-  std::vector<std::int32_t> material_portal(scene.materials.size(), kNoPortal);
+  const std::vector<int> material_portal = scene.portal_of_material();  // −1 = kNoPortal
   for (std::size_t p = 0; p < scene.portals.size(); ++p) {
-    for (std::uint32_t m : scene.portals[p].materials) {
-      material_portal.at(m) = static_cast<std::int32_t>(p);
-    }
     out.portals.push_back({scene.portals[p].name, std::move(environments[p]), {}, {}});
   }
   out.triangle_portal.reserve(mesh.triangles.size());
   for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
-    const std::int32_t p = material_portal.at(mesh.triangle_material[t]);
+    const auto p = static_cast<std::int32_t>(material_portal.at(mesh.triangle_material[t]));
     out.triangle_portal.push_back(p);
     if (p == kNoPortal) continue;
     const double area = triangle_area(mesh, t);

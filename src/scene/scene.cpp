@@ -18,6 +18,14 @@ std::size_t Scene::sensor_count() const {
   return n;
 }
 
+std::vector<int> Scene::portal_of_material() const {
+  std::vector<int> portal(materials.size(), -1);
+  for (std::size_t p = 0; p < portals.size(); ++p) {
+    for (std::uint32_t m : portals[p].materials) portal.at(m) = static_cast<int>(p);
+  }
+  return portal;
+}
+
 const Camera* Scene::find_camera(const std::string& name) const {
   for (const Camera& c : cameras) {
     if (c.name == name) return &c;

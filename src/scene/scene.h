@@ -57,7 +57,7 @@ struct Portal {
   std::string name;
   std::vector<std::uint32_t> materials;  // indices into Scene::materials, all "portal": true
   EnvironmentSpec environment;
-  Rgb tint{1, 1, 1};    // window glass colour (transmittance per channel)
+  Rgb tint{1, 1, 1};     // window glass colour (transmittance per channel)
   double frost_deg = 0;  // frosted glass: angular width of the blur of the shell
   // The shell-size check of the interior-scene paper §6: the nearest exterior object is
   // `exterior_distance` m away (0: only sky, no check) and the directional error l/(2r) may
@@ -119,6 +119,9 @@ struct Scene {
 
   Bounds bounds() const;
   std::size_t sensor_count() const;
+  // Per material: the index of the portal that lists it, or −1 (opaque, or window glass that
+  // no portal lists).
+  std::vector<int> portal_of_material() const;
   const Camera* find_camera(const std::string& name) const;
 };
 

@@ -9,12 +9,9 @@
 namespace relight {
 
 std::vector<PortalGeometry> portal_geometry(const Scene& scene, const PreparedMesh& mesh) {
-  std::vector<int> portal_of_material(scene.materials.size(), -1);
+  const std::vector<int> portal_of_material = scene.portal_of_material();
   std::vector<PortalGeometry> portals(scene.portals.size());
-  for (std::size_t p = 0; p < scene.portals.size(); ++p) {
-    portals[p].name = scene.portals[p].name;
-    for (std::uint32_t m : scene.portals[p].materials) portal_of_material[m] = static_cast<int>(p);
-  }
+  for (std::size_t p = 0; p < scene.portals.size(); ++p) portals[p].name = scene.portals[p].name;
   std::vector<Vec3> weighted_normal(portals.size(), Vec3{0, 0, 0});
   for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
     const int p = portal_of_material[mesh.triangle_material[t]];

@@ -29,17 +29,16 @@ Precomputed precompute_transfer(const Scene& scene, const PrecomputeOptions& opt
   auto start = Clock::now();
   out.mesh = prepare_scene_mesh(scene);
   out.receivers = make_receivers(scene, out.mesh);
-  std::vector<std::uint32_t> material_portal(scene.materials.size(), 0);
-  for (std::size_t m = 0; m < scene.materials.size(); ++m) {
-    if (scene.materials[m].portal) material_portal[m] = kGlassOutsidePortals;
-  }
-  for (std::size_t p = 0; p < scene.portals.size(); ++p) {
-    for (std::uint32_t m : scene.portals[p].materials) {
-      material_portal[m] = static_cast<std::uint32_t>(p + 1);
-    }
-  }
+  const std::vector<int> portal_of_material = scene.portal_of_material();
   for (std::uint32_t m : out.mesh.triangle_material) {
-    out.triangle_portal.push_back(material_portal.at(m));
+    const int p = portal_of_material.at(m);
+    std::uint32_t code = 0;  // opaque
+    if (p >= 0) {
+      code = static_cast<std::uint32_t>(p + 1);
+    } else if (scene.materials[m].portal) {
+      code = kGlassOutsidePortals;
+    }
+    out.triangle_portal.push_back(code);
   }
   const TracedScene traced = build_traced_scene(out.mesh, scene.materials);
   out.phases.push_back({"prepare", seconds_since(start), 0});
