@@ -9,6 +9,7 @@
 
 #include "common/input_error.h"
 #include "scene/mesh_import.h"
+#include "support/mesh_import_error.h"
 
 namespace relight {
 namespace {
@@ -35,14 +36,8 @@ class ObjImport : public ::testing::Test {
 
   // The InputError message of importing `text` as an OBJ file.
   std::string error_of(const std::string& text) const {
-    const fs::path path = write("broken.obj", text);
-    try {
-      import_mesh(path);
-    } catch (const InputError& e) {
-      return e.what();
-    }
-    ADD_FAILURE() << "no InputError for:\n" << text;
-    return {};
+    SCOPED_TRACE(text);
+    return testing::mesh_import_error(write("broken.obj", text));
   }
 
   std::string at(int line) const {

@@ -16,6 +16,7 @@
 
 #include "common/input_error.h"
 #include "scene/mesh_import.h"
+#include "support/mesh_import_error.h"
 
 namespace relight {
 namespace {
@@ -50,15 +51,7 @@ class PlyImport : public ::testing::Test {
     return dir_.write(name, bytes);
   }
 
-  std::string error_of(const fs::path& path) const {
-    try {
-      import_mesh(path);
-    } catch (const InputError& e) {
-      return e.what();
-    }
-    ADD_FAILURE() << "no InputError for " << path;
-    return {};
-  }
+  std::string error_of(const fs::path& path) const { return testing::mesh_import_error(path); }
 
   testing::TempDir dir_;
 };
