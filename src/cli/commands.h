@@ -20,5 +20,6 @@ void add_render_command(CLI::App& app, Action& action);
 void add_probe_command(CLI::App& app, Action& action);
 void add_bench_command(CLI::App& app, Action& action);
 void add_analyze_command(CLI::App& app, Action& action);
+void add_serve_command(CLI::App& app, Action& action);
 
 }  // namespace relight

@@ -3,7 +3,8 @@
 // unchanged), relights it under two lighting states written as state files and under a
 // clear day through its south window at three times (images side by side), renders and
 // probes each, and says where the files are. `--reference` also renders the same
-// room with the independent path tracer for comparison.
+// room with the independent path tracer for comparison. Then it serves the studio on the room
+// (relight serve, docs/studio.md) and prints the URL; `--no-serve` ends after the files.
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -15,6 +16,7 @@
 #include "cli/precompute_run.h"
 #include "cli/reference_run.h"
 #include "cli/relit_scene.h"
+#include "cli/serve_run.h"
 #include "common/atomic_file.h"
 #include "common/input_error.h"
 #include "render/sensor_report.h"
@@ -32,6 +34,8 @@ struct DemoArgs {
   bool reference = false;
   int spp = 32;
   bool progress = true;
+  bool serve = true;
+  StudioOptions studio;
 };
 
 // Two light scenes a designer might set up: a dim warm evening and a bright work light
@@ -181,7 +185,9 @@ int run_demo(const DemoArgs& args) {
   }
   std::cout << "try: relight render " << rlt.string() << " --state " << (dir / "work.json").string()
             << " --false-color lux -o my-view.png\n";
-  return 0;
+  if (!args.serve) return 0;
+  std::cout << "\nthe studio: design the light of this room in a browser (docs/studio.md)\n";
+  return serve_studio(rlt, args.studio);
 }
 
 }  // namespace
@@ -201,6 +207,8 @@ void add_demo_command(CLI::App& app, Action& action) {
       ->check(CLI::Range(1, 1 << 20))
       ->capture_default_str();
   cmd->add_flag("!--no-progress", args->progress, "no progress bars");
+  cmd->add_flag("!--no-serve", args->serve, "end after writing the files (batch use)");
+  add_studio_address_options(*cmd, args->studio);
   cmd->callback([args, &action] { action = [args] { return run_demo(*args); }; });
 }
 

@@ -24,6 +24,7 @@ constexpr std::uint32_t kMeshNormals = rlt_fourcc("MNRM");
 constexpr std::uint32_t kVertexAlbedo = rlt_fourcc("MALB");
 constexpr std::uint32_t kTriangles = rlt_fourcc("MTRI");
 constexpr std::uint32_t kPortalTriangles = rlt_fourcc("MPRT");
+constexpr std::uint32_t kTriangleMaterials = rlt_fourcc("MMAT");  // optional (older files lack it)
 
 // Per-luminaire sections: two type characters, then the luminaire index in the upper
 // 16 bits ("DX" + j: direction x, "DY", "DZ", "DF": direct factor, "TI": indirect SH
@@ -146,6 +147,7 @@ void write_transfer_file(const fs::path& file, const Precomputed& p, const Scene
   w.add_f32(kVertexAlbedo, "vertex albedo", albedo);
   w.add_u32(kTriangles, "triangles", triangles);
   w.add_u32(kPortalTriangles, "portal triangles", p.triangle_portal);
+  w.add_u32(kTriangleMaterials, "triangle materials", p.mesh.triangle_material);
   for (std::size_t j = 0; j < p.luminaires.size(); ++j) {
     const LuminaireTransfer& l = p.luminaires[j];
     w.add_f32(luminaire_section('D', 'X', j), section_name("direct dir x", j), l.direct.dir_x);
@@ -299,6 +301,14 @@ TransferFile open_transfer_file(const fs::path& file) {
       t.portal_of_triangle.push_back(glass - 1);
     }
     t.triangles.push_back(tri);
+  }
+  if (t.file.find_info(kTriangleMaterials)) {
+    const auto materials = t.file.view<std::uint32_t>(kTriangleMaterials);
+    if (materials.size() != t.triangles.size()) fail_input(where, "triangle materials: wrong count");
+    for (const std::uint32_t m : materials) {
+      if (m >= t.scene.materials.size()) fail_input(where, "a triangle refers to a missing material");
+    }
+    t.triangle_material.assign(materials.begin(), materials.end());
   }
 
   t.view.receivers = receivers;

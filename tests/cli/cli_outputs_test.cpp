@@ -86,7 +86,7 @@ TEST(CliOutputs, DemoWritesItsFilesAndSaysWhere) {
   TempDir dir;
   const auto out = dir.path() / "demo";
   const auto r = run_relight("demo -o '" + out.string() +
-                             "' --reference --spp 1 --width 48 --height 32 --no-progress");
+                             "' --reference --spp 1 --width 48 --height 32 --no-progress --no-serve");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   for (const char* f :
        {"demo-room.json", "demo-room.rlt", "evening.json", "work.json", "room-evening.png",
@@ -98,7 +98,7 @@ TEST(CliOutputs, DemoWritesItsFilesAndSaysWhere) {
   EXPECT_NE(r.out.find("bounces"), std::string::npos);
   // A second run reuses the precompute while the scene is unchanged.
   const auto again =
-      run_relight("demo -o '" + out.string() + "' --width 48 --height 32 --no-progress");
+      run_relight("demo -o '" + out.string() + "' --width 48 --height 32 --no-progress --no-serve");
   ASSERT_EQ(again.exit_code, 0) << again.err;
   EXPECT_NE(again.out.find("using the cached precompute"), std::string::npos) << again.out;
   // The scene the demo wrote is a valid scene file.

@@ -1,0 +1,121 @@
+#include "serve/studio_frames.h"
+
+#include <bit>
+#include <cstring>
+
+#include "math/vec3.h"
+#include "serve/half_float.h"
+
+namespace relight {
+
+static_assert(std::endian::native == std::endian::little,
+              "the studio protocol is little-endian; this encoder writes native order");
+
+namespace {
+
+template <typename T>
+void put(std::string& out, T value) {
+  char bytes[sizeof(T)];
+  std::memcpy(bytes, &value, sizeof(T));
+  out.append(bytes, sizeof(T));
+}
+
+void put_tag(std::string& out, const char (&tag)[5]) { out.append(tag, 4); }
+
+double photometric(const float* rgb) {
+  return luminance(Rgb{rgb[0], rgb[1], rgb[2]});
+}
+
+}  // namespace
+
+std::string encode_geometry(const TransferFile& t) {
+  const auto v = static_cast<std::uint32_t>(t.vertex_count);
+  const auto n = static_cast<std::uint32_t>(t.triangles.size());
+  std::string out;
+  out.reserve(16 + 24 * std::size_t{v} + 16 * std::size_t{n});
+  put_tag(out, "RLGE");
+  put(out, kStudioProtocolVersion);
+  put(out, v);
+  put(out, n);
+  for (std::size_t i = 0; i < v; ++i) {
+    const Vec3 p = t.positions[i];
+    put(out, static_cast<float>(p.x));
+    put(out, static_cast<float>(p.y));
+    put(out, static_cast<float>(p.z));
+  }
+  for (std::size_t i = 0; i < 3 * std::size_t{v}; ++i) put(out, t.vertex_albedo[i]);
+  for (const Triangle& tri : t.triangles) {
+    for (const std::uint32_t index : tri) put(out, index);
+  }
+  std::vector<std::uint32_t> code(n, 0);
+  for (std::size_t k = 0; k < t.portal_triangles.size(); ++k) {
+    code[t.portal_triangles[k]] = t.portal_of_triangle[k] + 1;
+  }
+  for (const std::uint32_t c : code) put(out, c);
+  return out;
+}
+
+std::vector<int> vertex_portals(const TransferFile& t) {
+  std::vector<int> portal(t.vertex_count, -1);
+  std::vector<bool> opaque(t.vertex_count, false);
+  for (const std::uint32_t i : t.opaque_triangles) {
+    for (const std::uint32_t v : t.triangles[i]) opaque[v] = true;
+  }
+  for (std::size_t k = 0; k < t.portal_triangles.size(); ++k) {
+    for (const std::uint32_t v : t.triangles[t.portal_triangles[k]]) {
+      if (!opaque[v]) portal[v] = static_cast<int>(t.portal_of_triangle[k]);
+    }
+  }
+  return portal;
+}
+
+void compute_frame_values(const TransferFile& t, std::span<const int> vertex_portal,
+                          std::span<const float> irradiance, std::span<const Rgb> glass_radiance,
+                          FrameValues& out) {
+  out.radiance.resize(3 * t.vertex_count);
+  out.illuminance.resize(t.vertex_count);
+  out.sensors.resize(t.sensor_count);
+  for (std::size_t v = 0; v < t.vertex_count; ++v) {
+    const float* e = &irradiance[3 * v];
+    float* l = &out.radiance[3 * v];
+    if (vertex_portal[v] >= 0) {
+      const Rgb g = glass_radiance[static_cast<std::size_t>(vertex_portal[v])];
+      l[0] = static_cast<float>(g.r);
+      l[1] = static_cast<float>(g.g);
+      l[2] = static_cast<float>(g.b);
+      out.illuminance[v] = 0;
+      continue;
+    }
+    for (int c = 0; c < 3; ++c) {
+      l[c] = static_cast<float>(t.vertex_albedo[3 * v + c] * e[c] / kPi);
+    }
+    out.illuminance[v] = static_cast<float>(photometric(e));
+  }
+  for (std::size_t s = 0; s < t.sensor_count; ++s) {
+    out.sensors[s] = static_cast<float>(photometric(&irradiance[3 * (t.vertex_count + s)]));
+  }
+}
+
+std::string encode_frame(std::uint32_t frame_number, std::optional<std::uint32_t> seq,
+                         float milliseconds, const FrameValues& values) {
+  const auto v = static_cast<std::uint32_t>(values.illuminance.size());
+  const auto s = static_cast<std::uint32_t>(values.sensors.size());
+  std::string out;
+  out.reserve(24 + 8 * std::size_t{v} + 4 * std::size_t{s});
+  put_tag(out, "RLFR");
+  put(out, frame_number);
+  put(out, seq.value_or(kNoSeq));
+  put(out, v);
+  put(out, s);
+  put(out, milliseconds);
+  for (std::size_t i = 0; i < v; ++i) {
+    put(out, float_to_half(values.radiance[3 * i]));
+    put(out, float_to_half(values.radiance[3 * i + 1]));
+    put(out, float_to_half(values.radiance[3 * i + 2]));
+    put(out, float_to_half(values.illuminance[i]));
+  }
+  for (const float e : values.sensors) put(out, e);
+  return out;
+}
+
+}  // namespace relight

@@ -1,0 +1,44 @@
+// The studio's binary messages (docs/studio-protocol.md): the geometry `RLGE` once per
+// connection and a radiance frame `RLFR` per state change. A frame carries per vertex what a
+// camera sees of the diffuse surface, L = ρ·E/π per channel (cd/m²), and the illuminance
+// Y(E) (lx) for the false-colour view, as half floats, then the sensors' own readings as
+// floats. Little-endian, as the protocol page lays out.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "math/rgb.h"
+#include "runtime/transfer_file.h"
+
+namespace relight {
+
+inline constexpr std::uint32_t kStudioProtocolVersion = 1;
+inline constexpr std::uint32_t kNoSeq = 0xFFFFFFFFu;
+
+std::string encode_geometry(const TransferFile& transfer);
+
+// Per vertex: the portal whose glass it belongs to, or −1 (a vertex any opaque triangle uses
+// is opaque).
+std::vector<int> vertex_portals(const TransferFile& transfer);
+
+// What one frame shows, before encoding.
+struct FrameValues {
+  std::vector<float> radiance;     // 3 per vertex, cd/m²
+  std::vector<float> illuminance;  // 1 per vertex, lx
+  std::vector<float> sensors;      // 1 per sensor point, lx
+};
+
+// `irradiance`: 3 per receiver (vertices, then sensors) as the Relighter writes it;
+// `glass_radiance`: per portal, what its glass vertices show (the shell's mean radiance).
+void compute_frame_values(const TransferFile& transfer, std::span<const int> vertex_portal,
+                          std::span<const float> irradiance, std::span<const Rgb> glass_radiance,
+                          FrameValues& out);
+
+std::string encode_frame(std::uint32_t frame_number, std::optional<std::uint32_t> seq,
+                         float milliseconds, const FrameValues& values);
+
+}  // namespace relight

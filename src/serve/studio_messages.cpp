@@ -1,0 +1,184 @@
+#include "serve/studio_messages.h"
+
+#include "common/input_error.h"
+#include "scene/json_node.h"
+
+namespace relight {
+
+namespace {
+
+nlohmann::json vec3_json(Vec3 v) { return {v.x, v.y, v.z}; }
+nlohmann::json rgb_json(Rgb c) { return {c.r, c.g, c.b}; }
+
+std::optional<std::uint32_t> read_seq(const JsonNode& root) {
+  const auto s = root.find("seq");
+  if (!s || s->value().is_null()) return std::nullopt;
+  if (!s->value().is_number_unsigned() || s->value().get<std::uint64_t>() >= 0xFFFFFFFFu) {
+    s->fail("expected a non-negative integer below 4294967295");
+  }
+  return s->value().get<std::uint32_t>();
+}
+
+std::size_t luminaire_named(const Scene& scene, const JsonNode& node) {
+  const std::string name = node.string();
+  for (std::size_t j = 0; j < scene.luminaires.size(); ++j) {
+    if (scene.luminaires[j].name == name) return j;
+  }
+  node.fail("no luminaire named \"" + name + "\" in the scene");
+}
+
+}  // namespace
+
+nlohmann::json seq_json(std::optional<std::uint32_t> seq) {
+  return seq ? nlohmann::json(*seq) : nlohmann::json(nullptr);
+}
+
+ClientMessage parse_client_message(const std::string& text, const Scene& scene,
+                                   std::optional<std::uint32_t>& seq) {
+  const nlohmann::json document = parse_json_text(text, "message");
+  const JsonNode root(document, "message", "/");
+  if (!root.is_object()) root.fail("expected a JSON object");
+  ClientMessage m;
+  if (!root.has("type")) {  // a bare lighting state document
+    m.request = StateRequest{document};
+    return m;
+  }
+  m.seq = seq = read_seq(root);
+  const std::string type = root.at("type").string();
+  if (type == "state") {
+    root.expect_keys({"type", "seq", "state"});
+    const JsonNode state = root.at("state");
+    if (!state.is_object()) state.fail("expected a lighting state object");
+    m.request = StateRequest{state.value()};
+  } else if (type == "pick") {
+    root.expect_keys({"type", "seq", "origin", "direction"});
+    m.request = PickRequest{root.at("origin").vec3(), root.at("direction").direction()};
+  } else if (type == "distribution") {
+    root.expect_keys({"type", "seq", "luminaire", "samples"});
+    DistributionRequest r;
+    r.luminaire = luminaire_named(scene, root.at("luminaire"));
+    if (const auto s = root.find("samples")) r.samples = s->integer_in(2, 1801);
+    m.request = r;
+  } else if (type == "ping") {
+    root.expect_keys({"type", "seq"});
+    m.request = PingRequest{};
+  } else {
+    root.at("type").fail("unknown message type \"" + type +
+                         "\" (expected state, pick, distribution or ping)");
+  }
+  return m;
+}
+
+nlohmann::json hello_message(const TransferFile& t, const std::string& scene_file_name,
+                             const nlohmann::json& state) {
+  const Scene& scene = t.scene;
+  const nlohmann::json& scene_json = t.metadata.at("scene");
+  const Bounds b = t.bounds();
+  nlohmann::json materials = nlohmann::json::array();
+  const std::vector<int> portal_of = scene.portal_of_material();
+  for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+    const Material& m = scene.materials[i];
+    materials.push_back(
+        {{"name", m.name},
+         {"albedo", rgb_json(m.albedo)},
+         {"portal", portal_of[i] >= 0 ? nlohmann::json(scene.portals[static_cast<std::size_t>(
+                                                           portal_of[i])].name)
+                                      : nlohmann::json(nullptr)}});
+  }
+  nlohmann::json luminaires = nlohmann::json::array();
+  for (std::size_t j = 0; j < scene.luminaires.size(); ++j) {
+    const Luminaire& l = scene.luminaires[j];
+    luminaires.push_back({{"name", l.name},
+                          {"position", vec3_json(l.position)},
+                          {"aim", vec3_json(l.aim)},
+                          {"c0", vec3_json(l.c0)},
+                          {"color", rgb_json(l.color)},
+                          {"dimmer", l.dimmer},
+                          {"size", vec3_json(l.size)},
+                          {"distribution", scene_json.at("luminaires").at(j).at("distribution")}});
+  }
+  nlohmann::json portals = nlohmann::json::array();
+  for (std::size_t p = 0; p < scene.portals.size(); ++p) {
+    const Portal& portal = scene.portals[p];
+    const PortalTransferView& v = t.view.portals.at(p);
+    portals.push_back({{"name", portal.name},
+                       {"centre", vec3_json(v.centre)},
+                       {"outward", vec3_json(v.outward)},
+                       {"diameter", v.diameter},
+                       {"environment", scene_json.at("portals").at(p).at("environment")},
+                       {"tint", rgb_json(portal.tint)},
+                       {"frost_deg", portal.frost_deg}});
+  }
+  nlohmann::json exterior = nlohmann::json::array();
+  for (const ExteriorGeometry& x : scene.exterior) {
+    if (!x.name.empty()) exterior.push_back(x.name);
+  }
+  nlohmann::json cameras = nlohmann::json::array();
+  for (const Camera& c : scene.cameras) {
+    cameras.push_back({{"name", c.name},
+                       {"eye", vec3_json(c.eye)},
+                       {"target", vec3_json(c.target)},
+                       {"up", vec3_json(c.up)},
+                       {"fov_deg", c.fov_deg}});
+  }
+  nlohmann::json sensors = nlohmann::json::array();
+  for (const SensorSet& s : scene.sensors) {
+    nlohmann::json points = nlohmann::json::array();
+    for (const Vec3 p : s.points) points.push_back(vec3_json(p));
+    sensors.push_back({{"name", s.name},
+                       {"normal", vec3_json(s.normal)},
+                       {"nu", s.nu},
+                       {"nv", s.nv},
+                       {"points", points}});
+  }
+  return {{"type", "hello"},
+          {"protocol", 1},
+          {"scene_file", scene_file_name},
+          {"vertices", t.vertex_count},
+          {"triangles", t.triangles.size()},
+          {"bounds", {{"min", vec3_json(b.min)}, {"max", vec3_json(b.max)}}},
+          {"materials", materials},
+          {"luminaires", luminaires},
+          {"portals", portals},
+          {"exterior", exterior},
+          {"cameras", cameras},
+          {"sensors", sensors},
+          {"sh_order", t.view.sh_order},
+          {"direct", t.view.direct_sh_mode ? "sh" : "exact"},
+          {"state", state}};
+}
+
+nlohmann::json error_message(std::optional<std::uint32_t> seq, const std::string& message) {
+  return {{"type", "error"}, {"seq", seq_json(seq)}, {"message", message}};
+}
+
+nlohmann::json distribution_message(std::optional<std::uint32_t> seq, const Luminaire& luminaire,
+                                    const DistributionSpec& spec,
+                                    const DistributionProfile& profile, int sh_order,
+                                    std::size_t incremental_updates) {
+  static constexpr const char* kPlanes[] = {"c0", "c90", "c180", "c270"};
+  static constexpr const char* kKinds[] = {"isotropic", "cosine_power", "curve", "ies", "ldt"};
+  const auto planes = [&](const std::array<std::vector<double>, 4>& values) {
+    nlohmann::json out = nlohmann::json::object();
+    for (std::size_t k = 0; k < 4; ++k) out[kPlanes[k]] = values[k];
+    return out;
+  };
+  nlohmann::json m = {{"type", "distribution"},
+                      {"seq", seq_json(seq)},
+                      {"luminaire", luminaire.name},
+                      {"kind", kKinds[static_cast<int>(spec.type)]},
+                      {"sh_order", sh_order},
+                      {"window", "sigma"},
+                      {"gamma_deg", profile.gamma_deg},
+                      {"exact", planes(profile.exact)},
+                      {"sh", planes(profile.sh)},
+                      {"sh_windowed", planes(profile.sh_windowed)},
+                      {"flux_lm", profile.flux_lm},
+                      {"incremental_updates", incremental_updates}};
+  if (spec.type == DistributionType::kCurve) {
+    m["control_points"] = {{"gamma_deg", spec.gamma_deg}, {"candela", spec.curve_candela}};
+  }
+  return m;
+}
+
+}  // namespace relight

@@ -1,0 +1,57 @@
+// The studio's text messages (docs/studio-protocol.md): the `hello` a client gets first, the
+// validation of what clients send, and the replies. Every malformed message becomes an
+// InputError naming the JSON path ("message:/origin: ..."), which the server turns into an
+// `error` reply; nothing a client sends can stop the server.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <variant>
+
+#include <nlohmann/json.hpp>
+
+#include "math/vec3.h"
+#include "runtime/distribution_profile.h"
+#include "runtime/transfer_file.h"
+
+namespace relight {
+
+inline constexpr int kDefaultProfileSamples = 181;
+
+struct StateRequest {
+  nlohmann::json document;  // the lighting state (docs/lighting-state.md)
+};
+struct PickRequest {
+  Vec3 origin, direction;  // direction normalised
+};
+struct DistributionRequest {
+  std::size_t luminaire = 0;
+  int samples = kDefaultProfileSamples;
+};
+struct PingRequest {};
+
+struct ClientMessage {
+  std::optional<std::uint32_t> seq;
+  std::variant<StateRequest, PickRequest, DistributionRequest, PingRequest> request;
+};
+
+// Throws InputError for malformed text; `seq` is set as soon as a readable one was found, so
+// the error reply can echo it.
+ClientMessage parse_client_message(const std::string& text, const Scene& scene,
+                                   std::optional<std::uint32_t>& seq);
+
+nlohmann::json hello_message(const TransferFile& transfer, const std::string& scene_file_name,
+                             const nlohmann::json& state);
+
+nlohmann::json error_message(std::optional<std::uint32_t> seq, const std::string& message);
+
+nlohmann::json distribution_message(std::optional<std::uint32_t> seq, const Luminaire& luminaire,
+                                    const DistributionSpec& spec,
+                                    const DistributionProfile& profile, int sh_order,
+                                    std::size_t incremental_updates);
+
+// A seq as JSON: the number, or null.
+nlohmann::json seq_json(std::optional<std::uint32_t> seq);
+
+}  // namespace relight

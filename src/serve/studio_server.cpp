@@ -1,0 +1,353 @@
+#include "serve/studio_server.h"
+
+#include <chrono>
+#include <condition_variable>
+#include <mutex>
+#include <optional>
+#include <set>
+#include <stdexcept>
+#include <thread>
+
+#include "cli/relit_scene.h"
+#include "common/input_error.h"
+#include "light/distribution.h"
+#include "serve/static_files.h"
+#include "serve/studio_frames.h"
+#include "serve/studio_messages.h"
+#include "serve/transport/websocket_server.h"
+#include "serve/window_view.h"
+#include "trace/ray_tracer.h"
+
+namespace relight {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// A validated state waiting for the worker; a newer one replaces it (coalescing).
+struct PendingState {
+  LightingState state;
+  nlohmann::json document;
+  std::optional<std::uint32_t> seq;
+  ConnectionId client = 0;
+};
+
+// What the latest frame showed, read by the network thread (new clients, picks, profiles).
+struct Shown {
+  std::shared_ptr<const std::string> frame;
+  std::shared_ptr<const FrameValues> values;
+  nlohmann::json document = nlohmann::json::object();
+  LightingState state;
+  std::uint32_t frame_number = 0;
+};
+
+std::vector<std::uint32_t> all_triangle_ids(std::size_t n) {
+  std::vector<std::uint32_t> ids(n);
+  for (std::size_t i = 0; i < n; ++i) ids[i] = static_cast<std::uint32_t>(i);
+  return ids;
+}
+
+nlohmann::json vec3_json(Vec3 v) { return {v.x, v.y, v.z}; }
+
+// The distribution a state document gives luminaire `name`, or null when it keeps the scene's.
+nlohmann::json named_distribution(const nlohmann::json& document, const std::string& name) {
+  const auto lums = document.find("luminaires");
+  if (lums == document.end() || !lums->is_object()) return nullptr;
+  const auto l = lums->find(name);
+  if (l == lums->end() || !l->is_object()) return nullptr;
+  const auto d = l->find("distribution");
+  return d == l->end() ? nlohmann::json(nullptr) : *d;
+}
+
+}  // namespace
+
+struct StudioServer::Impl {
+  fs::path rlt;
+  StudioOptions options;
+  fs::path client_folder;
+  RelitScene relit;
+  std::vector<int> vertex_portal;
+  std::string geometry;
+  std::unique_ptr<RayTracer> picker;
+  std::unique_ptr<WebSocketServer> transport;
+
+  std::mutex mutex;  // guards everything below
+  std::condition_variable wake;
+  std::optional<PendingState> pending;
+  bool quit = false;
+  Shown shown;
+  std::set<ConnectionId> clients;
+  std::size_t incremental_updates = 0;
+
+  std::thread worker;
+
+  const TransferFile& transfer() const { return *relit.transfer; }
+  const Scene& scene() const { return relit.transfer->scene; }
+
+  void send_json(ConnectionId to, const nlohmann::json& message) {
+    transport->send(to, message.dump(), false);
+  }
+
+  // Relights with `state` (the worker's relighter) and makes the frame.
+  std::shared_ptr<const FrameValues> relight_values(const LightingState& state) {
+    relit.apply(state);
+    std::vector<Rgb> glass;
+    for (std::size_t p = 0; p < scene().portals.size(); ++p) {
+      glass.push_back(window_view_radiance(relit.relighter->shell(p),
+                                           transfer().view.portals[p].outward));
+    }
+    auto values = std::make_shared<FrameValues>();
+    compute_frame_values(transfer(), vertex_portal, relit.irradiance, glass, *values);
+    return values;
+  }
+
+  void work() {
+    LightingState last_good = shown.state;
+    while (true) {
+      PendingState p;
+      {
+        std::unique_lock lock(mutex);
+        wake.wait(lock, [&] { return quit || pending.has_value(); });
+        if (quit) return;
+        p = std::move(*pending);
+        pending.reset();
+      }
+      const auto start = std::chrono::steady_clock::now();
+      std::shared_ptr<const FrameValues> values;
+      try {
+        values = relight_values(p.state);
+      } catch (const std::exception& e) {  // e.g. a map file that cannot be read
+        send_json(p.client, error_message(p.seq, e.what()));
+        try {
+          relit.apply(last_good);
+        } catch (const std::exception&) {  // it lit before: cannot fail again
+        }
+        continue;
+      }
+      last_good = p.state;
+      const std::chrono::duration<float, std::milli> ms = std::chrono::steady_clock::now() - start;
+      std::vector<nlohmann::json> profiles;
+      std::set<ConnectionId> to;
+      nlohmann::json state_message;
+      std::shared_ptr<const std::string> frame;
+      {
+        std::lock_guard lock(mutex);
+        const std::uint32_t number = shown.frame_number + 1;
+        frame = std::make_shared<const std::string>(encode_frame(number, p.seq, ms.count(), *values));
+        incremental_updates = relit.relighter->incremental_curve_updates();
+        for (std::size_t j = 0; j < scene().luminaires.size(); ++j) {
+          const std::string& name = scene().luminaires[j].name;
+          if (named_distribution(p.document, name) != named_distribution(shown.document, name)) {
+            profiles.push_back(profile_message(std::nullopt, j, p.state));
+          }
+        }
+        shown = {frame, values, p.document, p.state, number};
+        state_message = {{"type", "state"},
+                         {"seq", seq_json(p.seq)},
+                         {"client", p.client},
+                         {"frame", number},
+                         {"state", p.document}};
+        to = clients;
+      }
+      const std::string state_text = state_message.dump();
+      for (const ConnectionId c : to) {
+        transport->send(c, state_text, false);
+        transport->send(c, *frame, true, true);
+        for (const nlohmann::json& m : profiles) send_json(c, m);
+      }
+    }
+  }
+
+  nlohmann::json profile_message(std::optional<std::uint32_t> seq, std::size_t j,
+                                 const LightingState& state) const {
+    const DistributionSpec& spec = state.luminaires.at(j).distribution;
+    const int order = transfer().view.sh_order;
+    const DistributionProfile profile =
+        distribution_profile(load_distribution(spec), order, ShWindow::kSigma,
+                             kDefaultProfileSamples);
+    return distribution_message(seq, scene().luminaires[j], spec, profile, order,
+                                incremental_updates);
+  }
+
+  void on_open(ConnectionId id) {
+    nlohmann::json hello;
+    std::shared_ptr<const std::string> frame;
+    {
+      std::lock_guard lock(mutex);
+      clients.insert(id);
+      hello = hello_message(transfer(), rlt.filename().string(), shown.document);
+      frame = shown.frame;
+    }
+    send_json(id, hello);
+    transport->send(id, geometry, true);
+    transport->send(id, *frame, true);
+  }
+
+  void on_close(ConnectionId id) {
+    std::lock_guard lock(mutex);
+    clients.erase(id);
+  }
+
+  void on_message(ConnectionId id, const std::string& payload, bool binary) {
+    std::optional<std::uint32_t> seq;
+    try {
+      if (binary) fail_input("message", "binary messages are not part of the protocol (send JSON)");
+      ClientMessage m = parse_client_message(payload, scene(), seq);
+      std::visit([&](auto& request) { handle(id, m.seq, request); }, m.request);
+    } catch (const InputError& e) {
+      send_json(id, error_message(seq, e.what()));
+    } catch (const std::exception& e) {
+      send_json(id, error_message(seq, std::string("internal: ") + e.what()));
+    }
+  }
+
+  void handle(ConnectionId id, std::optional<std::uint32_t> seq, StateRequest& r) {
+    LightingState state = default_lighting_state(scene());
+    apply_lighting_state(state, scene(), r.document, "message", rlt.parent_path());
+    // Photometry files a state names are read now, so their errors reach this sender.
+    for (std::size_t j = 0; j < scene().luminaires.size(); ++j) {
+      if (!named_distribution(r.document, scene().luminaires[j].name).is_null()) {
+        (void)load_distribution(state.luminaires[j].distribution);
+      }
+    }
+    {
+      std::lock_guard lock(mutex);
+      pending = PendingState{std::move(state), std::move(r.document), seq, id};
+    }
+    wake.notify_one();
+  }
+
+  void handle(ConnectionId id, std::optional<std::uint32_t> seq, const PickRequest& r) {
+    const RayHit hit = picker->intersect({r.origin, r.direction});
+    if (!hit.hit()) {
+      send_json(id, {{"type", "pick"}, {"seq", seq_json(seq)}, {"hit", false}});
+      return;
+    }
+    const TransferFile& t = transfer();
+    const Triangle& tri = t.triangles[hit.triangle];
+    const Vec3 a = t.positions[tri[0]], b = t.positions[tri[1]], c = t.positions[tri[2]];
+    Vec3 n = normalize(cross(b - a, c - a));
+    if (dot(n, r.direction) > 0) n = -n;
+    const double w[3] = {1 - hit.u - hit.v, hit.u, hit.v};
+    std::shared_ptr<const FrameValues> values;
+    {
+      std::lock_guard lock(mutex);
+      values = shown.values;
+    }
+    double e = 0, l = 0;
+    for (int k = 0; k < 3; ++k) {
+      const std::size_t v = tri[static_cast<std::size_t>(k)];
+      e += w[k] * values->illuminance[v];
+      l += w[k] * luminance(Rgb{values->radiance[3 * v], values->radiance[3 * v + 1],
+                                values->radiance[3 * v + 2]});
+    }
+    // Files written before the MMAT section name no material.
+    const std::size_t material = t.triangle_material.empty() ? scene().materials.size()
+                                                             : t.triangle_material[hit.triangle];
+    int portal = -1;
+    for (std::size_t k = 0; k < t.portal_triangles.size(); ++k) {
+      if (t.portal_triangles[k] == hit.triangle) portal = static_cast<int>(t.portal_of_triangle[k]);
+    }
+    send_json(id, {{"type", "pick"},
+                   {"seq", seq_json(seq)},
+                   {"hit", true},
+                   {"point", vec3_json(r.origin + hit.t * r.direction)},
+                   {"normal", vec3_json(n)},
+                   {"distance", hit.t},
+                   {"triangle", hit.triangle},
+                   {"material", material < scene().materials.size()
+                                    ? nlohmann::json(scene().materials[material].name)
+                                    : nlohmann::json(nullptr)},
+                   {"portal", portal >= 0 ? nlohmann::json(scene().portals[static_cast<std::size_t>(
+                                                               portal)].name)
+                                          : nlohmann::json(nullptr)},
+                   {"illuminance", e},
+                   {"luminance", l}});
+  }
+
+  void handle(ConnectionId id, std::optional<std::uint32_t> seq, const DistributionRequest& r) {
+    LightingState state;
+    {
+      std::lock_guard lock(mutex);
+      state = shown.state;
+    }
+    nlohmann::json m = profile_message(seq, r.luminaire, state);
+    if (r.samples != kDefaultProfileSamples) {
+      const DistributionSpec& spec = state.luminaires[r.luminaire].distribution;
+      const int order = transfer().view.sh_order;
+      m = distribution_message(
+          seq, scene().luminaires[r.luminaire], spec,
+          distribution_profile(load_distribution(spec), order, ShWindow::kSigma, r.samples), order,
+          incremental_updates);
+    }
+    send_json(id, m);
+  }
+
+  void handle(ConnectionId id, std::optional<std::uint32_t> seq, const PingRequest&) {
+    std::lock_guard lock(mutex);
+    send_json(id, {{"type", "pong"},
+                   {"seq", seq_json(seq)},
+                   {"frames", shown.frame_number},
+                   {"clients", clients.size()}});
+  }
+};
+
+StudioServer::StudioServer(const fs::path& rlt, const StudioOptions& options)
+    : impl_(std::make_unique<Impl>()) {
+  Impl& s = *impl_;
+  s.rlt = rlt;
+  s.options = options;
+  s.client_folder = studio_client_folder(options.client);
+  s.relit = relight_transfer_file(rlt, std::nullopt);
+  const TransferFile& t = s.transfer();
+  s.vertex_portal = vertex_portals(t);
+  s.geometry = encode_geometry(t);
+  s.picker = std::make_unique<RayTracer>(t.positions, t.triangles, all_triangle_ids(t.triangles.size()));
+  const LightingState initial = default_lighting_state(t.scene);
+  const auto start = std::chrono::steady_clock::now();
+  std::shared_ptr<const FrameValues> values = s.relight_values(initial);
+  const std::chrono::duration<float, std::milli> ms = std::chrono::steady_clock::now() - start;
+  s.shown = {std::make_shared<const std::string>(encode_frame(1, std::nullopt, ms.count(), *values)),
+             values, nlohmann::json::object(), initial, 1};
+
+  WebSocketServerOptions transport_options;
+  transport_options.host = options.host;
+  transport_options.port = options.port;
+  transport_options.stop_on_signals = options.stop_on_signals;
+  WebSocketHandlers handlers;
+  handlers.open = [&s](ConnectionId id) { s.on_open(id); };
+  handlers.close = [&s](ConnectionId id) { s.on_close(id); };
+  handlers.message = [&s](ConnectionId id, const std::string& payload, bool binary) {
+    s.on_message(id, payload, binary);
+  };
+  handlers.http = [&s](const std::string& method, const std::string& path) {
+    return serve_static_file(s.client_folder, method, path);
+  };
+  try {
+    s.transport = std::make_unique<WebSocketServer>(transport_options, std::move(handlers));
+  } catch (const std::runtime_error& e) {
+    fail_input("--host/--port", e.what());
+  }
+  s.worker = std::thread([&s] { s.work(); });
+}
+
+StudioServer::~StudioServer() {
+  {
+    std::lock_guard lock(impl_->mutex);
+    impl_->quit = true;
+  }
+  impl_->wake.notify_one();
+  if (impl_->worker.joinable()) impl_->worker.join();
+}
+
+std::uint16_t StudioServer::port() const { return impl_->transport->port(); }
+
+std::string StudioServer::url() const {
+  return "http://" + impl_->options.host + ":" + std::to_string(port()) + "/";
+}
+
+void StudioServer::run() { impl_->transport->run(); }
+
+void StudioServer::stop() { impl_->transport->stop(); }
+
+}  // namespace relight
