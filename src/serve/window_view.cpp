@@ -9,7 +9,8 @@ namespace relight {
 Rgb window_view_radiance(const Shell& shell, Vec3 outward) {
   const int n = shell.face_size;
   if (n < 1 || shell.cubemap.size() != cubemap_texel_count(n)) return {};
-  const std::vector<double> solid_angle = cubemap_solid_angles(n);
+  const std::vector<double> solid_angle = cubemap_solid_angles(n);  // one face, j·N + i
+  const std::size_t per_face = solid_angle.size();
   Rgb sum;
   double weight = 0;
   for (std::size_t i = 0; i < shell.cubemap.size(); ++i) {
@@ -20,8 +21,9 @@ Rgb window_view_radiance(const Shell& shell, Vec3 outward) {
       const Rgb rest = l - shell.sun_radiance;
       l = {std::max(rest.r, 0.0), std::max(rest.g, 0.0), std::max(rest.b, 0.0)};
     }
-    sum = sum + l * solid_angle[i];
-    weight += solid_angle[i];
+    const double omega = solid_angle[i % per_face];
+    sum = sum + l * omega;
+    weight += omega;
   }
   return weight > 0 ? sum * (1.0 / weight) : Rgb{};
 }

@@ -1,0 +1,96 @@
+// serve/studio_messages.h: what a client may send (validated, errors naming the JSON path and
+// echoing a readable seq) and the hello a client gets first.
+#include <gtest/gtest.h>
+
+#include "common/input_error.h"
+#include "serve/studio_messages.h"
+#include "tiny_studio_room.h"
+
+namespace relight {
+namespace {
+
+const testing::TinyStudioRoom& room() {
+  static const testing::TinyStudioRoom r;
+  return r;
+}
+
+ClientMessage parse(const std::string& text) {
+  std::optional<std::uint32_t> seq;
+  return parse_client_message(text, room().transfer.scene, seq);
+}
+
+// The error text of a malformed message, and the seq it could still read.
+std::pair<std::string, std::optional<std::uint32_t>> refusal(const std::string& text) {
+  std::optional<std::uint32_t> seq;
+  try {
+    parse_client_message(text, room().transfer.scene, seq);
+  } catch (const InputError& e) {
+    return {e.what(), seq};
+  }
+  ADD_FAILURE() << "accepted: " << text;
+  return {};
+}
+
+TEST(StudioMessages, StatePickDistributionPing) {
+  const ClientMessage s = parse(R"({"type":"state","seq":3,"state":{"luminaires":{"down":{"dimmer":0.5}}}})");
+  EXPECT_EQ(s.seq, 3u);
+  ASSERT_TRUE(std::holds_alternative<StateRequest>(s.request));
+  EXPECT_EQ(std::get<StateRequest>(s.request).document["luminaires"]["down"]["dimmer"], 0.5);
+  // A bare state document is a state message.
+  const ClientMessage bare = parse(R"({"luminaires":{"down":{"on":false}}})");
+  EXPECT_FALSE(bare.seq);
+  EXPECT_TRUE(std::holds_alternative<StateRequest>(bare.request));
+  const ClientMessage pick = parse(R"({"type":"pick","origin":[1,1,1],"direction":[0,-2,0]})");
+  ASSERT_TRUE(std::holds_alternative<PickRequest>(pick.request));
+  EXPECT_EQ(std::get<PickRequest>(pick.request).direction.y, -1);
+  const ClientMessage d = parse(R"({"type":"distribution","luminaire":"down","samples":91})");
+  EXPECT_EQ(std::get<DistributionRequest>(d.request).samples, 91);
+  EXPECT_TRUE(std::holds_alternative<PingRequest>(parse(R"({"type":"ping","seq":0})").request));
+}
+
+TEST(StudioMessages, MalformedMessagesNameWhereAndKeepTheirSeq) {
+  EXPECT_NE(refusal("not json").first.find("malformed JSON"), std::string::npos);
+  EXPECT_NE(refusal("[1,2]").first.find("expected a JSON object"), std::string::npos);
+  EXPECT_NE(refusal(R"({"type":"fly","seq":5})").first.find("/type"), std::string::npos);
+  EXPECT_EQ(refusal(R"({"type":"fly","seq":5})").second, 5u);
+  EXPECT_NE(refusal(R"({"type":"pick","seq":6,"origin":[0,0,0],"direction":[0,0,0]})").first.find(
+                "/direction"),
+            std::string::npos);
+  EXPECT_NE(refusal(R"({"type":"pick","origin":[0,"a",0],"direction":[0,1,0]})").first.find(
+                "/origin"),
+            std::string::npos);
+  EXPECT_NE(refusal(R"({"type":"distribution","luminaire":"nobody"})").first.find("nobody"),
+            std::string::npos);
+  EXPECT_NE(refusal(R"({"type":"distribution","luminaire":"down","samples":1})").first.find(
+                "/samples"),
+            std::string::npos);
+  EXPECT_NE(refusal(R"({"type":"state","seq":-1,"state":{}})").first.find("/seq"),
+            std::string::npos);
+  EXPECT_NE(refusal(R"({"type":"state","state":[]})").first.find("/state"), std::string::npos);
+  EXPECT_NE(refusal(R"({"type":"ping","extra":1})").first.find("extra"), std::string::npos);
+}
+
+TEST(StudioMessages, HelloDescribesTheScene) {
+  const TransferFile& t = room().transfer;
+  const nlohmann::json h = hello_message(t, "tiny.rlt", nlohmann::json::object());
+  EXPECT_EQ(h["type"], "hello");
+  EXPECT_EQ(h["protocol"], 1);
+  EXPECT_EQ(h["vertices"], t.vertex_count);
+  EXPECT_EQ(h["triangles"], t.triangles.size());
+  EXPECT_EQ(h["luminaires"][0]["name"], "down");
+  EXPECT_EQ(h["luminaires"][0]["distribution"]["type"], "curve");
+  EXPECT_EQ(h["portals"][0]["name"], "south");
+  EXPECT_EQ(h["portals"][0]["environment"]["luminance"], 1000);
+  EXPECT_EQ(h["portals"][0]["outward"][2], 1);
+  EXPECT_EQ(h["cameras"][0]["name"], "in");
+  EXPECT_EQ(h["sensors"][0]["points"].size(), 6u);
+  EXPECT_EQ(h["sensors"][0]["nu"], 3);
+  for (const nlohmann::json& m : h["materials"]) {
+    EXPECT_EQ(m["portal"], m["name"] == "glass" ? nlohmann::json("south") : nlohmann::json(nullptr));
+  }
+  EXPECT_EQ(h["sh_order"], 4);
+  EXPECT_EQ(h["state"], nlohmann::json::object());
+}
+
+}  // namespace
+}  // namespace relight
