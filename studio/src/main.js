@@ -1,0 +1,402 @@
+// The studio's entry point: connects to `relight serve` (docs/studio-protocol.md), builds
+// the view and the panels from `hello`, the mesh from RLGE, uploads every RLFR, routes
+// state / pick / distribution / error / pong messages, handles clicks in the view (probe a
+// point, or aim a luminaire at it), keeps the status line, and exposes
+// window.relightStudio for the browser tests.
+import { CameraRig } from './cameras.js';
+import { Connection } from './connection.js';
+import { DistributionEditor } from './distribution_editor.js';
+import { formatValue } from './false_color.js';
+import { LabelLayer } from './labels.js';
+import { Legend } from './legend.js';
+import { LuminairePanel } from './luminaires.js';
+import { Markers } from './markers.js';
+import { decodeFrame, decodeGeometry, messages } from './protocol.js';
+import { Sensors } from './sensors.js';
+import { StateStore, canonical } from './state.js';
+import { notice } from './ui.js';
+import { ViewPanel } from './view_panel.js';
+import { Viewer } from './viewer.js';
+import { WindowsPanel } from './windows.js';
+
+const $ = (id) => document.getElementById(id);
+
+let resolveReady;
+const api = {
+  ready: new Promise((r) => (resolveReady = r)),
+  frames: 0,
+  lastFrameNumber: null,
+  errors: [],
+  pongs: 0,
+  latencies: [],
+};
+window.relightStudio = api;
+
+let viewer;
+try {
+  viewer = new Viewer($('viewport'));
+} catch (e) {
+  $('overlay-message').textContent = `WebGL is not available: ${e.message}`;
+  throw e;
+}
+api.camera = viewer.camera;
+
+const proto = location.protocol === 'https:' ? 'wss:' : 'ws:';
+const connection = new Connection(`${proto}//${location.host}/ws`, {
+  status: showConnection,
+  text: onText,
+  binary: onBinary,
+  close: () => {
+    session.hello = null;
+    session.geometry = false;
+  },
+});
+const store = new StateStore(connection);
+const distributions = new Map();
+const labels = new LabelLayer($('labels'), viewer);
+const legend = new Legend($('legend'));
+const markers = new Markers(viewer, store);
+const sensors = new Sensors(viewer, $('sensors'));
+const rig = new CameraRig(viewer, () => viewPanel.markFree());
+const viewPanel = new ViewPanel(viewer, rig, markers, $('labels'));
+const luminairePanel = new LuminairePanel($('luminaires'), store, distributions, {
+  aim: (i) => startAim(i),
+  editCurve: (i) => {
+    editor.select(i);
+    $('section-distribution').open = true;
+    $('section-distribution').scrollIntoView({ behavior: 'smooth' });
+  },
+});
+const editor = new DistributionEditor($('distribution'), store, distributions, requestDistribution);
+const windowsPanel = new WindowsPanel($('windows'), store);
+
+const session = {
+  hello: null,
+  geometry: false,
+  hadView: false,
+  pendingLatency: [], // [{seq, t0}] frames uploaded, not drawn yet
+  picks: new Map(), // seq → {resolve, reject}
+  aimIndex: null,
+  probeRay: null,
+  lastFrame: null,
+};
+
+// ---- messages
+
+function onText(msg) {
+  switch (msg.type) {
+    case 'hello':
+      return onHello(msg);
+    case 'state': {
+      const how = store.applyRemote(msg);
+      if (how === 'remote') {
+        $('state-origin').textContent = `shown: state from client ${msg.client ?? '?'} (frame ${msg.frame ?? '?'})`;
+        if (msg.seq == null || !store.sentTime(msg.seq)) notice(`Lighting changed by client ${msg.client ?? '?'}`);
+      }
+      return;
+    }
+    case 'pick': {
+      const p = session.picks.get(msg.seq);
+      if (p) {
+        session.picks.delete(msg.seq);
+        p.resolve(msg);
+      }
+      return;
+    }
+    case 'distribution':
+      distributions.set(msg.luminaire, msg);
+      editor.receive(msg);
+      luminairePanel.distributionUpdated(msg.luminaire);
+      return;
+    case 'error': {
+      api.errors.push(msg.message);
+      notice(`Server: ${msg.message}`, 'error');
+      const p = session.picks.get(msg.seq);
+      if (p) {
+        session.picks.delete(msg.seq);
+        p.reject(new Error(msg.message));
+      }
+      return;
+    }
+    case 'pong':
+      api.pongs++;
+      $('clients').textContent = `${msg.clients} client${msg.clients === 1 ? '' : 's'}`;
+      $('rtt').textContent = `ping ${connection.rttMs !== null ? connection.rttMs.toFixed(0) : '–'} ms`;
+      return;
+    default:
+      console.warn('relight studio: unknown message', msg);
+  }
+}
+
+function onHello(hello) {
+  session.hello = hello;
+  session.geometry = false;
+  distributions.clear();
+  $('scene-name').textContent = hello.scene_file || '';
+  $('scene-name').title = `${hello.scene_file}: ${hello.vertices} vertices, ${hello.triangles} triangles, SH order ${hello.sh_order}, direct light ${hello.direct}`;
+  $('overlay-message').textContent = 'Loading geometry…';
+  if (hello.protocol !== 1) notice(`Server speaks protocol ${hello.protocol}; this client knows 1`, 'error');
+  viewPanel.setCameras(hello.cameras, session.hadView);
+  if (!session.hadView && !(hello.cameras || []).length && hello.bounds) rig.frameBounds(hello.bounds);
+  session.hadView = true;
+  markers.setScene(hello);
+  sensors.setScene(hello);
+  luminairePanel.setScene(hello);
+  windowsPanel.setScene(hello);
+  editor.setScene(hello);
+  store.reset(hello.state || {});
+}
+
+function onBinary(tag, buffer) {
+  try {
+    if (tag === 'RLGE') {
+      const g = decodeGeometry(buffer);
+      viewer.setGeometry(g, session.hello?.bounds);
+      session.geometry = true;
+      $('overlay-message').textContent = 'Waiting for the first frame…';
+    } else if (tag === 'RLFR') {
+      if (!session.geometry) throw new Error('RLFR before RLGE');
+      const f = decodeFrame(buffer);
+      viewer.setFrame(f);
+      sensors.setReadings(f.sensors);
+      session.lastFrame = f;
+      $('overlay-message').textContent = '';
+      $('server-ms').textContent = `server ${f.serverMs.toFixed(1)} ms`;
+      if (f.seq !== null && store.sentTime(f.seq) !== undefined && !store.foreignSeqs.has(f.seq)) {
+        session.pendingLatency.push({ seq: f.seq, t0: store.sentTime(f.seq), frame: f.frame });
+      }
+      session.pendingFrameNumber = f.frame;
+      if (session.probeRay) refreshProbe();
+    } else {
+      console.warn(`relight studio: unknown binary message "${tag}"`);
+    }
+  } catch (e) {
+    api.errors.push(`client: ${e.message}`);
+    notice(`Client: ${e.message}`, 'error');
+    console.error(e);
+  }
+}
+
+// ---- rendering hooks
+
+viewer.beforeRender.push(() => sensors.colour(viewer.used));
+viewer.afterRender.push((info) => {
+  legend.update(viewer.used);
+  labels.begin();
+  sensors.drawLabels(labels);
+  markers.drawLabels(labels);
+  if (info.frameDrawn) {
+    api.frames++;
+    api.lastFrameNumber = session.pendingFrameNumber;
+    $('frame-number').textContent = `frame ${api.lastFrameNumber}`;
+    const now = performance.now();
+    for (const p of session.pendingLatency) api.latencies.push(now - p.t0);
+    if (session.pendingLatency.length) {
+      $('latency').textContent = `latency ${(now - session.pendingLatency.at(-1).t0).toFixed(0)} ms`;
+    }
+    session.pendingLatency = [];
+    if (session.hello && session.geometry) resolveReady();
+  }
+});
+
+// ---- status
+
+function showConnection(text) {
+  const c = $('conn');
+  c.textContent = `${text === 'connected' ? '●' : '○'} ${text}`;
+  c.className = `conn ${text === 'connected' ? 'ok' : text === 'connecting' ? '' : 'bad'}`;
+  if (text !== 'connected' && text !== 'connecting') $('overlay-message').textContent = session.geometry ? '' : 'Not connected to relight serve…';
+}
+
+// ---- pick, probe and aim
+
+function sendPick(ray) {
+  return new Promise((resolve, reject) => {
+    const seq = connection.nextSeq();
+    if (!connection.send(messages.pick(seq, ray.origin, ray.direction))) return reject(new Error('not connected'));
+    session.picks.set(seq, { resolve, reject });
+    setTimeout(() => {
+      if (session.picks.delete(seq)) reject(new Error('pick: no answer'));
+    }, 15000);
+  });
+}
+
+function pickAt(x, y) {
+  return sendPick(viewer.rayAt(x, y));
+}
+
+function showProbe(reply) {
+  const box = $('probe');
+  if (!reply.hit) {
+    markers.probe = null;
+    box.hidden = false;
+    box.textContent = 'Nothing there.';
+    viewer.requestRender();
+    return;
+  }
+  const where = reply.portal ? `window “${reply.portal}”` : reply.material;
+  markers.probe = { point: reply.point, text: `${formatValue(reply.illuminance)} lx · ${formatValue(reply.luminance)} cd/m²` };
+  box.hidden = false;
+  box.innerHTML = '';
+  const lines = [
+    [`${where}`, 'Surface (material or window) at the clicked point'],
+    [`E = ${formatValue(reply.illuminance)} lx   L = ${formatValue(reply.luminance)} cd/m²`, 'Illuminance and luminance at the point, interpolated from the current frame'],
+    [`at (${reply.point.map((v) => v.toFixed(2)).join(', ')}) m, ${reply.distance.toFixed(2)} m away`, 'Position of the point and its distance from the camera'],
+  ];
+  for (const [t, title] of lines) {
+    const d = document.createElement('div');
+    d.textContent = t;
+    d.title = title;
+    box.append(d);
+  }
+  viewer.requestRender();
+}
+
+let probeBusy = false;
+function refreshProbe() {
+  if (probeBusy || !session.probeRay) return;
+  probeBusy = true;
+  sendPick(session.probeRay)
+    .then(showProbe)
+    .catch(() => {})
+    .finally(() => (probeBusy = false));
+}
+
+function startAim(i) {
+  const lum = session.hello?.luminaires[i];
+  if (!lum) return;
+  session.aimIndex = i;
+  luminairePanel.setAiming(i);
+  $('stage').classList.add('aiming');
+  const banner = $('aim-banner');
+  banner.hidden = false;
+  banner.textContent = `Click a surface to aim “${lum.name}” at it (Esc cancels)`;
+}
+
+function stopAim() {
+  session.aimIndex = null;
+  luminairePanel.setAiming(null);
+  $('stage').classList.remove('aiming');
+  $('aim-banner').hidden = true;
+}
+
+async function onViewportClick(x, y) {
+  if (!session.geometry) return;
+  const ray = viewer.rayAt(x, y);
+  if (session.aimIndex !== null) {
+    const i = session.aimIndex;
+    const name = session.hello.luminaires[i].name;
+    stopAim();
+    try {
+      const reply = await sendPick(ray);
+      if (!reply.hit) return notice('Nothing there to aim at.', 'error');
+      const target = reply.point.map((v) => Number(v.toFixed(4)));
+      store.edit(() => {
+        const e = store.luminaire(name);
+        delete e.aim;
+        e.target = target;
+      });
+      notice(`“${name}” aimed at (${target.map((v) => v.toFixed(2)).join(', ')})`);
+    } catch (e) {
+      notice(`Aim: ${e.message}`, 'error');
+    }
+    return;
+  }
+  session.probeRay = ray;
+  try {
+    showProbe(await sendPick(ray));
+  } catch (e) {
+    notice(`Pick: ${e.message}`, 'error');
+  }
+}
+
+{
+  const canvas = viewer.canvas;
+  let down = null;
+  canvas.addEventListener('pointerdown', (e) => {
+    if (e.button === 0) down = { x: e.clientX, y: e.clientY, t: performance.now() };
+    canvas.focus();
+  });
+  canvas.addEventListener('pointerup', (e) => {
+    if (!down || e.button !== 0) return;
+    const moved = Math.hypot(e.clientX - down.x, e.clientY - down.y);
+    const quick = performance.now() - down.t < 800;
+    down = null;
+    if (moved > 4 || !quick) return;
+    const r = canvas.getBoundingClientRect();
+    onViewportClick(e.clientX - r.left, e.clientY - r.top);
+  });
+  window.addEventListener('keydown', (e) => {
+    if (e.key !== 'Escape') return;
+    if (session.aimIndex !== null) stopAim();
+    else {
+      session.probeRay = null;
+      markers.probe = null;
+      $('probe').hidden = true;
+      viewer.requestRender();
+    }
+  });
+}
+
+// ---- distribution requests
+
+function requestDistribution(name) {
+  if (!name) return;
+  connection.send(messages.distribution(connection.nextSeq(), name));
+}
+
+// ---- State section
+
+{
+  const json = $('state-json');
+  const show = () => {
+    // Two-space JSON with arrays of numbers kept on one line.
+    const text = JSON.stringify(store.doc, null, 2).replace(/\[[\d\s,.eE+-]*\]/g, (a) => a.replace(/\s+/g, ' ').replace('[ ', '[').replace(' ]', ']'));
+    if (document.activeElement !== json) json.value = text;
+  };
+  store.onChange(show);
+  $('state-save').addEventListener('click', () => store.save(`${(session.hello?.scene_file || 'scene').replace(/\.rlt$/, '')}-state.json`));
+  $('state-file').addEventListener('change', async (e) => {
+    const file = e.target.files[0];
+    if (!file) return;
+    try {
+      await store.load(file);
+      notice(`Loaded ${file.name}`);
+    } catch (err) {
+      notice(`Load: ${err.message}`, 'error');
+    }
+    e.target.value = '';
+  });
+  $('state-reset').addEventListener('click', () => store.replace({}));
+  $('state-send').addEventListener('click', () => {
+    try {
+      store.replace(JSON.parse(json.value));
+      json.blur();
+      show();
+    } catch (err) {
+      notice(`State JSON: ${err.message}`, 'error');
+    }
+  });
+}
+
+$('panel-toggle').addEventListener('click', () => {
+  $('app').classList.toggle('collapsed');
+});
+
+// ---- test and scripting hooks
+
+Object.assign(api, {
+  send: (obj) => connection.send(obj),
+  sendRaw: (data) => connection.sendRaw(data),
+  state: () => JSON.parse(JSON.stringify(store.doc)),
+  setState: (doc) => {
+    store.replace(doc);
+    return store.latestSeq;
+  },
+  pick: (x, y) => pickAt(x, y),
+  viewer,
+  store,
+  canonical,
+});
+
+connection.connect();

@@ -1,0 +1,75 @@
+// Luminaire markers in the 3D view: a small sphere at each luminaire's photometric centre in
+// its light colour (faint when off), a line along its current aim (to the target when it is
+// aimed at a point), its name as a label, and the probed point of the last click. Drawn on
+// the overlay layer, so they never enter the exposure or false-colour statistics.
+import * as THREE from 'three';
+import { srgbToLinear } from './colors.js';
+import { linearToHex } from './colors.js';
+import { effectiveLuminaire } from './luminaire_model.js';
+
+export class Markers {
+  constructor(viewer, store) {
+    this.viewer = viewer;
+    this.store = store;
+    this.group = new THREE.Group();
+    viewer.addOverlay(this.group);
+    this.visible = true;
+    this.items = [];
+    this.probe = null; // {point, text}
+    this.selected = -1;
+    store.onChange(() => this.update());
+  }
+
+  setScene(hello) {
+    this.hello = hello;
+    this.group.clear();
+    const b = hello.bounds;
+    const size = b ? Math.hypot(...b.max.map((v, i) => v - b.min[i])) : 8;
+    this.radius = Math.max(0.02, size * 0.006);
+    this.items = hello.luminaires.map((lum) => {
+      const sphere = new THREE.Mesh(new THREE.SphereGeometry(this.radius, 16, 8), new THREE.MeshBasicMaterial({ toneMapped: false, transparent: true }));
+      sphere.position.set(...lum.position);
+      const lineGeom = new THREE.BufferGeometry().setAttribute('position', new THREE.BufferAttribute(new Float32Array(6), 3));
+      const line = new THREE.Line(lineGeom, new THREE.LineBasicMaterial({ toneMapped: false, transparent: true, opacity: 0.8 }));
+      this.group.add(sphere, line);
+      return { lum, sphere, line };
+    });
+    this.viewer.addOverlay(this.group);
+    this.update();
+  }
+
+  update() {
+    if (!this.hello) return;
+    this.group.visible = this.visible;
+    this.items.forEach((it, i) => {
+      const eff = effectiveLuminaire(it.lum, this.store.doc.luminaires?.[it.lum.name]);
+      const hex = linearToHex(eff.color, true);
+      const c = new THREE.Color(hex);
+      it.sphere.material.color.copy(c);
+      it.sphere.material.opacity = eff.on ? 1 : 0.3;
+      it.sphere.scale.setScalar(i === this.selected ? 1.6 : 1);
+      const p = new THREE.Vector3(...it.lum.position);
+      const end = eff.target ? new THREE.Vector3(...eff.target) : p.clone().addScaledVector(new THREE.Vector3(...eff.aim), 0.6);
+      const a = it.line.geometry.attributes.position;
+      a.setXYZ(0, p.x, p.y, p.z);
+      a.setXYZ(1, end.x, end.y, end.z);
+      a.needsUpdate = true;
+      it.line.geometry.computeBoundingSphere();
+      it.line.material.color.setRGB(...[1, 0.85, 0.2].map(srgbToLinear));
+      it.line.material.opacity = eff.on ? 0.85 : 0.3;
+      it.eff = eff;
+    });
+    this.viewer.requestRender();
+  }
+
+  drawLabels(layer) {
+    if (this.probe) {
+      layer.dot(this.probe.point, '#ff3df2', 4);
+      layer.label(this.probe.point, this.probe.text, { force: true, dy: 8, background: 'rgba(40,0,40,0.8)' });
+    }
+    if (!this.visible) return;
+    for (const it of this.items) {
+      layer.label(it.lum.position, it.lum.name + (it.eff?.on === false ? ' (off)' : ''), { dy: 6, force: true, color: '#ffe07a' });
+    }
+  }
+}

@@ -1,0 +1,98 @@
+// Wire format of `relight serve` (docs/studio-protocol.md): decoding of the binary
+// geometry ("RLGE") and frame ("RLFR") messages, IEEE 754 binary16 → number, and builders
+// for the client's text messages (state, pick, distribution, ping).
+
+const LITTLE_ENDIAN = new Uint8Array(new Uint16Array([1]).buffer)[0] === 1;
+export const NO_SEQ = 0xffffffff;
+
+// ASCII tag of a binary message ("RLGE", "RLFR", …).
+export function binaryTag(buffer) {
+  if (buffer.byteLength < 4) return '';
+  const b = new Uint8Array(buffer, 0, 4);
+  return String.fromCharCode(b[0], b[1], b[2], b[3]);
+}
+
+// Typed-array view of little-endian data; copies through a DataView on big-endian hosts or
+// when the offset is misaligned for the element type.
+function view(Type, buffer, byteOffset, length, getter) {
+  if (LITTLE_ENDIAN && byteOffset % Type.BYTES_PER_ELEMENT === 0) {
+    return new Type(buffer, byteOffset, length);
+  }
+  const out = new Type(length);
+  const dv = new DataView(buffer);
+  for (let i = 0; i < length; i++) out[i] = dv[getter](byteOffset + i * Type.BYTES_PER_ELEMENT, true);
+  return out;
+}
+
+function need(buffer, bytes, what) {
+  if (buffer.byteLength < bytes) {
+    throw new Error(`${what}: ${buffer.byteLength} bytes, expected ${bytes}`);
+  }
+}
+
+// RLGE: positions (f32 xyz), albedo (f32 rgb, linear), indices (u32, CCW front) and per
+// triangle 0 (opaque) or p + 1 (window glass of portal p).
+export function decodeGeometry(buffer) {
+  need(buffer, 16, 'RLGE header');
+  if (binaryTag(buffer) !== 'RLGE') throw new Error(`expected RLGE, got "${binaryTag(buffer)}"`);
+  const dv = new DataView(buffer);
+  const version = dv.getUint32(4, true);
+  const V = dv.getUint32(8, true);
+  const T = dv.getUint32(12, true);
+  need(buffer, 16 + 24 * V + 16 * T, 'RLGE');
+  return {
+    version,
+    vertexCount: V,
+    triangleCount: T,
+    positions: view(Float32Array, buffer, 16, 3 * V, 'getFloat32'),
+    albedo: view(Float32Array, buffer, 16 + 12 * V, 3 * V, 'getFloat32'),
+    indices: view(Uint32Array, buffer, 16 + 24 * V, 3 * T, 'getUint32'),
+    triangleCodes: view(Uint32Array, buffer, 16 + 24 * V + 12 * T, T, 'getUint32'),
+  };
+}
+
+// RLFR: frame number, seq (null for 0xFFFFFFFF), server milliseconds, per vertex four half
+// floats (radiance R G B in cd/m², illuminance in lx) kept as raw Uint16 for upload as a
+// half-float vertex attribute, and the sensor points' illuminance (f32, lx).
+export function decodeFrame(buffer) {
+  need(buffer, 24, 'RLFR header');
+  if (binaryTag(buffer) !== 'RLFR') throw new Error(`expected RLFR, got "${binaryTag(buffer)}"`);
+  const dv = new DataView(buffer);
+  const frame = dv.getUint32(4, true);
+  const rawSeq = dv.getUint32(8, true);
+  const V = dv.getUint32(12, true);
+  const S = dv.getUint32(16, true);
+  need(buffer, 24 + 8 * V + 4 * S, 'RLFR');
+  return {
+    frame,
+    seq: rawSeq === NO_SEQ ? null : rawSeq,
+    vertexCount: V,
+    sensorCount: S,
+    serverMs: dv.getFloat32(20, true),
+    halfs: view(Uint16Array, buffer, 24, 4 * V, 'getUint16'),
+    sensors: view(Float32Array, buffer, 24 + 8 * V, S, 'getFloat32'),
+  };
+}
+
+// IEEE 754 binary16 bits → number.
+export function halfToFloat(h) {
+  const sign = h & 0x8000 ? -1 : 1;
+  const exponent = (h >> 10) & 0x1f;
+  const mantissa = h & 0x3ff;
+  if (exponent === 0) return sign * mantissa * 2 ** -24;
+  if (exponent === 31) return mantissa ? NaN : sign * Infinity;
+  return sign * (1 + mantissa / 1024) * 2 ** (exponent - 15);
+}
+
+// Illuminance (lx) of vertex v from a decoded frame.
+export function vertexIlluminance(frame, v) {
+  return halfToFloat(frame.halfs[4 * v + 3]);
+}
+
+// Text messages of the client (seq: a non-negative integer the server echoes).
+export const messages = {
+  state: (seq, state) => ({ type: 'state', seq, state }),
+  pick: (seq, origin, direction) => ({ type: 'pick', seq, origin, direction }),
+  distribution: (seq, luminaire, samples = 181) => ({ type: 'distribution', seq, luminaire, samples }),
+  ping: (seq) => ({ type: 'ping', seq }),
+};

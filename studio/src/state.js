@@ -1,0 +1,169 @@
+// The client's lighting-state document (docs/lighting-state.md): it starts as hello.state,
+// every control edits it, and the WHOLE document is sent as {"type":"state","seq":n,
+// "state":doc} (the server applies a state to the scene's own values, so a state names
+// everything that differs from the scene). Edits are sent at most once per animation frame
+// (the server coalesces anyway: latest state wins). The server's `state` replies are
+// matched to what this client sent: an echo of our own latest state changes nothing, an
+// echo of an older one of ours is stale and ignored, any other state (another client, or a
+// message sent around this store) replaces the document and refreshes the panels.
+// Also: save the document as a JSON download and load one from a file.
+
+export const clone = (x) => (x === undefined ? undefined : JSON.parse(JSON.stringify(x)));
+
+// JSON with sorted keys, for comparing documents whatever their key order.
+export function canonical(x) {
+  if (Array.isArray(x)) return `[${x.map(canonical).join(',')}]`;
+  if (x && typeof x === 'object') {
+    return `{${Object.keys(x).sort().map((k) => `${JSON.stringify(k)}:${canonical(x[k])}`).join(',')}}`;
+  }
+  return JSON.stringify(x);
+}
+
+// Drops empty luminaire/portal entries and empty top-level objects.
+function prune(doc) {
+  for (const key of ['luminaires', 'portals', 'exterior']) {
+    const o = doc[key];
+    if (!o || typeof o !== 'object') continue;
+    if (key !== 'exterior') {
+      for (const name of Object.keys(o)) {
+        const entry = o[name];
+        if (entry && typeof entry === 'object' && !Array.isArray(entry)) {
+          if (entry.exterior && Object.keys(entry.exterior).length === 0) delete entry.exterior;
+          if (Object.keys(entry).length === 0) delete o[name];
+        }
+      }
+    }
+    if (Object.keys(o).length === 0) delete doc[key];
+  }
+  return doc;
+}
+
+export class StateStore {
+  constructor(connection) {
+    this.connection = connection;
+    this.doc = {};
+    this.listeners = [];
+    this.sent = new Map(); // seq → {canon, time}
+    this.latestSeq = null;
+    this.lastSentCanon = null;
+    this.myClient = null;
+    this.foreignSeqs = new Set();
+    this.lastRemote = null; // {client, frame, seq}
+    this._scheduled = false;
+  }
+
+  // listener(source): source is 'local' (an edit here) or 'remote' (a replaced document).
+  onChange(listener) {
+    this.listeners.push(listener);
+  }
+
+  _notify(source) {
+    for (const l of this.listeners) l(source);
+  }
+
+  // A new connection: the server's current state.
+  reset(doc) {
+    this.doc = clone(doc || {});
+    this.sent.clear();
+    this.latestSeq = null;
+    this.lastSentCanon = canonical(this.doc);
+    this.myClient = null;
+    this._scheduled = false;
+    this._notify('remote');
+  }
+
+  // Luminaire / portal entry of the document, created on demand.
+  luminaire(name) {
+    this.doc.luminaires ??= {};
+    return (this.doc.luminaires[name] ??= {});
+  }
+  portal(name) {
+    this.doc.portals ??= {};
+    return (this.doc.portals[name] ??= {});
+  }
+
+  // fn(doc) edits the document; it is then sent (throttled).
+  edit(fn) {
+    fn(this.doc);
+    prune(this.doc);
+    this._notify('local');
+    this.scheduleSend();
+  }
+
+  // Replaces the whole document and sends it at once (load, reset, test hook).
+  replace(doc) {
+    this.doc = prune(clone(doc || {}));
+    this._notify('local');
+    this.sendNow(true);
+  }
+
+  scheduleSend() {
+    if (this._scheduled) return;
+    this._scheduled = true;
+    const fire = () => {
+      if (!this._scheduled) return;
+      this._scheduled = false;
+      this.sendNow(false);
+    };
+    requestAnimationFrame(fire);
+    setTimeout(fire, 100); // when animation frames are throttled (hidden page)
+  }
+
+  // Sends the document; unless forced, not when it equals the last one sent.
+  sendNow(force) {
+    this._scheduled = false;
+    const canon = canonical(this.doc);
+    if (!force && canon === this.lastSentCanon) return null;
+    const seq = this.connection.nextSeq();
+    if (!this.connection.send({ type: 'state', seq, state: this.doc })) return null;
+    this.sent.set(seq, { canon, time: performance.now() });
+    if (this.sent.size > 200) this.sent.delete(this.sent.keys().next().value);
+    this.latestSeq = seq;
+    this.lastSentCanon = canon;
+    return seq;
+  }
+
+  // Time at which state seq was sent by this store (for latency), if it was.
+  sentTime(seq) {
+    return this.sent.get(seq)?.time;
+  }
+
+  // A `state` message from the server.
+  applyRemote(msg) {
+    const mine = msg.seq != null && this.sent.get(msg.seq);
+    const isMine =
+      mine && (this.myClient != null ? msg.client === this.myClient : canonical(msg.state) === mine.canon);
+    if (isMine) {
+      if (this.myClient == null && msg.client != null) this.myClient = msg.client;
+      if (msg.seq !== this.latestSeq || this._scheduled) return 'stale';
+      return 'mine';
+    }
+    if (msg.seq != null && this.sent.has(msg.seq)) this.foreignSeqs.add(msg.seq);
+    this.lastRemote = { client: msg.client, frame: msg.frame, seq: msg.seq };
+    this._scheduled = false;
+    this.doc = clone(msg.state || {});
+    this.lastSentCanon = canonical(this.doc);
+    this._notify('remote');
+    return 'remote';
+  }
+
+  // Download the document as JSON.
+  save(filename = 'lighting-state.json') {
+    const blob = new Blob([JSON.stringify(this.doc, null, 2) + '\n'], { type: 'application/json' });
+    const a = document.createElement('a');
+    a.href = URL.createObjectURL(blob);
+    a.download = filename;
+    document.body.appendChild(a);
+    a.click();
+    a.remove();
+    setTimeout(() => URL.revokeObjectURL(a.href), 1000);
+  }
+
+  // Load a state file (File from an <input type=file>) and send it.
+  async load(file) {
+    const text = await file.text();
+    const doc = JSON.parse(text);
+    if (!doc || typeof doc !== 'object' || Array.isArray(doc)) throw new Error('a state file is a JSON object');
+    this.replace(doc);
+  }
+}

@@ -1,0 +1,146 @@
+// Small DOM helpers shared by the panels: element construction, labelled rows, a slider
+// paired with a number box, and the one-line notices of the status bar.
+
+// el('input', {type: 'range', title: '…', dataset: {testid: 'x'}}, [children])
+export function el(tag, attrs = {}, children = []) {
+  const e = document.createElement(tag);
+  for (const [k, v] of Object.entries(attrs)) {
+    if (v === undefined || v === null) continue;
+    if (k === 'dataset') Object.assign(e.dataset, v);
+    else if (k === 'style' && typeof v === 'object') Object.assign(e.style, v);
+    else if (k === 'text') e.textContent = v;
+    else if (k === 'html') e.innerHTML = v;
+    else if (k.startsWith('on') && typeof v === 'function') e.addEventListener(k.slice(2), v);
+    else if (k in e && typeof v !== 'string') e[k] = v;
+    else e.setAttribute(k, v);
+  }
+  for (const c of [].concat(children)) {
+    if (c === null || c === undefined || c === false) continue;
+    e.append(c instanceof Node ? c : document.createTextNode(String(c)));
+  }
+  return e;
+}
+
+// <label class="row"><span>text</span> control… </label>
+export function row(label, controls, title) {
+  return el('label', { class: 'row', title }, [el('span', { class: 'row-label', text: label }), ...[].concat(controls)]);
+}
+
+// A value that the user changes by `input` and `change` events alike (tests and keyboard
+// users may fire either); handler(value) runs once per distinct value.
+export function onValue(input, handler, read = (e) => e.value) {
+  let last;
+  const fire = () => {
+    const v = read(input);
+    if (v === last) return;
+    last = v;
+    handler(v);
+  };
+  input.addEventListener('input', fire);
+  input.addEventListener('change', fire);
+  return {
+    reset(value) {
+      last = value;
+    },
+  };
+}
+
+// Sets a control's value unless the user is using it right now.
+export function setIfIdle(input, value, prop = 'value') {
+  if (document.activeElement === input && input._dragging) return;
+  if (input[prop] !== value) input[prop] = value;
+}
+
+// A range slider with a number box beside it. The number box may go beyond the slider's
+// range (e.g. a dimmer above 1) when numberMax allows it. onChange(number).
+export function sliderNumber({ min, max, step, value, numberMax, title, testid, id, unit, onChange }) {
+  const slider = el('input', { type: 'range', min, max, step, title, id, dataset: testid ? { testid } : undefined });
+  const number = el('input', {
+    type: 'number',
+    min,
+    max: numberMax ?? max,
+    step,
+    title,
+    class: 'num',
+    dataset: testid ? { testid: `${testid}-value` } : undefined,
+  });
+  slider.addEventListener('pointerdown', () => (slider._dragging = true));
+  slider.addEventListener('pointerup', () => (slider._dragging = false));
+  const set = (v) => {
+    setIfIdle(slider, String(Math.min(Math.max(v, min), max)));
+    if (document.activeElement !== number) number.value = String(round(v, step));
+  };
+  set(value);
+  slider.addEventListener('input', () => {
+    number.value = slider.value;
+    onChange(Number(slider.value));
+  });
+  slider.addEventListener('change', () => onChange(Number(slider.value)));
+  const fromNumber = () => {
+    const v = Number(number.value);
+    if (number.value === '' || !Number.isFinite(v)) return;
+    const clamped = Math.max(min, numberMax === undefined ? Math.min(v, max) : Math.min(v, numberMax));
+    setIfIdle(slider, String(Math.min(Math.max(clamped, min), max)));
+    onChange(clamped);
+  };
+  number.addEventListener('change', fromNumber);
+  number.addEventListener('keydown', (e) => e.key === 'Enter' && fromNumber());
+  const wrap = el('span', { class: 'slider-number' }, [slider, number, unit ? el('span', { class: 'unit', text: unit }) : null]);
+  return { element: wrap, slider, number, set };
+}
+
+function round(v, step) {
+  const digits = Math.max(0, -Math.floor(Math.log10(Number(step) || 1)));
+  return Number(v.toFixed(Math.min(6, digits + 1)));
+}
+
+// Number input; onChange(number) on Enter/blur when it is a valid number.
+export function numberInput({ value, min, max, step = 'any', title, unit, id, testid, onChange, width }) {
+  const input = el('input', { type: 'number', min, max, step, title, id, class: 'num', dataset: testid ? { testid } : undefined });
+  if (width) input.style.width = width;
+  if (value !== undefined && value !== null) input.value = String(value);
+  input.addEventListener('change', () => {
+    const v = Number(input.value);
+    if (input.value === '' || !Number.isFinite(v)) return;
+    if ((min !== undefined && v < min) || (max !== undefined && v > max)) {
+      input.classList.add('invalid');
+      return;
+    }
+    input.classList.remove('invalid');
+    onChange(v);
+  });
+  if (!unit) return input;
+  const wrap = el('span', { class: 'with-unit' }, [input, el('span', { class: 'unit', text: unit })]);
+  wrap.input = input;
+  return wrap;
+}
+
+export function select(options, { value, title, id, testid, onChange } = {}) {
+  const s = el(
+    'select',
+    { title, id, dataset: testid ? { testid } : undefined },
+    options.map(([v, label]) => el('option', { value: v, text: label })),
+  );
+  if (value !== undefined) s.value = value;
+  if (onChange) onValue(s, onChange);
+  return s;
+}
+
+// Transient notices in the status bar (errors stay longer).
+let noticeTimer = null;
+export function notice(text, kind = 'info', ms = kind === 'error' ? 8000 : 4000) {
+  const n = document.getElementById('notice');
+  if (!n) return;
+  n.textContent = text;
+  n.className = kind;
+  n.title = text;
+  clearTimeout(noticeTimer);
+  noticeTimer = setTimeout(() => {
+    n.textContent = '';
+    n.className = '';
+  }, ms);
+}
+
+export function fmt3(v) {
+  return v.map((x) => Number(x).toFixed(2)).join(', ');
+}

@@ -1,0 +1,135 @@
+// The View panel: camera presets (#camera-preset: the scene's cameras by name, plus "orbit"
+// for a free camera), navigation (orbit or walk), field of view, the display mode
+// (#view-mode: tonemapped, false-lux, false-luminance), exposure in EV100 (#exposure) with
+// automatic exposure (#auto-exposure), the tone curve, the false-colour range and scale,
+// back faces, luminaire markers, a PNG screenshot and the current camera as scene JSON.
+import { screenshot } from './screenshot.js';
+
+const $ = (id) => document.getElementById(id);
+
+export class ViewPanel {
+  constructor(viewer, rig, markers, labelsCanvas) {
+    this.viewer = viewer;
+    this.rig = rig;
+    this.cameras = [];
+    const preset = $('camera-preset');
+    preset.addEventListener('change', () => this.applyPreset(preset.value));
+
+    $('nav-mode').addEventListener('change', (e) => {
+      rig.setMode(e.target.value);
+      viewer.canvas.focus();
+    });
+
+    const fov = $('fov');
+    fov.addEventListener('input', () => {
+      rig.setFov(Number(fov.value));
+      this.markFree();
+    });
+
+    const mode = $('view-mode');
+    const onMode = () => {
+      viewer.setDisplay({ mode: mode.value });
+      this._modeControls();
+    };
+    mode.addEventListener('change', onMode);
+    mode.addEventListener('input', onMode);
+
+    const exposure = $('exposure');
+    const auto = $('auto-exposure');
+    const onExposure = () => {
+      auto.checked = false;
+      viewer.setDisplay({ ev100: Number(exposure.value), autoExposure: false });
+      this.showExposure(Number(exposure.value));
+    };
+    exposure.addEventListener('input', onExposure);
+    exposure.addEventListener('change', onExposure);
+    auto.addEventListener('change', () => {
+      viewer.setDisplay({ autoExposure: auto.checked, ev100: Number(exposure.value) });
+    });
+    $('tone-curve').addEventListener('change', (e) => viewer.setDisplay({ toneCurve: e.target.value }));
+
+    const range = () => {
+      const v = (id) => ($(id).value === '' ? null : Number($(id).value));
+      viewer.setDisplay({ range: { min: v('fc-min'), max: v('fc-max'), scale: $('fc-scale').value } });
+    };
+    for (const id of ['fc-min', 'fc-max', 'fc-scale']) $(id).addEventListener('change', range);
+
+    $('back-faces').addEventListener('change', (e) => viewer.setDisplay({ backFaces: e.target.value }));
+    $('show-luminaires').addEventListener('change', (e) => {
+      markers.visible = e.target.checked;
+      markers.update();
+    });
+    $('screenshot').addEventListener('click', () => {
+      const cam = preset.value === 'orbit' ? 'view' : preset.value;
+      const name = `relight-${cam.replace(/[^\w.-]+/g, '_')}-${viewer.used.mode}.png`;
+      screenshot(viewer, labelsCanvas, name);
+    });
+    $('copy-camera').addEventListener('click', () => {
+      const out = $('camera-json');
+      out.hidden = false;
+      out.value = JSON.stringify({ name: 'my view', ...rig.current() });
+      out.select();
+    });
+    viewer.afterRender.push(() => this.afterRender());
+    this._modeControls();
+  }
+
+  setCameras(cameras, keepView) {
+    this.cameras = cameras || [];
+    const preset = $('camera-preset');
+    preset.innerHTML = '';
+    for (const c of this.cameras) {
+      const o = document.createElement('option');
+      o.value = c.name;
+      o.textContent = c.name;
+      o.title = `eye (${c.eye.join(', ')}), target (${c.target.join(', ')}), ${c.fov_deg ?? 60}°`;
+      preset.append(o);
+    }
+    const free = document.createElement('option');
+    free.value = 'orbit';
+    free.textContent = 'orbit (free camera)';
+    preset.append(free);
+    if (keepView) preset.value = 'orbit';
+    else if (this.cameras.length) this.applyPreset(this.cameras[0].name);
+    else preset.value = 'orbit';
+  }
+
+  applyPreset(name) {
+    const preset = $('camera-preset');
+    preset.value = name;
+    const cam = this.cameras.find((c) => c.name === name);
+    if (cam) this.rig.applyPreset(cam);
+    $('fov').value = String(this.rig.camera.fov);
+    $('fov-value').textContent = `${Math.round(this.rig.camera.fov)}°`;
+  }
+
+  // The user moved the camera: no preset any more.
+  markFree() {
+    $('camera-preset').value = 'orbit';
+    $('fov-value').textContent = `${Math.round(this.rig.camera.fov)}°`;
+  }
+
+  showExposure(ev) {
+    $('exposure-value').textContent = `EV ${ev.toFixed(1)}`;
+  }
+
+  _modeControls() {
+    const tone = this.viewer.display.mode === 'tonemapped';
+    $('tonemap-controls').style.display = tone ? '' : 'none';
+    $('false-colour-controls').style.display = tone ? 'none' : '';
+  }
+
+  afterRender() {
+    const used = this.viewer.used;
+    if (this.viewer.display.autoExposure && used.mode === 'tonemapped') {
+      const ex = $('exposure');
+      if (document.activeElement !== ex) ex.value = String(used.ev100.toFixed(1));
+      this.showExposure(used.ev100);
+    }
+    const fov = $('fov');
+    if (document.activeElement !== fov && Number(fov.value) !== this.rig.camera.fov) {
+      fov.value = String(this.rig.camera.fov);
+      $('fov-value').textContent = `${Math.round(this.rig.camera.fov)}°`;
+    }
+  }
+}
