@@ -84,8 +84,14 @@ struct StudioServer::Impl {
   const TransferFile& transfer() const { return *relit.transfer; }
   const Scene& scene() const { return relit.transfer->scene; }
 
+  // Replies may quote what a client sent (a parse error's "last read"), cut inside a UTF-8
+  // sequence: such bytes are replaced (U+FFFD), never thrown on.
+  static std::string text_of(const nlohmann::json& message) {
+    return message.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  }
+
   void send_json(ConnectionId to, const nlohmann::json& message) {
-    transport->send(to, message.dump(), false);
+    transport->send(to, text_of(message), false);
   }
 
   // Relights with `state` (the worker's relighter) and makes the frame.
@@ -149,7 +155,7 @@ struct StudioServer::Impl {
                          {"state", p.document}};
         to = clients;
       }
-      const std::string state_text = state_message.dump();
+      const std::string state_text = text_of(state_message);
       for (const ConnectionId c : to) {
         transport->send(c, state_text, false);
         transport->send(c, *frame, true, true);

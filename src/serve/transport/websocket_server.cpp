@@ -8,6 +8,7 @@
 
 #include <atomic>
 #include <csignal>
+#include <iostream>
 #include <map>
 #include <mutex>
 #include <stdexcept>
@@ -90,13 +91,21 @@ WebSocketServer::WebSocketServer(const WebSocketServerOptions& options, WebSocke
   e.set_message_handler([&s](Handle h, Endpoint::message_ptr m) {
     const auto it = s.ids.find(h);
     if (it == s.ids.end() || !s.handlers.message) return;
-    s.handlers.message(it->second, m->get_payload(),
-                       m->get_opcode() == websocketpp::frame::opcode::binary);
+    try {  // a handler's failure must not end the event loop (and every other connection)
+      s.handlers.message(it->second, m->get_payload(),
+                         m->get_opcode() == websocketpp::frame::opcode::binary);
+    } catch (const std::exception& e) {
+      std::cerr << "relight serve: internal error on a message: " << e.what() << std::endl;
+    }
   });
   e.set_http_handler([&s](Handle h) {
     const Endpoint::connection_ptr c = s.endpoint.get_con_from_hdl(h);
     HttpResponse r{404, "text/plain; charset=utf-8", "not found\n"};
-    if (s.handlers.http) r = s.handlers.http(c->get_request().get_method(), path_of(c->get_resource()));
+    try {
+      if (s.handlers.http) r = s.handlers.http(c->get_request().get_method(), path_of(c->get_resource()));
+    } catch (const std::exception& e) {
+      r = {500, "text/plain; charset=utf-8", std::string("internal error: ") + e.what() + "\n"};
+    }
     c->set_status(static_cast<websocketpp::http::status_code::value>(r.status));
     c->replace_header("Content-Type", r.content_type);
     c->replace_header("Cache-Control", "no-store");

@@ -1,0 +1,133 @@
+// What the studio's node tests share: start `relight serve` on a free port, talk to it over
+// WebSocket (the `ws` package from studio/node_modules), decode its binary messages
+// (docs/studio-protocol.md) and read the server's memory.
+import { spawn } from 'node:child_process';
+import { createRequire } from 'node:module';
+import fs from 'node:fs';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+const here = path.dirname(fileURLToPath(import.meta.url));
+export const studioDir = path.resolve(here, '../../studio');
+export const requireStudio = createRequire(path.join(studioDir, 'package.json'));
+const WebSocket = requireStudio('ws');
+
+export const relightBinary = process.env.RELIGHT_BINARY;
+export const studioScene = process.env.STUDIO_SCENE;
+if (!relightBinary || !studioScene) {
+  throw new Error('set RELIGHT_BINARY and STUDIO_SCENE (ctest does: tests/studio/CMakeLists)');
+}
+
+// Starts `relight serve SCENE --port 0` and resolves when it prints its URL.
+export function startServer(extraArgs = []) {
+  return new Promise((resolve, reject) => {
+    const proc = spawn(relightBinary, ['serve', studioScene, '--port', '0', ...extraArgs], {
+      stdio: ['ignore', 'pipe', 'pipe'],
+    });
+    let out = '', err = '';
+    const timer = setTimeout(() => reject(new Error(`no URL after 60 s: ${out} ${err}`)), 60000);
+    proc.stdout.on('data', (d) => {
+      out += d;
+      const m = out.match(/relight studio: (http:\/\/[^\s]+)/);
+      if (m) {
+        clearTimeout(timer);
+        const url = new URL(m[1]);
+        resolve({ proc, url: m[1], ws: `ws://${url.host}/ws`, port: Number(url.port),
+                  stderr: () => err });
+      }
+    });
+    proc.stderr.on('data', (d) => { err += d; });
+    proc.on('exit', (code) => { clearTimeout(timer); reject(new Error(`serve exited ${code}: ${err}`)); });
+  });
+}
+
+export async function stopServer(server) {
+  if (server.proc.exitCode !== null) return server.proc.exitCode;
+  const exited = new Promise((resolve) => server.proc.once('exit', (code, signal) => resolve(code ?? signal)));
+  server.proc.kill('SIGTERM');
+  return exited;
+}
+
+// Resident memory of a process in KiB (VmRSS of /proc/PID/status).
+export function residentKiB(pid) {
+  const status = fs.readFileSync(`/proc/${pid}/status`, 'utf8');
+  return Number(status.match(/VmRSS:\s+(\d+)/)[1]);
+}
+
+// A WebSocket client that queues what it receives: text as parsed JSON, binary as Buffers.
+export class Client {
+  constructor(url) {
+    this.ws = new WebSocket(url);
+    this.queue = [];
+    this.waiters = [];
+    this.closed = null;
+    this.ws.on('message', (data, isBinary) => {
+      const m = isBinary ? { binary: true, tag: data.subarray(0, 4).toString('latin1'), data }
+                         : { binary: false, json: JSON.parse(data.toString()) };
+      this.queue.push(m);
+      this.wake();
+    });
+    this.ws.on('close', (code) => { this.closed = code; this.wake(); });
+    this.ws.on('error', () => {});
+    this.opened = new Promise((resolve, reject) => {
+      this.ws.once('open', resolve);
+      this.ws.once('error', reject);
+    });
+  }
+  wake() { for (const w of this.waiters.splice(0)) w(); }
+  // The next message matching `predicate` (earlier ones are dropped).
+  async next(predicate = () => true, timeoutMs = 30000) {
+    const deadline = Date.now() + timeoutMs;
+    for (;;) {
+      while (this.queue.length) {
+        const m = this.queue.shift();
+        if (predicate(m)) return m;
+      }
+      if (this.closed !== null) throw new Error(`connection closed (${this.closed})`);
+      const left = deadline - Date.now();
+      if (left <= 0) throw new Error('timed out waiting for a message');
+      await new Promise((resolve) => {
+        const t = setTimeout(resolve, left);
+        this.waiters.push(() => { clearTimeout(t); resolve(); });
+      });
+    }
+  }
+  nextJson(type, timeoutMs) {
+    return this.next((m) => !m.binary && m.json.type === type, timeoutMs).then((m) => m.json);
+  }
+  nextFrame(timeoutMs) {
+    return this.next((m) => m.binary && m.tag === 'RLFR', timeoutMs).then((m) => decodeFrame(m.data));
+  }
+  send(value) { this.ws.send(typeof value === 'string' || Buffer.isBuffer(value) ? value : JSON.stringify(value)); }
+  close() { this.ws.close(); }
+}
+
+export async function connect(url) {
+  const c = new Client(url);
+  await c.opened;
+  return c;
+}
+
+function halfToFloat(h) {
+  const sign = h & 0x8000 ? -1 : 1;
+  const e = (h >> 10) & 0x1f, m = h & 0x3ff;
+  if (e === 0) return sign * m * 2 ** -24;
+  if (e === 31) return m ? NaN : sign * Infinity;
+  return sign * (1 + m / 1024) * 2 ** (e - 15);
+}
+
+export function decodeFrame(buf) {
+  const frame = buf.readUInt32LE(4), seq = buf.readUInt32LE(8);
+  const v = buf.readUInt32LE(12), s = buf.readUInt32LE(16);
+  const ms = buf.readFloatLE(20);
+  const radiance = new Float32Array(3 * v), illuminance = new Float32Array(v);
+  for (let i = 0; i < v; ++i) {
+    for (let c = 0; c < 3; ++c) radiance[3 * i + c] = halfToFloat(buf.readUInt16LE(24 + 8 * i + 2 * c));
+    illuminance[i] = halfToFloat(buf.readUInt16LE(24 + 8 * i + 6));
+  }
+  const sensors = new Float32Array(s);
+  for (let k = 0; k < s; ++k) sensors[k] = buf.readFloatLE(24 + 8 * v + 4 * k);
+  return { frame, seq: seq === 0xffffffff ? null : seq, vertices: v, ms, radiance, illuminance, sensors };
+}
+
+export const mean = (values) => values.reduce((a, b) => a + b, 0) / values.length;
