@@ -83,7 +83,8 @@ export class DistributionEditor {
       el('div', { class: 'row' }, [el('span', { class: 'row-label', text: 'Luminaire' }), this.lumSelect]),
       this.canvas,
       key,
-      el('div', { class: 'row' }, [el('label', { class: 'check' }, [c90, ' C90–C270']), el('span', { class: 'spacer' }), toCurve, reset]),
+      el('div', { class: 'row' }, [el('label', { class: 'check' }, [c90, ' C90–C270 plane'])]),
+      el('div', { class: 'row' }, [toCurve, reset]),
       this.info,
       this.table,
     );
@@ -233,7 +234,7 @@ export class DistributionEditor {
     ctx.textBaseline = 'alphabetic';
     ctx.fillText('C0 →', f.w - 36, 12);
     ctx.fillText('← C180', 4, 12);
-    ctx.fillText('cd', f.cx + 3, f.cy - 3);
+    ctx.fillText('I(γ) in cd', 4, f.h - 6);
 
     const curve = (gammas, values, side, style) => {
       if (!gammas || !values) return;

@@ -186,7 +186,7 @@ export function formatValue(v) {
   if (!Number.isFinite(v)) return '–';
   const a = Math.abs(v);
   if (a === 0) return '0';
-  if (a >= 1000) return Math.round(v).toLocaleString('en-US');
+  if (a >= 1000) return String(Math.round(v));
   if (a >= 100) return v.toFixed(0);
   if (a >= 10) return v.toFixed(1);
   if (a >= 0.01) return v.toFixed(2);

@@ -89,6 +89,7 @@ function onText(msg) {
       return onHello(msg);
     case 'state': {
       const how = store.applyRemote(msg);
+      if (how === 'mine') $('state-origin').textContent = `shown: this client's state (frame ${msg.frame ?? '?'})`;
       if (how === 'remote') {
         $('state-origin').textContent = `shown: state from client ${msg.client ?? '?'} (frame ${msg.frame ?? '?'})`;
         if (msg.seq == null || !store.sentTime(msg.seq)) notice(`Lighting changed by client ${msg.client ?? '?'}`);
@@ -180,6 +181,7 @@ function onBinary(tag, buffer) {
 // ---- rendering hooks
 
 viewer.beforeRender.push(() => sensors.colour(viewer.used));
+viewer.onDisplayChange = () => legend.update(viewer.used);
 viewer.afterRender.push((info) => {
   legend.update(viewer.used);
   labels.begin();
@@ -396,6 +398,8 @@ Object.assign(api, {
   pick: (x, y) => pickAt(x, y),
   viewer,
   store,
+  editor,
+  rig,
   canonical,
 });
 

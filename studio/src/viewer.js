@@ -11,6 +11,7 @@ import { createDisplayMaterial } from './display_shader.js';
 import { autoExposureEv100, exposureScale, resolveScale } from './false_color.js';
 
 const MODE_CODES = { tonemapped: 0, 'false-lux': 1, 'false-luminance': 2 };
+const QUANTITY = { 'false-lux': 'lux', 'false-luminance': 'luminance' };
 const OVERLAY_LAYER = 1;
 const METER_WIDTH = 160;
 
@@ -38,7 +39,7 @@ export class Viewer {
       backFaces: 'black', // 'black' (as the CLI) | 'hidden'
     };
     // What the last picture used.
-    this.used = { ev100: 8, scale: { min: 0, max: 1, logarithmic: false }, scaleError: null };
+    this.used = { mode: 'tonemapped', quantity: null, ev100: 8, scale: { min: 0, max: 1, logarithmic: false }, scaleError: null };
     this.beforeRender = [];
     this.afterRender = [];
     this.framePending = false;
@@ -123,6 +124,10 @@ export class Viewer {
 
   setDisplay(changes) {
     Object.assign(this.display, changes);
+    // The mode (and with it the legend's unit) shows at once; the scale follows the render.
+    this.used.mode = this.display.mode;
+    this.used.quantity = QUANTITY[this.display.mode] ?? null;
+    this.onDisplayChange?.();
     this.requestRender();
   }
 
@@ -207,7 +212,7 @@ export class Viewer {
     for (const f of this.beforeRender) f();
     const d = this.display;
     const falseColour = d.mode !== 'tonemapped';
-    const quantity = d.mode === 'false-lux' ? 'lux' : d.mode === 'false-luminance' ? 'luminance' : null;
+    const quantity = QUANTITY[d.mode] ?? null;
     const autoRange = falseColour && (d.range.min === null || d.range.max === null);
     const needMeter = this.mesh && ((d.autoExposure && !falseColour) || autoRange);
     const meter = needMeter ? this._meterView(autoRange ? quantity : null) : null;

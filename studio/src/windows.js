@@ -146,7 +146,15 @@ export class WindowsPanel {
       const sky = select(SKY_TYPES, {
         title: 'CIE standard general sky (ISO 15469 / CIE S 011) type, or the traditional CIE overcast sky',
         testid: `sky-type-${b.i}`,
-        onChange: (v) => ((b.env.sky_type = v === 'overcast' ? v : Number(v)), commit()),
+        onChange: (v) => {
+          b.env.sky_type = v === 'overcast' ? v : Number(v);
+          // Skies that are not uniform in azimuth depend on where the sun is: give one.
+          if (!b.env.sun && !['overcast', '1', '3', '5'].includes(v)) {
+            b.env.sun = { latitude: 48.14, longitude: 11.58, utc_offset: 1, datetime: '2026-03-21T12:00' };
+            b.env.sun_illuminance ??= Number(v) >= 11 ? 70000 : Number(v) >= 6 ? 30000 : 0;
+          }
+          commit();
+        },
       });
       b.fields.sky_type = sky;
       f.append(row('Sky type', sky, 'Sky luminance distribution'));
@@ -179,7 +187,7 @@ export class WindowsPanel {
           ['angles', 'by azimuth and altitude'],
         ],
         {
-          title: 'Where the sun is. North is −z and east +x; azimuths from north, clockwise toward east',
+          title: 'Where the sun is. North is −z and east +x; azimuths from north, clockwise toward east. CIE sky types other than 1, 3, 5 and overcast need a sun position.',
           value: sunMode(env),
           testid: `sun-mode-${b.i}`,
           onChange: (m) => {
@@ -220,7 +228,7 @@ export class WindowsPanel {
         num('azimuth_deg', 'Azimuth', { min: -360, max: 360, unit: '°' }, 'Sun azimuth from north, clockwise toward east (180 = south)', sun);
         num('altitude_deg', 'Altitude', { min: -90, max: 90, unit: '°' }, 'Sun altitude above the horizon', sun);
       }
-      if (sunMode(env) !== 'none') num('sun_illuminance', 'Sun', { min: 0, unit: 'lx' }, 'Illuminance of the sun normal to its direction, lx (0 = no sun disc; clear sky ≈ 70000–100000)');
+      if (sunMode(env) !== 'none') num('sun_illuminance', 'Sun disc', { min: 0, unit: 'lx' }, 'Illuminance of the sun normal to its direction, lx (0 = no sun disc; clear sky ≈ 70000–100000)');
     } else if (env.type === 'map') {
       const file = el('input', { type: 'text', placeholder: 'sky.exr or sky.hdr', title: 'Equirectangular HDR map (.exr or .hdr) in cd/m²; relative paths resolve against the folder of the .rlt. Press Enter to apply.' });
       const apply = () => {
