@@ -1,0 +1,230 @@
+// The studio in a real browser (issue: browser tests in `make test`): Debian's Chromium
+// driven by playwright-core against a real `relight serve` on the demo room. The page loads
+// and draws; moving the dimmers brightens the pixels; aiming the wall washer by clicking two
+// wall points moves its bright spot towards each point; the false-colour view shows its
+// legend with units; a malformed message gets an error and the server still answers. The
+// median latency from a state change to the new frame on screen is measured and printed.
+import test from 'node:test';
+import assert from 'node:assert/strict';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+
+import { connect, requireStudio, startServer, stopServer } from './studio_support.mjs';
+
+const { chromium } = requireStudio('playwright-core');
+
+// The flags a closed network needs (the machine's env notes): no background connections.
+const kChromiumArgs = ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic',
+  '--no-first-run', '--disable-background-networking', '--disable-component-update',
+  '--disable-sync'];
+
+let server, context, page, profileDir, hello;
+const problems = [];
+
+test.before(async () => {
+  server = await startServer();
+  const probe = await connect(server.ws);  // the scene's names, as the page gets them
+  hello = await probe.nextJson('hello');
+  probe.close();
+  profileDir = fs.mkdtempSync(path.join(os.tmpdir(), 'relight-chromium-'));
+  context = await chromium.launchPersistentContext(profileDir, {
+    executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium',
+    headless: true,
+    args: kChromiumArgs,
+    viewport: { width: 1100, height: 700 },
+  });
+  page = await context.newPage();
+  page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
+  page.on('console', (m) => { if (m.type() === 'error') problems.push(`console: ${m.text()}`); });
+  await page.goto(server.url);
+  await page.evaluate(() => window.relightStudio.ready);
+});
+
+test.after(async () => {
+  await context?.close();
+  if (profileDir) fs.rmSync(profileDir, { recursive: true, force: true });
+  if (server) assert.equal(await stopServer(server), 0, server.stderr());
+});
+
+// Mean display value of the viewport's pixels, and the centroid of its brightest 2 %.
+async function pixels() {
+  // Two animation frames: whatever changed has been drawn (the client renders on demand).
+  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+  return page.evaluate(() => {
+    const canvas = document.getElementById('viewport');
+    const copy = document.createElement('canvas');
+    copy.width = canvas.width;
+    copy.height = canvas.height;
+    const ctx = copy.getContext('2d');
+    ctx.drawImage(canvas, 0, 0);
+    const { data } = ctx.getImageData(0, 0, copy.width, copy.height);
+    const n = copy.width * copy.height;
+    const y = new Float32Array(n);
+    let sum = 0;
+    for (let i = 0; i < n; ++i) {
+      y[i] = 0.2126 * data[4 * i] + 0.7152 * data[4 * i + 1] + 0.0722 * data[4 * i + 2];
+      sum += y[i];
+    }
+    window.__studioTestLuminance = window.__studioTestLuminance ?? {};
+    window.__studioTestLuminance.last = y;
+    const sorted = Float32Array.from(y).sort();
+    const threshold = sorted[Math.floor(0.98 * n)];
+    let cx = 0, cy = 0, count = 0;
+    for (let i = 0; i < n; ++i) {
+      if (y[i] >= threshold && y[i] > 0) {
+        cx += i % copy.width;
+        cy += Math.floor(i / copy.width);
+        ++count;
+      }
+    }
+    return { mean: sum / n, cx: cx / count, cy: cy / count, width: copy.width,
+             height: copy.height, cssWidth: canvas.clientWidth, cssHeight: canvas.clientHeight };
+  });
+}
+
+// Keeps the last pixels() under `name`.
+const keepPixels = (name) => page.evaluate((n) => {
+  window.__studioTestLuminance[n] = window.__studioTestLuminance.last;
+}, name);
+
+// Centroid (CSS pixels) of where image `a` is more than twice as bright as image `b` (and
+// visibly so): where the light went when it moved from b to a.
+const brighterCentroid = (a, b) => page.evaluate(([a, b]) => {
+  const ya = window.__studioTestLuminance[a], yb = window.__studioTestLuminance[b];
+  const canvas = document.getElementById('viewport');
+  const w = canvas.width, scale = canvas.width / canvas.clientWidth;
+  let cx = 0, cy = 0, n = 0;
+  for (let i = 0; i < ya.length; ++i) {
+    if (ya[i] > 2 * yb[i] + 8) {
+      cx += i % w;
+      cy += Math.floor(i / w);
+      ++n;
+    }
+  }
+  return { x: cx / n / scale, y: cy / n / scale, pixels: n };
+}, [a, b]);
+
+// Runs `action` and waits until a frame newer than the current one is on screen.
+async function afterNewFrame(action) {
+  const before = await page.evaluate(() => window.relightStudio.frames);
+  await action();
+  await page.waitForFunction((n) => window.relightStudio.frames > n, before, { timeout: 30000 });
+}
+
+async function setRange(testId, value) {
+  await afterNewFrame(() => page.locator(`[data-testid="${testId}"]`).fill(String(value)));
+}
+
+
+test('the page loads the demo room and draws it', async () => {
+  const p = await pixels();
+  assert.ok(p.mean > 5, `mean pixel value ${p.mean}`);
+  assert.ok(await page.locator('#camera-preset option').count() >= 2);
+});
+
+test('moving the dimmers brightens the pixels; latency is measured', async () => {
+  await page.locator('#auto-exposure').uncheck();
+  const count = hello.luminaires.length;
+  assert.ok(count >= 1);
+  // Daylight off by state, so only the luminaires light the room.
+  await afterNewFrame(() => page.evaluate((portals) => {
+    const s = window.relightStudio.state();
+    s.portals = Object.fromEntries(portals.map(
+      (p) => [p.name, { environment: { type: 'uniform', luminance: 0 } }]));
+    window.relightStudio.setState(s);
+  }, hello.portals));
+  for (let i = 0; i < count; ++i) await setRange(`dimmer-${i}`, 0.1);
+  const dim = await pixels();
+  for (let i = 0; i < count; ++i) await setRange(`dimmer-${i}`, 1);
+  const bright = await pixels();
+  assert.ok(bright.mean > dim.mean * 1.5, `mean ${dim.mean} → ${bright.mean}`);
+  // Latency: 20 more dimmer moves, each waiting for its frame on screen.
+  const start = await page.evaluate(() => window.relightStudio.latencies.length);
+  for (let k = 0; k < 20; ++k) await setRange('dimmer-0', k % 2 ? 1 : 0.5);
+  const latencies = (await page.evaluate(() => window.relightStudio.latencies)).slice(start);
+  const sorted = [...latencies].sort((a, b) => a - b);
+  const median = sorted[Math.floor(sorted.length / 2)];
+  console.log(`latency: state change → frame on screen, ${sorted.length} changes: median ` +
+              `${median.toFixed(1)} ms, min ${sorted[0].toFixed(1)} ms, max ${sorted.at(-1).toFixed(1)} ms ` +
+              `(pixels: mean display value ${dim.mean.toFixed(1)} at dimmer 0.1, ` +
+              `${bright.mean.toFixed(1)} at 1)`);
+  assert.ok(sorted.length >= 10);
+  assert.ok(median < 1000, `median latency ${median} ms`);
+});
+
+test('clicking a wall aims the wall washer there and its bright spot moves', async () => {
+  const names = hello.luminaires.map((l) => l.name);
+  const washer = names.findIndex((n) => /wall washer/.test(n));
+  assert.ok(washer >= 0, names.join(', '));
+  // Only the wall washer on, at full output, daylight off.
+  await afterNewFrame(() => page.evaluate(([w, names, portals]) => {
+    const api = window.relightStudio;
+    const s = api.state();
+    s.luminaires = Object.fromEntries(names.map(
+      (name, i) => [name, i === w ? { on: true, dimmer: 1 } : { on: false }]));
+    s.portals = Object.fromEntries(portals.map(
+      (p) => [p.name, { environment: { type: 'uniform', luminance: 0 } }]));
+    api.setState(s);
+  }, [washer, names, hello.portals]));
+  // A fixed exposure, so that two images compare pixel by pixel.
+  await page.locator('#auto-exposure').uncheck();
+  await page.locator('#exposure').fill('5');
+  const p0 = await pixels();
+  // Wall points: canvas pixels whose pick hits a vertical surface at mid height.
+  const walls = [];
+  for (const fx of [0.1, 0.25, 0.4, 0.55, 0.7, 0.85]) {
+    const x = Math.round(fx * p0.cssWidth), y = Math.round(0.4 * p0.cssHeight);
+    const hit = await page.evaluate(([x, y]) => window.relightStudio.pick(x, y), [x, y]);
+    if (hit.hit && Math.abs(hit.normal[1]) < 0.1 && hit.point[1] > 0.5 && hit.point[1] < 2.2) {
+      walls.push({ x, y, point: hit.point });
+    }
+  }
+  assert.ok(walls.length >= 2, `wall points found: ${JSON.stringify(walls)}`);
+  const targets = [walls[0], walls.at(-1)];
+  for (const [k, t] of targets.entries()) {
+    await page.locator(`[data-testid="aim-${washer}"]`).click();
+    await afterNewFrame(() => page.mouse.click(t.x, t.y));
+    const target = await page.evaluate((n) => window.relightStudio.state().luminaires[n].target, names[washer]);
+    for (let c = 0; c < 3; ++c) assert.ok(Math.abs(target[c] - t.point[c]) < 0.05, `target ${target} vs ${t.point}`);
+    await pixels();
+    if (process.env.STUDIO_SHOTS) await page.screenshot({ path: `${process.env.STUDIO_SHOTS}/aim-${k}.png` });
+    await keepPixels(`aim${k}`);
+  }
+  // Where the light arrived (aim 1 brighter than aim 0) and where it left.
+  const arrived = await brighterCentroid('aim1', 'aim0');
+  const left = await brighterCentroid('aim0', 'aim1');
+  console.log(`aim: clicks at (${targets.map((t) => `${t.x}, ${t.y}`).join('), (')}); the light ` +
+              `left (${left.x.toFixed(0)}, ${left.y.toFixed(0)}) [${left.pixels} px] and arrived at ` +
+              `(${arrived.x.toFixed(0)}, ${arrived.y.toFixed(0)}) [${arrived.pixels} px]`);
+  const dist = (p, t) => Math.hypot(p.x - t.x, p.y - t.y);
+  assert.ok(arrived.pixels > 100 && left.pixels > 100);
+  assert.ok(dist(arrived, targets[1]) < dist(arrived, targets[0]), 'the spot arrived at the second click');
+  assert.ok(dist(left, targets[0]) < dist(left, targets[1]), 'the spot left the first click');
+});
+
+test('false colour shows a legend with units, tone-mapped view hides it', async () => {
+  await page.locator('#view-mode').selectOption('false-lux');
+  await page.waitForFunction(() => getComputedStyle(document.getElementById('legend')).display !== 'none');
+  const legend = await page.locator('#legend').innerText();
+  assert.match(legend, /lx/);
+  assert.ok((legend.match(/\d/g) || []).length >= 3, legend);
+  await page.locator('#view-mode').selectOption('false-luminance');
+  assert.match(await page.locator('#legend').innerText(), /cd\/m²|cd\/m2/);
+  await page.locator('#view-mode').selectOption('tonemapped');
+  await page.waitForFunction(() => getComputedStyle(document.getElementById('legend')).display === 'none');
+});
+
+test('a malformed message gets an error reply and the server still answers', async () => {
+  const before = await page.evaluate(() => ({ errors: window.relightStudio.errors.length,
+                                              pongs: window.relightStudio.pongs }));
+  await page.evaluate(() => window.relightStudio.sendRaw('{"type":"state","state":{"luminaires":'));
+  await page.waitForFunction((n) => window.relightStudio.errors.length > n, before.errors);
+  await page.evaluate(() => window.relightStudio.send({ type: 'ping', seq: 1 }));
+  await page.waitForFunction((n) => window.relightStudio.pongs > n, before.pongs);
+  await setRange('dimmer-0', 0.42);  // and still relights
+});
+
+test('no page errors or console errors', () => {
+  assert.deepEqual(problems.filter((p) => !/Server: /.test(p)), []);
+});
