@@ -68,6 +68,12 @@ WebSocketServer::WebSocketServer(const WebSocketServerOptions& options, WebSocke
   e.set_max_message_size(options.max_message_bytes);
   e.set_max_http_body_size(64 * 1024);
 
+  // Frames go out at once: without TCP_NODELAY, Nagle's algorithm holds a frame's last segment
+  // until the client's delayed ACK (up to 40 ms on Linux), measured as ~100 ms of latency.
+  e.set_socket_init_handler([](Handle, asio::ip::tcp::socket& socket) {
+    asio::error_code ec;
+    socket.set_option(asio::ip::tcp::no_delay(true), ec);
+  });
   e.set_validate_handler([&s](Handle h) {
     const Endpoint::connection_ptr c = s.endpoint.get_con_from_hdl(h);
     return path_of(c->get_resource()) == s.options.websocket_path;
