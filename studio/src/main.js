@@ -188,16 +188,21 @@ viewer.afterRender.push((info) => {
   sensors.drawLabels(labels);
   markers.drawLabels(labels);
   if (info.frameDrawn) {
-    api.frames++;
-    api.lastFrameNumber = session.pendingFrameNumber;
-    $('frame-number').textContent = `frame ${api.lastFrameNumber}`;
-    const now = performance.now();
-    for (const p of session.pendingLatency) api.latencies.push(now - p.t0);
-    if (session.pendingLatency.length) {
-      $('latency').textContent = `latency ${(now - session.pendingLatency.at(-1).t0).toFixed(0)} ms`;
-    }
+    // A frame counts as drawn at the first animation frame after the one that drew it,
+    // when the browser has composited it: latency runs from the state message's send to
+    // then.
+    const pending = session.pendingLatency;
+    const number = session.pendingFrameNumber;
     session.pendingLatency = [];
-    if (session.hello && session.geometry) resolveReady();
+    requestAnimationFrame(() => {
+      const now = performance.now();
+      api.frames++;
+      api.lastFrameNumber = number;
+      $('frame-number').textContent = `frame ${number}`;
+      for (const p of pending) api.latencies.push(now - p.t0);
+      if (pending.length) $('latency').textContent = `latency ${(now - pending.at(-1).t0).toFixed(0)} ms`;
+      if (session.hello && session.geometry) resolveReady();
+    });
   }
 });
 

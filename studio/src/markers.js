@@ -23,6 +23,7 @@ export class Markers {
   setScene(hello) {
     this.hello = hello;
     this.group.clear();
+    this._key = null;
     const b = hello.bounds;
     const size = b ? Math.hypot(...b.max.map((v, i) => v - b.min[i])) : 8;
     this.radius = Math.max(0.02, size * 0.006);
@@ -38,8 +39,16 @@ export class Markers {
     this.update();
   }
 
+  // Follows the state; asks for a render only when a marker looks different (a state
+  // change that only dims a luminaire needs none until its frame arrives).
   update() {
     if (!this.hello) return;
+    const key = JSON.stringify([this.visible, this.selected, this.items.map((it) => {
+      const e = effectiveLuminaire(it.lum, this.store.doc.luminaires?.[it.lum.name]);
+      return [e.on, e.color, e.aim, e.target];
+    })]);
+    if (key === this._key) return;
+    this._key = key;
     this.group.visible = this.visible;
     this.items.forEach((it, i) => {
       const eff = effectiveLuminaire(it.lum, this.store.doc.luminaires?.[it.lum.name]);

@@ -15,10 +15,29 @@ const QUANTITY = { 'false-lux': 'lux', 'false-luminance': 'luminance' };
 const OVERLAY_LAYER = 1;
 const METER_WIDTH = 160;
 
+// Whether WebGL runs in software (SwiftShader, llvmpipe): there multisampling costs more
+// than it is worth (a render of the room takes several times longer), so it is left off
+// unless the page is opened with ?antialias=1.
+function softwareRenderer() {
+  try {
+    const gl = document.createElement('canvas').getContext('webgl2');
+    const ext = gl?.getExtension('WEBGL_debug_renderer_info');
+    const name = ext ? gl.getParameter(ext.UNMASKED_RENDERER_WEBGL) : '';
+    gl?.getExtension('WEBGL_lose_context')?.loseContext();
+    return /swiftshader|llvmpipe|softpipe|software/i.test(name);
+  } catch {
+    return false;
+  }
+}
+
 export class Viewer {
   constructor(canvas) {
     this.canvas = canvas;
-    this.renderer = new THREE.WebGLRenderer({ canvas, antialias: true, preserveDrawingBuffer: true });
+    // preserveDrawingBuffer: screenshots and tests read the canvas after it was shown.
+    this.software = softwareRenderer();
+    const param = new URLSearchParams(location.search).get('antialias');
+    const antialias = param !== null ? param !== '0' : !this.software;
+    this.renderer = new THREE.WebGLRenderer({ canvas, antialias, preserveDrawingBuffer: true });
     this.renderer.setPixelRatio(Math.min(window.devicePixelRatio || 1, 2));
     this.renderer.toneMapping = THREE.NoToneMapping;
     this.scene = new THREE.Scene();
