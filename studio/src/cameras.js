@@ -36,11 +36,16 @@ export class CameraRig {
     this.controls.addEventListener('change', () => {
       this.viewer.requestRender();
     });
-    this.controls.addEventListener('start', () => (this._userStarted = true));
+    // A press that did not move the camera (a click to probe or aim) keeps the preset.
+    this.controls.addEventListener('start', () => (this._startPose = this._pose()));
     this.controls.addEventListener('end', () => {
-      if (this._userStarted) this.onUserMove?.();
-      this._userStarted = false;
+      if (this._startPose && this._startPose !== this._pose()) this.onUserMove?.();
+      this._startPose = null;
     });
+  }
+
+  _pose() {
+    return JSON.stringify([this.camera.position, this.camera.quaternion, this.camera.zoom]);
   }
 
   // A scene camera {eye, target, up, fov_deg}, exactly.

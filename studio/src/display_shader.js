@@ -12,7 +12,7 @@
 //  * mode 3, metering: (Y, E, 0, 1) into a float target, for automatic exposure and the
 //    automatic false-colour range.
 // Back faces absorb (the CLI shows them as "no surface": black, grey in false colour) unless
-// the material is two-sided (window glass).
+// the material is two-sided (window glass, whose illuminance is shown as no surface too).
 import * as THREE from 'three';
 import { RAMP } from './false_color.js';
 
@@ -69,7 +69,9 @@ void main() {
     gl_FragColor = vec4(Y, E, 0.0, 1.0);
     return;
   }
-  if (!front) {
+  // Back faces show no surface; window glass has no illuminance of its own (the CLI sees
+  // the sky through it and leaves its lux undefined): grey in the lux view.
+  if (!front || (uTwoSided && uMode == 1)) {
     gl_FragColor = vec4(uMode == 0 ? vec3(0.0) : uNoSurface / 255.0, 1.0);
     return;
   }

@@ -241,7 +241,8 @@ function showProbe(reply) {
     viewer.requestRender();
     return;
   }
-  const where = reply.portal ? `window “${reply.portal}”` : reply.material;
+  // (material is null when the .rlt predates per-triangle materials)
+  const where = reply.portal ? `window “${reply.portal}”` : reply.material ?? `triangle ${reply.triangle}`;
   markers.probe = { point: reply.point, text: `${formatValue(reply.illuminance)} lx · ${formatValue(reply.luminance)} cd/m²` };
   box.hidden = false;
   box.innerHTML = '';
