@@ -202,7 +202,12 @@ export class LuminairePanel {
       p.append(row('File', file, 'Photometry file'));
     }
     const flux = this.distributions.get(name)?.flux_lm;
-    if (flux !== undefined) p.append(el('div', { class: 'row sub hint', text: `flux ${Math.round(flux)} lm (distribution × dimmer as the server reports it)` }));
+    b.fluxLine = null;
+    if (flux !== undefined) {
+      b.fluxLine = el('div', { class: 'row sub hint', title: 'Luminous flux of the distribution (from the server), and what the luminaire emits at its dimmer setting' });
+      b.flux = flux;
+      p.append(b.fluxLine);
+    }
   }
 
   refresh() {
@@ -224,6 +229,7 @@ export class LuminairePanel {
       const pending = this._pendingFileType?.name === b.lum.name ? this._pendingFileType.type : null;
       setIfIdle(b.distType, pending || eff.distribution?.type);
       this._params(b, eff);
+      if (b.fluxLine) b.fluxLine.textContent = `${Math.round(b.flux)} lm; emits ${Math.round(b.flux * (eff.on ? eff.dimmer : 0))} lm`;
       b.aimText.textContent = eff.target
         ? `target (${eff.target.map((x) => x.toFixed(2)).join(', ')}) m`
         : `direction (${eff.aim.map((x) => x.toFixed(2)).join(', ')})${eff.aimChanged ? '' : " — scene's"}`;
@@ -240,7 +246,7 @@ export class LuminairePanel {
     const b = this.blocks.find((x) => x.lum.name === name);
     if (b) {
       b.paramsKey = null;
-      this._params(b, effectiveLuminaire(b.lum, this.entry(name)));
+      this.refresh();
     }
   }
 }

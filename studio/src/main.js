@@ -146,6 +146,8 @@ function onHello(hello) {
   windowsPanel.setScene(hello);
   editor.setScene(hello);
   store.reset(hello.state || {});
+  // Every luminaire's distribution: flux for the panels, exact C0 samples for the editor.
+  for (const l of hello.luminaires) requestDistribution(l.name);
 }
 
 function onBinary(tag, buffer) {

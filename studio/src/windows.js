@@ -11,22 +11,22 @@ import { hexToLinear, linearToHex } from './colors.js';
 import { el, numberInput, row, select, setIfIdle, sliderNumber } from './ui.js';
 
 const SKY_TYPES = [
-  ['overcast', 'overcast (traditional CIE)'],
-  ['1', '1 overcast, steep gradation, uniform in azimuth'],
-  ['2', '2 overcast, steep gradation, brighter toward the sun'],
-  ['3', '3 overcast, moderate gradation, uniform in azimuth'],
-  ['4', '4 overcast, moderate gradation, brighter toward the sun'],
-  ['5', '5 sky of uniform luminance'],
-  ['6', '6 partly cloudy, no gradation, brighter toward the sun'],
-  ['7', '7 partly cloudy, brighter circumsolar region'],
-  ['8', '8 partly cloudy, distinct solar corona'],
+  ['overcast', 'overcast (traditional)'],
+  ['1', '1 overcast, steep'],
+  ['2', '2 overcast, steep, sun side'],
+  ['3', '3 overcast, moderate'],
+  ['4', '4 overcast, moderate, sun side'],
+  ['5', '5 uniform'],
+  ['6', '6 partly cloudy, sun side'],
+  ['7', '7 partly cloudy, bright sun region'],
+  ['8', '8 partly cloudy, solar corona'],
   ['9', '9 partly cloudy, obscured sun'],
-  ['10', '10 partly cloudy, brighter circumsolar region'],
-  ['11', '11 white-blue sky, distinct solar corona'],
-  ['12', '12 CIE standard clear sky, low turbidity'],
-  ['13', '13 CIE standard clear sky, polluted'],
-  ['14', '14 cloudless turbid sky, broad solar corona'],
-  ['15', '15 white-blue turbid sky, broad solar corona'],
+  ['10', '10 partly cloudy, bright sun region'],
+  ['11', '11 white-blue, solar corona'],
+  ['12', '12 clear, low turbidity'],
+  ['13', '13 clear, polluted'],
+  ['14', '14 cloudless turbid, broad corona'],
+  ['15', '15 white-blue turbid, broad corona'],
 ];
 
 const clone = (x) => JSON.parse(JSON.stringify(x ?? null));
