@@ -7,7 +7,7 @@ import { binaryTag, messages } from './protocol.js';
 export class Connection {
   constructor(url, handlers) {
     this.url = url;
-    this.handlers = handlers; // {open, close, text(msg), binary(tag, buffer), status(text)}
+    this.handlers = handlers; // {open, close, text(msg), binary(tag, buffer), status(text), clientError(text)}
     this.seq = 0;
     this.ws = null;
     this.retryMs = 1000;
@@ -45,7 +45,7 @@ export class Connection {
         try {
           msg = JSON.parse(event.data);
         } catch (e) {
-          this.handlers.text?.({ type: 'error', message: `client: server sent malformed JSON: ${e.message}` });
+          this.handlers.clientError?.(`server sent malformed JSON: ${e.message}`);
           return;
         }
         if (msg.type === 'pong' && this.pingSent.has(msg.seq)) {

@@ -26,7 +26,8 @@ const api = {
   ready: new Promise((r) => (resolveReady = r)),
   frames: 0,
   lastFrameNumber: null,
-  errors: [],
+  errors: [], // the server's error messages
+  clientErrors: [], // what this client could not decode or apply
   pongs: 0,
   latencies: [],
 };
@@ -46,6 +47,7 @@ const connection = new Connection(`${proto}//${location.host}/ws`, {
   status: showConnection,
   text: onText,
   binary: onBinary,
+  clientError,
   close: () => {
     session.hello = null;
     session.geometry = false;
@@ -174,10 +176,14 @@ function onBinary(tag, buffer) {
       console.warn(`relight studio: unknown binary message "${tag}"`);
     }
   } catch (e) {
-    api.errors.push(`client: ${e.message}`);
-    notice(`Client: ${e.message}`, 'error');
-    console.error(e);
+    clientError(e.message);
   }
+}
+
+function clientError(message) {
+  api.clientErrors.push(message);
+  notice(`Client: ${message}`, 'error');
+  console.error(`relight studio: ${message}`);
 }
 
 // ---- rendering hooks
