@@ -119,6 +119,7 @@ export class DistributionEditor {
     if (this.lumSelect) this.lumSelect.value = String(i);
     this.drag = null;
     this.request(this.name);
+    this.onSelect?.(i);
     this._syncPoints();
     this.draw();
   }

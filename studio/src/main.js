@@ -71,6 +71,11 @@ const luminairePanel = new LuminairePanel($('luminaires'), store, distributions,
 });
 const editor = new DistributionEditor($('distribution'), store, distributions, requestDistribution);
 const windowsPanel = new WindowsPanel($('windows'), store);
+// The luminaire in the distribution editor is drawn larger in the view.
+editor.onSelect = (i) => {
+  markers.selected = i;
+  markers.update();
+};
 
 const session = {
   hello: null,
@@ -113,7 +118,8 @@ function onText(msg) {
       return;
     case 'error': {
       api.errors.push(msg.message);
-      notice(`Server: ${msg.message}`, 'error');
+      const undone = store.refused(msg.seq);
+      notice(`Server: ${msg.message}${undone ? ' (the change was undone)' : ''}`, 'error');
       const p = session.picks.get(msg.seq);
       if (p) {
         session.picks.delete(msg.seq);

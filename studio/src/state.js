@@ -5,7 +5,8 @@
 // (the server coalesces anyway: latest state wins). The server's `state` replies are
 // matched to what this client sent: an echo of our own latest state changes nothing, an
 // echo of an older one of ours is stale and ignored, any other state (another client, or a
-// message sent around this store) replaces the document and refreshes the panels.
+// message sent around this store) replaces the document and refreshes the panels. A state
+// the server refuses (an error reply to it) is undone: the document returns to the one shown.
 // Also: save the document as a JSON download and load one from a file.
 
 export const clone = (x) => (x === undefined ? undefined : JSON.parse(JSON.stringify(x)));
@@ -64,6 +65,7 @@ export class StateStore {
   // A new connection: the server's current state.
   reset(doc) {
     this.doc = clone(doc || {});
+    this.shown = clone(this.doc);
     this.sent.clear();
     this.latestSeq = null;
     this.lastSentCanon = canonical(this.doc);
@@ -130,6 +132,7 @@ export class StateStore {
 
   // A `state` message from the server.
   applyRemote(msg) {
+    this.shown = clone(msg.state || {});
     const mine = msg.seq != null && this.sent.get(msg.seq);
     const isMine =
       mine && (this.myClient != null ? msg.client === this.myClient : canonical(msg.state) === mine.canon);
@@ -145,6 +148,18 @@ export class StateStore {
     this.lastSentCanon = canonical(this.doc);
     this._notify('remote');
     return 'remote';
+  }
+
+  // An error reply: when it refuses the latest state this store sent, the document goes back
+  // to the state the server shows (otherwise every later edit would resend the refused
+  // value and be refused too). Returns whether it did.
+  refused(seq) {
+    if (seq == null || seq !== this.latestSeq || !this.sent.has(seq)) return false;
+    this._scheduled = false;
+    this.doc = clone(this.shown ?? {});
+    this.lastSentCanon = canonical(this.doc);
+    this._notify('remote');
+    return true;
   }
 
   // Download the document as JSON.
