@@ -141,6 +141,7 @@ export class LuminairePanel {
 
   _setType(lum, type) {
     const name = lum.name;
+    if (this._pendingFileType?.name === name) this._pendingFileType = null;
     this._edit(name, (e) => {
       const eff = effectiveLuminaire(lum, e);
       const old = eff.distribution;

@@ -17,6 +17,9 @@ export class ViewPanel {
 
     $('nav-mode').addEventListener('change', (e) => {
       rig.setMode(e.target.value);
+      $('nav-hint').textContent = e.target.value === 'walk'
+        ? 'Walk: W A S D or arrows move, Q / E down / up, Shift runs, drag to look, wheel changes the field of view. Click a surface to read its lux and cd/m²; Esc clears.'
+        : 'Orbit: drag to turn, right-drag to pan, wheel to zoom. Click a surface to read its illuminance and luminance; Esc clears.';
       viewer.canvas.focus();
     });
 

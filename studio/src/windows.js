@@ -108,7 +108,8 @@ export class WindowsPanel {
 
   _switchType(b, type) {
     const cur = this.effectiveEnv(b.p);
-    if (cur?.type === type) return;
+    b.pendingMap = false;
+    if (cur?.type === type) return this.refresh();
     if (b.p.environment?.type === type) return this._setEnv(b.p, clone(b.p.environment));
     if (type === 'uniform') return this._setEnv(b.p, { type, luminance: 1000 });
     if (type === 'cie_sky') return this._setEnv(b.p, { type, sky_type: 'overcast', horizontal_illuminance: 10000 });
