@@ -182,6 +182,7 @@ struct StudioServer::Impl {
       std::lock_guard lock(mutex);
       clients.insert(id);
       hello = hello_message(transfer(), rlt.filename().string(), shown.document);
+      hello["client"] = id;
       frame = shown.frame;
     }
     send_json(id, hello);

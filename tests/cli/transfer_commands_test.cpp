@@ -149,7 +149,7 @@ TEST_F(TransferCommands, RltHoldsTheRegisteredSections) {
   const RltFile f = RltFile::open(rlt_);
   const std::size_t receivers = vertices_ + sensors_;
   const std::size_t k = static_cast<std::size_t>(sh_count(kShOrder));
-  EXPECT_EQ(f.sections().size(), 6 + 5 * kLuminaires);  // no TD in "exact" mode
+  EXPECT_EQ(f.sections().size(), 7 + 5 * kLuminaires);  // no TD in "exact" mode
 
   const auto meta = nlohmann::json::parse(f.text(rlt_fourcc("META")));
   EXPECT_EQ(meta.at("format"), "relight transfer");
@@ -173,6 +173,8 @@ TEST_F(TransferCommands, RltHoldsTheRegisteredSections) {
   EXPECT_EQ(f.view<float>(rlt_fourcc("MALB")).size(), 3 * vertices_);
   EXPECT_EQ(f.view<std::uint32_t>(rlt_fourcc("MTRI")).size(), 3 * triangles);
   EXPECT_EQ(f.view<std::uint32_t>(rlt_fourcc("MPRT")).size(), triangles);
+  EXPECT_EQ(f.view<std::uint32_t>(rlt_fourcc("MMAT")).size(), triangles);
+  for (const std::uint32_t m : f.view<std::uint32_t>(rlt_fourcc("MMAT"))) EXPECT_EQ(m, 0u);
   for (float a : f.view<float>(rlt_fourcc("MALB"))) EXPECT_FLOAT_EQ(a, 0.7f);
 
   auto type = [](char a, char b, std::size_t j) {
@@ -248,7 +250,7 @@ TEST_F(TransferCommands, ShDirectModeStoresDirectShSections) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("sh_order 3, direct sh"), std::string::npos) << r.out;
   const RltFile f = RltFile::open(rlt);
-  EXPECT_EQ(f.sections().size(), 6 + 6 * kLuminaires);
+  EXPECT_EQ(f.sections().size(), 7 + 6 * kLuminaires);
   const std::size_t receivers = vertices_ + sensors_;
   for (std::size_t j = 0; j < kLuminaires; ++j) {
     const std::uint32_t td = 'T' | 'D' << 8 | static_cast<std::uint32_t>(j) << 16;
