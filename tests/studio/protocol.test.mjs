@@ -63,6 +63,26 @@ test('a state change relights: dimming every luminaire to 0.25 quarters the ligh
   c.close();
 });
 
+test('state change → its frame back at the client: round trip measured', async () => {
+  const c = await connect(server.ws);
+  const hello = await c.nextJson('hello');
+  await c.nextFrame();
+  const times = [], serverMs = [];
+  for (let i = 0; i < 50; ++i) {
+    const t0 = performance.now();
+    c.send({ type: 'state', seq: 500 + i, state: { luminaires: allLuminaires(hello, { dimmer: i % 2 ? 1 : 0.5 }) } });
+    const f = await c.next((m) => m.binary && m.tag === 'RLFR' && m.data.readUInt32LE(8) === 500 + i);
+    times.push(performance.now() - t0);
+    serverMs.push(f.data.readFloatLE(20));
+  }
+  const median = (v) => [...v].sort((a, b) => a - b)[Math.floor(v.length / 2)];
+  console.log(`round trip: state message → its RLFR frame decoded-ready at a node client, 50 ` +
+              `dimmer changes: median ${median(times).toFixed(2)} ms (server's own relight and ` +
+              `encoding: median ${median(serverMs).toFixed(2)} ms)`);
+  assert.ok(median(times) < 1000);
+  c.close();
+});
+
 test('a burst of states is coalesced and the latest wins', async () => {
   const c = await connect(server.ws);
   const hello = await c.nextJson('hello');
