@@ -15,8 +15,8 @@ void add_serve_command(CLI::App& app, Action& action) {
   auto rlt = std::make_shared<std::string>();
   auto options = std::make_shared<StudioOptions>();
   auto client = std::make_shared<std::string>();
-  CLI::App* cmd = app.add_subcommand(
-      "serve", "Serve the studio (a browser client) on a precomputed scene");
+  CLI::App* cmd =
+      app.add_subcommand("serve", "Serve the studio (a browser client) on a precomputed scene");
   cmd->add_option("scene", *rlt, "precomputed scene (.rlt)")->required();
   add_studio_address_options(*cmd, *options);
   cmd->add_option("--client", *client, "folder of the studio client (default: the source tree's)");

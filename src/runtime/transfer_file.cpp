@@ -304,9 +304,11 @@ TransferFile open_transfer_file(const fs::path& file) {
   }
   if (t.file.find_info(kTriangleMaterials)) {
     const auto materials = t.file.view<std::uint32_t>(kTriangleMaterials);
-    if (materials.size() != t.triangles.size()) fail_input(where, "triangle materials: wrong count");
+    if (materials.size() != t.triangles.size())
+      fail_input(where, "triangle materials: wrong count");
     for (const std::uint32_t m : materials) {
-      if (m >= t.scene.materials.size()) fail_input(where, "a triangle refers to a missing material");
+      if (m >= t.scene.materials.size())
+        fail_input(where, "a triangle refers to a missing material");
     }
     t.triangle_material.assign(materials.begin(), materials.end());
   }

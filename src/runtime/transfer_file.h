@@ -36,11 +36,11 @@ struct TransferFile {
   Scene scene;  // materials, luminaires, sensors, cameras (geometry lives in the mesh below)
   std::vector<Vec3> positions;
   std::vector<Triangle> triangles;
-  std::vector<std::uint32_t> opaque_triangles;  // indices of non-portal triangles
-  std::vector<std::uint32_t> portal_triangles;  // indices of the portals' triangles
+  std::vector<std::uint32_t> opaque_triangles;    // indices of non-portal triangles
+  std::vector<std::uint32_t> portal_triangles;    // indices of the portals' triangles
   std::vector<std::uint32_t> portal_of_triangle;  // for each of those: its portal
   std::vector<std::uint32_t> triangle_material;   // per triangle (empty for files before MMAT)
-  std::span<const float> vertex_albedo;         // 3 per vertex
+  std::span<const float> vertex_albedo;           // 3 per vertex
   std::size_t vertex_count = 0, sensor_count = 0;
   TransferView view;
 

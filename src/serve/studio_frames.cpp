@@ -20,7 +20,9 @@ void put(std::string& out, T value) {
   out.append(bytes, sizeof(T));
 }
 
-void put_tag(std::string& out, const char (&tag)[5]) { out.append(tag, 4); }
+void put_tag(std::string& out, const char (&tag)[5]) {
+  out.append(tag, 4);
+}
 
 double photometric(const float* rgb) {
   return luminance(Rgb{rgb[0], rgb[1], rgb[2]});

@@ -7,8 +7,12 @@ namespace relight {
 
 namespace {
 
-nlohmann::json vec3_json(Vec3 v) { return {v.x, v.y, v.z}; }
-nlohmann::json rgb_json(Rgb c) { return {c.r, c.g, c.b}; }
+nlohmann::json vec3_json(Vec3 v) {
+  return {v.x, v.y, v.z};
+}
+nlohmann::json rgb_json(Rgb c) {
+  return {c.r, c.g, c.b};
+}
 
 std::optional<std::uint32_t> read_seq(const JsonNode& root) {
   const auto s = root.find("seq");
@@ -81,9 +85,9 @@ nlohmann::json hello_message(const TransferFile& t, const std::string& scene_fil
     materials.push_back(
         {{"name", m.name},
          {"albedo", rgb_json(m.albedo)},
-         {"portal", portal_of[i] >= 0 ? nlohmann::json(scene.portals[static_cast<std::size_t>(
-                                                           portal_of[i])].name)
-                                      : nlohmann::json(nullptr)}});
+         {"portal", portal_of[i] >= 0
+                        ? nlohmann::json(scene.portals[static_cast<std::size_t>(portal_of[i])].name)
+                        : nlohmann::json(nullptr)}});
   }
   nlohmann::json luminaires = nlohmann::json::array();
   for (std::size_t j = 0; j < scene.luminaires.size(); ++j) {
@@ -163,18 +167,13 @@ nlohmann::json distribution_message(std::optional<std::uint32_t> seq, const Lumi
     for (std::size_t k = 0; k < 4; ++k) out[kPlanes[k]] = values[k];
     return out;
   };
-  nlohmann::json m = {{"type", "distribution"},
-                      {"seq", seq_json(seq)},
-                      {"luminaire", luminaire.name},
-                      {"kind", kKinds[static_cast<int>(spec.type)]},
-                      {"sh_order", sh_order},
-                      {"window", "sigma"},
-                      {"gamma_deg", profile.gamma_deg},
-                      {"exact", planes(profile.exact)},
-                      {"sh", planes(profile.sh)},
-                      {"sh_windowed", planes(profile.sh_windowed)},
-                      {"flux_lm", profile.flux_lm},
-                      {"incremental_updates", incremental_updates}};
+  nlohmann::json m = {
+      {"type", "distribution"},         {"seq", seq_json(seq)},
+      {"luminaire", luminaire.name},    {"kind", kKinds[static_cast<int>(spec.type)]},
+      {"sh_order", sh_order},           {"window", "sigma"},
+      {"gamma_deg", profile.gamma_deg}, {"exact", planes(profile.exact)},
+      {"sh", planes(profile.sh)},       {"sh_windowed", planes(profile.sh_windowed)},
+      {"flux_lm", profile.flux_lm},     {"incremental_updates", incremental_updates}};
   if (spec.type == DistributionType::kCurve) {
     m["control_points"] = {{"gamma_deg", spec.gamma_deg}, {"candela", spec.curve_candela}};
   }

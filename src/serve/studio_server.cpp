@@ -47,7 +47,9 @@ std::vector<std::uint32_t> all_triangle_ids(std::size_t n) {
   return ids;
 }
 
-nlohmann::json vec3_json(Vec3 v) { return {v.x, v.y, v.z}; }
+nlohmann::json vec3_json(Vec3 v) {
+  return {v.x, v.y, v.z};
+}
 
 // The distribution a state document gives luminaire `name`, or null when it keeps the scene's.
 nlohmann::json named_distribution(const nlohmann::json& document, const std::string& name) {
@@ -99,8 +101,8 @@ struct StudioServer::Impl {
     relit.apply(state);
     std::vector<Rgb> glass;
     for (std::size_t p = 0; p < scene().portals.size(); ++p) {
-      glass.push_back(window_view_radiance(relit.relighter->shell(p),
-                                           transfer().view.portals[p].outward));
+      glass.push_back(
+          window_view_radiance(relit.relighter->shell(p), transfer().view.portals[p].outward));
     }
     auto values = std::make_shared<FrameValues>();
     compute_frame_values(transfer(), vertex_portal, relit.irradiance, glass, *values);
@@ -139,7 +141,8 @@ struct StudioServer::Impl {
       {
         std::lock_guard lock(mutex);
         const std::uint32_t number = shown.frame_number + 1;
-        frame = std::make_shared<const std::string>(encode_frame(number, p.seq, ms.count(), *values));
+        frame =
+            std::make_shared<const std::string>(encode_frame(number, p.seq, ms.count(), *values));
         incremental_updates = relit.relighter->incremental_curve_updates();
         for (std::size_t j = 0; j < scene().luminaires.size(); ++j) {
           const std::string& name = scene().luminaires[j].name;
@@ -168,9 +171,8 @@ struct StudioServer::Impl {
                                  const LightingState& state) const {
     const DistributionSpec& spec = state.luminaires.at(j).distribution;
     const int order = transfer().view.sh_order;
-    const DistributionProfile profile =
-        distribution_profile(load_distribution(spec), order, ShWindow::kSigma,
-                             kDefaultProfileSamples);
+    const DistributionProfile profile = distribution_profile(
+        load_distribution(spec), order, ShWindow::kSigma, kDefaultProfileSamples);
     return distribution_message(seq, scene().luminaires[j], spec, profile, order,
                                 incremental_updates);
   }
@@ -249,27 +251,28 @@ struct StudioServer::Impl {
                                 values->radiance[3 * v + 2]});
     }
     // Files written before the MMAT section name no material.
-    const std::size_t material = t.triangle_material.empty() ? scene().materials.size()
-                                                             : t.triangle_material[hit.triangle];
+    const std::size_t material =
+        t.triangle_material.empty() ? scene().materials.size() : t.triangle_material[hit.triangle];
     int portal = -1;
     for (std::size_t k = 0; k < t.portal_triangles.size(); ++k) {
       if (t.portal_triangles[k] == hit.triangle) portal = static_cast<int>(t.portal_of_triangle[k]);
     }
-    send_json(id, {{"type", "pick"},
-                   {"seq", seq_json(seq)},
-                   {"hit", true},
-                   {"point", vec3_json(r.origin + hit.t * r.direction)},
-                   {"normal", vec3_json(n)},
-                   {"distance", hit.t},
-                   {"triangle", hit.triangle},
-                   {"material", material < scene().materials.size()
-                                    ? nlohmann::json(scene().materials[material].name)
-                                    : nlohmann::json(nullptr)},
-                   {"portal", portal >= 0 ? nlohmann::json(scene().portals[static_cast<std::size_t>(
-                                                               portal)].name)
-                                          : nlohmann::json(nullptr)},
-                   {"illuminance", e},
-                   {"luminance", l}});
+    send_json(
+        id, {{"type", "pick"},
+             {"seq", seq_json(seq)},
+             {"hit", true},
+             {"point", vec3_json(r.origin + hit.t * r.direction)},
+             {"normal", vec3_json(n)},
+             {"distance", hit.t},
+             {"triangle", hit.triangle},
+             {"material", material < scene().materials.size()
+                              ? nlohmann::json(scene().materials[material].name)
+                              : nlohmann::json(nullptr)},
+             {"portal", portal >= 0
+                            ? nlohmann::json(scene().portals[static_cast<std::size_t>(portal)].name)
+                            : nlohmann::json(nullptr)},
+             {"illuminance", e},
+             {"luminance", l}});
   }
 
   void handle(ConnectionId id, std::optional<std::uint32_t> seq, const DistributionRequest& r) {
@@ -309,13 +312,15 @@ StudioServer::StudioServer(const fs::path& rlt, const StudioOptions& options)
   const TransferFile& t = s.transfer();
   s.vertex_portal = vertex_portals(t);
   s.geometry = encode_geometry(t);
-  s.picker = std::make_unique<RayTracer>(t.positions, t.triangles, all_triangle_ids(t.triangles.size()));
+  s.picker =
+      std::make_unique<RayTracer>(t.positions, t.triangles, all_triangle_ids(t.triangles.size()));
   const LightingState initial = default_lighting_state(t.scene);
   const auto start = std::chrono::steady_clock::now();
   std::shared_ptr<const FrameValues> values = s.relight_values(initial);
   const std::chrono::duration<float, std::milli> ms = std::chrono::steady_clock::now() - start;
-  s.shown = {std::make_shared<const std::string>(encode_frame(1, std::nullopt, ms.count(), *values)),
-             values, nlohmann::json::object(), initial, 1};
+  s.shown = {
+      std::make_shared<const std::string>(encode_frame(1, std::nullopt, ms.count(), *values)),
+      values, nlohmann::json::object(), initial, 1};
 
   WebSocketServerOptions transport_options;
   transport_options.host = options.host;
@@ -347,14 +352,20 @@ StudioServer::~StudioServer() {
   if (impl_->worker.joinable()) impl_->worker.join();
 }
 
-std::uint16_t StudioServer::port() const { return impl_->transport->port(); }
+std::uint16_t StudioServer::port() const {
+  return impl_->transport->port();
+}
 
 std::string StudioServer::url() const {
   return "http://" + impl_->options.host + ":" + std::to_string(port()) + "/";
 }
 
-void StudioServer::run() { impl_->transport->run(); }
+void StudioServer::run() {
+  impl_->transport->run();
+}
 
-void StudioServer::stop() { impl_->transport->stop(); }
+void StudioServer::stop() {
+  impl_->transport->stop();
+}
 
 }  // namespace relight

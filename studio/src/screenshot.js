@@ -2,6 +2,7 @@
 // it to a 2D canvas, in false colour appends the legend on the right as `relight render`
 // does, and downloads the result as PNG (canvas.toBlob + <a download>).
 import { drawLegend } from './legend.js';
+import { downloadBlob } from './ui.js';
 
 export async function screenshot(viewer, labelsCanvas, filename) {
   viewer.renderNow();
@@ -16,12 +17,6 @@ export async function screenshot(viewer, labelsCanvas, filename) {
   if (labelsCanvas && labelsCanvas.width) ctx.drawImage(labelsCanvas, 0, 0, src.width, src.height);
   if (falseColour) drawLegend(ctx, src.width, legendWidth, src.height, viewer.used);
   const blob = await new Promise((resolve) => out.toBlob(resolve, 'image/png'));
-  const a = document.createElement('a');
-  a.href = URL.createObjectURL(blob);
-  a.download = filename;
-  document.body.appendChild(a);
-  a.click();
-  a.remove();
-  setTimeout(() => URL.revokeObjectURL(a.href), 2000);
+  downloadBlob(blob, filename);
   return blob;
 }

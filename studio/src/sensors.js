@@ -5,7 +5,7 @@
 // can be downloaded as CSV (sensor,index,x,y,z,lux).
 import * as THREE from 'three';
 import { formatValue, rampColor, scalePosition } from './false_color.js';
-import { el } from './ui.js';
+import { downloadBlob, el } from './ui.js';
 import { srgbToLinear } from './colors.js';
 
 export class Sensors {
@@ -157,9 +157,6 @@ export class Sensors {
         lines.push(`${name},${i},${p.join(',')},${this.values[s.offset + i]}`);
       });
     }
-    const a = el('a', { href: URL.createObjectURL(new Blob([lines.join('\n') + '\n'], { type: 'text/csv' })), download: 'sensors.csv' });
-    document.body.append(a);
-    a.click();
-    a.remove();
+    downloadBlob(new Blob([lines.join('\n') + '\n'], { type: 'text/csv' }), 'sensors.csv');
   }
 }

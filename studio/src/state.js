@@ -9,6 +9,8 @@
 // the server refuses (an error reply to it) is undone: the document returns to the one shown.
 // Also: save the document as a JSON download and load one from a file.
 
+import { downloadBlob } from './ui.js';
+
 export const clone = (x) => (x === undefined ? undefined : JSON.parse(JSON.stringify(x)));
 
 // JSON with sorted keys, for comparing documents whatever their key order.
@@ -164,14 +166,7 @@ export class StateStore {
 
   // Download the document as JSON.
   save(filename = 'lighting-state.json') {
-    const blob = new Blob([JSON.stringify(this.doc, null, 2) + '\n'], { type: 'application/json' });
-    const a = document.createElement('a');
-    a.href = URL.createObjectURL(blob);
-    a.download = filename;
-    document.body.appendChild(a);
-    a.click();
-    a.remove();
-    setTimeout(() => URL.revokeObjectURL(a.href), 1000);
+    downloadBlob(new Blob([JSON.stringify(this.doc, null, 2) + '\n'], { type: 'application/json' }), filename);
   }
 
   // Load a state file (File from an <input type=file>) and send it.

@@ -144,3 +144,14 @@ export function notice(text, kind = 'info', ms = kind === 'error' ? 8000 : 4000)
 export function fmt3(v) {
   return v.map((x) => Number(x).toFixed(2)).join(', ');
 }
+
+// Offers `blob` to the user as a download named `filename` (screenshots, states, CSV).
+export function downloadBlob(blob, filename) {
+  const a = document.createElement('a');
+  a.href = URL.createObjectURL(blob);
+  a.download = filename;
+  document.body.appendChild(a);
+  a.click();
+  a.remove();
+  setTimeout(() => URL.revokeObjectURL(a.href), 2000);
+}

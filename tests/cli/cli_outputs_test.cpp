@@ -85,8 +85,9 @@ TEST(CliOutputs, ReferenceWritesPngAndExr) {
 TEST(CliOutputs, DemoWritesItsFilesAndSaysWhere) {
   TempDir dir;
   const auto out = dir.path() / "demo";
-  const auto r = run_relight("demo -o '" + out.string() +
-                             "' --reference --spp 1 --width 48 --height 32 --no-progress --no-serve");
+  const auto r =
+      run_relight("demo -o '" + out.string() +
+                  "' --reference --spp 1 --width 48 --height 32 --no-progress --no-serve");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   for (const char* f :
        {"demo-room.json", "demo-room.rlt", "evening.json", "work.json", "room-evening.png",

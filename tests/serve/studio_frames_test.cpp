@@ -68,8 +68,10 @@ TEST(StudioFrames, FrameCarriesRadianceIlluminanceAndSensors) {
     const float* e = &irradiance[3 * i];
     for (int c = 0; c < 3; ++c) {
       const float l = half_to_float(read<std::uint16_t>(f, 24 + 8 * i + 2 * c));
-      const double expected = portal[i] >= 0 ? (c == 0 ? 100 : c == 1 ? 200 : 300)
-                                              : t.vertex_albedo[3 * i + c] * e[c] / kPi;
+      const double expected = portal[i] >= 0 ? (c == 0   ? 100
+                                                : c == 1 ? 200
+                                                         : 300)
+                                             : t.vertex_albedo[3 * i + c] * e[c] / kPi;
       EXPECT_NEAR(l, expected, expected * 1e-3) << i;
     }
     const float lux = half_to_float(read<std::uint16_t>(f, 24 + 8 * i + 6));

@@ -32,7 +32,8 @@ std::pair<std::string, std::optional<std::uint32_t>> refusal(const std::string& 
 }
 
 TEST(StudioMessages, StatePickDistributionPing) {
-  const ClientMessage s = parse(R"({"type":"state","seq":3,"state":{"luminaires":{"down":{"dimmer":0.5}}}})");
+  const ClientMessage s =
+      parse(R"({"type":"state","seq":3,"state":{"luminaires":{"down":{"dimmer":0.5}}}})");
   EXPECT_EQ(s.seq, 3u);
   ASSERT_TRUE(std::holds_alternative<StateRequest>(s.request));
   EXPECT_EQ(std::get<StateRequest>(s.request).document["luminaires"]["down"]["dimmer"], 0.5);
@@ -53,17 +54,17 @@ TEST(StudioMessages, MalformedMessagesNameWhereAndKeepTheirSeq) {
   EXPECT_NE(refusal("[1,2]").first.find("expected a JSON object"), std::string::npos);
   EXPECT_NE(refusal(R"({"type":"fly","seq":5})").first.find("/type"), std::string::npos);
   EXPECT_EQ(refusal(R"({"type":"fly","seq":5})").second, 5u);
-  EXPECT_NE(refusal(R"({"type":"pick","seq":6,"origin":[0,0,0],"direction":[0,0,0]})").first.find(
-                "/direction"),
+  EXPECT_NE(refusal(R"({"type":"pick","seq":6,"origin":[0,0,0],"direction":[0,0,0]})")
+                .first.find("/direction"),
             std::string::npos);
-  EXPECT_NE(refusal(R"({"type":"pick","origin":[0,"a",0],"direction":[0,1,0]})").first.find(
-                "/origin"),
-            std::string::npos);
+  EXPECT_NE(
+      refusal(R"({"type":"pick","origin":[0,"a",0],"direction":[0,1,0]})").first.find("/origin"),
+      std::string::npos);
   EXPECT_NE(refusal(R"({"type":"distribution","luminaire":"nobody"})").first.find("nobody"),
             std::string::npos);
-  EXPECT_NE(refusal(R"({"type":"distribution","luminaire":"down","samples":1})").first.find(
-                "/samples"),
-            std::string::npos);
+  EXPECT_NE(
+      refusal(R"({"type":"distribution","luminaire":"down","samples":1})").first.find("/samples"),
+      std::string::npos);
   EXPECT_NE(refusal(R"({"type":"state","seq":-1,"state":{}})").first.find("/seq"),
             std::string::npos);
   EXPECT_NE(refusal(R"({"type":"state","state":[]})").first.find("/state"), std::string::npos);
@@ -86,7 +87,8 @@ TEST(StudioMessages, HelloDescribesTheScene) {
   EXPECT_EQ(h["sensors"][0]["points"].size(), 6u);
   EXPECT_EQ(h["sensors"][0]["nu"], 3);
   for (const nlohmann::json& m : h["materials"]) {
-    EXPECT_EQ(m["portal"], m["name"] == "glass" ? nlohmann::json("south") : nlohmann::json(nullptr));
+    EXPECT_EQ(m["portal"],
+              m["name"] == "glass" ? nlohmann::json("south") : nlohmann::json(nullptr));
   }
   EXPECT_EQ(h["sh_order"], 4);
   EXPECT_EQ(h["state"], nlohmann::json::object());

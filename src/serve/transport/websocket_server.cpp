@@ -108,7 +108,8 @@ WebSocketServer::WebSocketServer(const WebSocketServerOptions& options, WebSocke
     const Endpoint::connection_ptr c = s.endpoint.get_con_from_hdl(h);
     HttpResponse r{404, "text/plain; charset=utf-8", "not found\n"};
     try {
-      if (s.handlers.http) r = s.handlers.http(c->get_request().get_method(), path_of(c->get_resource()));
+      if (s.handlers.http)
+        r = s.handlers.http(c->get_request().get_method(), path_of(c->get_resource()));
     } catch (const std::exception& e) {
       r = {500, "text/plain; charset=utf-8", std::string("internal error: ") + e.what() + "\n"};
     }
@@ -175,6 +176,8 @@ void WebSocketServer::send(ConnectionId connection, std::string payload, bool bi
   });
 }
 
-std::size_t WebSocketServer::connection_count() const { return impl_->open_count.load(); }
+std::size_t WebSocketServer::connection_count() const {
+  return impl_->open_count.load();
+}
 
 }  // namespace relight

@@ -38,7 +38,7 @@ struct WebSocketServerOptions {
   std::uint16_t port = 8080;  // 0: any free port (see WebSocketServer::port())
   std::string websocket_path = "/ws";
   std::size_t max_message_bytes = std::size_t{1} << 20;  // larger: close code 1009
-  bool stop_on_signals = true;                            // SIGINT, SIGTERM end run()
+  bool stop_on_signals = true;                           // SIGINT, SIGTERM end run()
 };
 
 class WebSocketServer {
