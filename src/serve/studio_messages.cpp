@@ -1,5 +1,7 @@
 #include "serve/studio_messages.h"
 
+#include <algorithm>
+
 #include "common/input_error.h"
 #include "scene/json_node.h"
 
@@ -37,14 +39,42 @@ nlohmann::json seq_json(std::optional<std::uint32_t> seq) {
   return seq ? nlohmann::json(*seq) : nlohmann::json(nullptr);
 }
 
+std::size_t json_nesting_depth(std::string_view text) {
+  std::size_t depth = 0, deepest = 0;
+  bool in_string = false, escaped = false;
+  for (const char c : text) {
+    if (in_string) {
+      if (escaped) {
+        escaped = false;
+      } else if (c == '\\') {
+        escaped = true;
+      } else if (c == '"') {
+        in_string = false;
+      }
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      deepest = std::max(deepest, ++depth);
+    } else if ((c == ']' || c == '}') && depth > 0) {
+      --depth;
+    }
+  }
+  return deepest;
+}
+
 ClientMessage parse_client_message(const std::string& text, const Scene& scene,
                                    std::optional<std::uint32_t>& seq) {
-  const nlohmann::json document = parse_json_text(text, "message");
+  // The JSON library copies and destroys documents recursively: a message nested deeper than
+  // any message of the protocol is refused before it is parsed.
+  if (json_nesting_depth(text) > kMaxMessageDepth) {
+    fail_input("message", "nested deeper than " + std::to_string(kMaxMessageDepth) + " levels");
+  }
+  nlohmann::json document = parse_json_text(text, "message");
   const JsonNode root(document, "message", "/");
   if (!root.is_object()) root.fail("expected a JSON object");
   ClientMessage m;
   if (!root.has("type")) {  // a bare lighting state document
-    m.request = StateRequest{document};
+    m.request = StateRequest{std::move(document)};
     return m;
   }
   m.seq = seq = read_seq(root);
@@ -53,7 +83,7 @@ ClientMessage parse_client_message(const std::string& text, const Scene& scene,
     root.expect_keys({"type", "seq", "state"});
     const JsonNode state = root.at("state");
     if (!state.is_object()) state.fail("expected a lighting state object");
-    m.request = StateRequest{state.value()};
+    m.request = StateRequest{std::move(document["state"])};
   } else if (type == "pick") {
     root.expect_keys({"type", "seq", "origin", "direction"});
     m.request = PickRequest{root.at("origin").vec3(), root.at("direction").direction()};

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <variant>
 
 #include <nlohmann/json.hpp>
@@ -18,6 +19,11 @@
 namespace relight {
 
 inline constexpr int kDefaultProfileSamples = 181;
+// Deepest nesting of arrays and objects a message may have (the protocol's own need under 10).
+inline constexpr std::size_t kMaxMessageDepth = 64;
+
+// Nesting depth of arrays and objects in JSON text (strings skipped), without parsing it.
+std::size_t json_nesting_depth(std::string_view text);
 
 struct StateRequest {
   nlohmann::json document;  // the lighting state (docs/lighting-state.md)

@@ -1,5 +1,6 @@
 #include "serve/studio_server.h"
 
+#include <atomic>
 #include <chrono>
 #include <condition_variable>
 #include <mutex>
@@ -79,7 +80,8 @@ struct StudioServer::Impl {
   bool quit = false;
   Shown shown;
   std::set<ConnectionId> clients;
-  std::size_t incremental_updates = 0;
+
+  std::atomic<std::size_t> incremental_updates{0};  // written by the worker
 
   std::thread worker;
 
@@ -111,6 +113,8 @@ struct StudioServer::Impl {
 
   void work() {
     LightingState last_good = shown.state;
+    nlohmann::json shown_document = nlohmann::json::object();  // the worker's own copy
+    std::uint32_t frame_number = shown.frame_number;         // only the worker advances it
     while (true) {
       PendingState p;
       {
@@ -120,76 +124,77 @@ struct StudioServer::Impl {
         p = std::move(*pending);
         pending.reset();
       }
-      const auto start = std::chrono::steady_clock::now();
-      std::shared_ptr<const FrameValues> values;
       try {
-        values = relight_values(p.state);
+        show(p, shown_document, frame_number);
+        last_good = std::move(p.state);
       } catch (const std::exception& e) {  // e.g. a map file that cannot be read
         send_json(p.client, error_message(p.seq, e.what()));
         try {
           relit.apply(last_good);
         } catch (const std::exception&) {  // it lit before: cannot fail again
         }
-        continue;
       }
-      last_good = p.state;
-      const std::chrono::duration<float, std::milli> ms = std::chrono::steady_clock::now() - start;
-      std::vector<nlohmann::json> profiles;
-      std::set<ConnectionId> to;
-      nlohmann::json state_message;
-      std::shared_ptr<const std::string> frame;
-      {
-        std::lock_guard lock(mutex);
-        const std::uint32_t number = shown.frame_number + 1;
-        frame =
-            std::make_shared<const std::string>(encode_frame(number, p.seq, ms.count(), *values));
-        incremental_updates = relit.relighter->incremental_curve_updates();
-        for (std::size_t j = 0; j < scene().luminaires.size(); ++j) {
-          const std::string& name = scene().luminaires[j].name;
-          if (named_distribution(p.document, name) != named_distribution(shown.document, name)) {
-            profiles.push_back(profile_message(std::nullopt, j, p.state));
-          }
-        }
-        shown = {frame, values, p.document, p.state, number};
-        state_message = {{"type", "state"},
-                         {"seq", seq_json(p.seq)},
-                         {"client", p.client},
-                         {"frame", number},
-                         {"state", p.document}};
-        to = clients;
+    }
+  }
+
+  // Relights with a pending state and sends every client the state, the frame and the
+  // profiles of distributions that changed. Everything slow happens outside the mutex.
+  void show(const PendingState& p, nlohmann::json& shown_document, std::uint32_t& frame_number) {
+    const auto start = std::chrono::steady_clock::now();
+    const std::shared_ptr<const FrameValues> values = relight_values(p.state);
+    const std::chrono::duration<float, std::milli> ms = std::chrono::steady_clock::now() - start;
+    const std::uint32_t number = frame_number + 1;
+    const auto frame =
+        std::make_shared<const std::string>(encode_frame(number, p.seq, ms.count(), *values));
+    incremental_updates = relit.relighter->incremental_curve_updates();
+    std::vector<std::string> profiles;
+    for (std::size_t j = 0; j < scene().luminaires.size(); ++j) {
+      const std::string& name = scene().luminaires[j].name;
+      if (named_distribution(p.document, name) != named_distribution(shown_document, name)) {
+        profiles.push_back(text_of(profile_message(std::nullopt, j, p.state)));
       }
-      const std::string state_text = text_of(state_message);
-      for (const ConnectionId c : to) {
-        transport->send(c, state_text, false);
-        transport->send(c, *frame, true, true);
-        for (const nlohmann::json& m : profiles) send_json(c, m);
-      }
+    }
+    const std::string state_text = text_of({{"type", "state"},
+                                            {"seq", seq_json(p.seq)},
+                                            {"client", p.client},
+                                            {"frame", number},
+                                            {"state", p.document}});
+    std::set<ConnectionId> to;
+    {
+      std::lock_guard lock(mutex);
+      shown = {frame, values, p.document, p.state, number};
+      to = clients;
+    }
+    frame_number = number;
+    shown_document = p.document;
+    for (const ConnectionId c : to) {
+      transport->send(c, state_text, false);
+      transport->send(c, *frame, true, true);
+      for (const std::string& m : profiles) transport->send(c, m, false);
     }
   }
 
   nlohmann::json profile_message(std::optional<std::uint32_t> seq, std::size_t j,
-                                 const LightingState& state) const {
+                                 const LightingState& state,
+                                 int samples = kDefaultProfileSamples) const {
     const DistributionSpec& spec = state.luminaires.at(j).distribution;
     const int order = transfer().view.sh_order;
-    const DistributionProfile profile = distribution_profile(
-        load_distribution(spec), order, ShWindow::kSigma, kDefaultProfileSamples);
+    const DistributionProfile profile =
+        distribution_profile(load_distribution(spec), order, ShWindow::kSigma, samples);
     return distribution_message(seq, scene().luminaires[j], spec, profile, order,
-                                incremental_updates);
+                                incremental_updates.load());
   }
 
+  // hello, geometry and the latest frame are queued under the lock, so that the worker's next
+  // broadcast (which copies `clients` under it) reaches this client only after them.
   void on_open(ConnectionId id) {
-    nlohmann::json hello;
-    std::shared_ptr<const std::string> frame;
-    {
-      std::lock_guard lock(mutex);
-      clients.insert(id);
-      hello = hello_message(transfer(), rlt.filename().string(), shown.document);
-      hello["client"] = id;
-      frame = shown.frame;
-    }
+    std::lock_guard lock(mutex);
+    nlohmann::json hello = hello_message(transfer(), rlt.filename().string(), shown.document);
+    hello["client"] = id;
+    clients.insert(id);
     send_json(id, hello);
     transport->send(id, geometry, true);
-    transport->send(id, *frame, true);
+    transport->send(id, *shown.frame, true);
   }
 
   void on_close(ConnectionId id) {
@@ -281,16 +286,7 @@ struct StudioServer::Impl {
       std::lock_guard lock(mutex);
       state = shown.state;
     }
-    nlohmann::json m = profile_message(seq, r.luminaire, state);
-    if (r.samples != kDefaultProfileSamples) {
-      const DistributionSpec& spec = state.luminaires[r.luminaire].distribution;
-      const int order = transfer().view.sh_order;
-      m = distribution_message(
-          seq, scene().luminaires[r.luminaire], spec,
-          distribution_profile(load_distribution(spec), order, ShWindow::kSigma, r.samples), order,
-          incremental_updates);
-    }
-    send_json(id, m);
+    send_json(id, profile_message(seq, r.luminaire, state, r.samples));
   }
 
   void handle(ConnectionId id, std::optional<std::uint32_t> seq, const PingRequest&) {
@@ -357,7 +353,9 @@ std::uint16_t StudioServer::port() const {
 }
 
 std::string StudioServer::url() const {
-  return "http://" + impl_->options.host + ":" + std::to_string(port()) + "/";
+  const std::string& host = impl_->options.host;
+  const bool ipv6 = host.find(':') != std::string::npos;
+  return "http://" + (ipv6 ? "[" + host + "]" : host) + ":" + std::to_string(port()) + "/";
 }
 
 void StudioServer::run() {

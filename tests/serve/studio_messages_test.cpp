@@ -71,6 +71,16 @@ TEST(StudioMessages, MalformedMessagesNameWhereAndKeepTheirSeq) {
   EXPECT_NE(refusal(R"({"type":"ping","extra":1})").first.find("extra"), std::string::npos);
 }
 
+TEST(StudioMessages, DeepNestingIsRefusedBeforeParsing) {
+  EXPECT_EQ(json_nesting_depth(R"({"a":[1,{"b":"[[[[{{"}],"c":"\"["}])"), 3u);
+  const std::string deep = R"({"luminaires":)" + std::string(100000, '[') +
+                           std::string(100000, ']') + "}";
+  EXPECT_NE(refusal(deep).first.find("nested deeper than 64"), std::string::npos);
+  std::string ok = R"({"type":"state","state":{"luminaires":{"down":{"distribution":)"
+                   R"({"type":"curve","gamma_deg":[0,90],"candela":[1,0]}}}}})";
+  EXPECT_TRUE(std::holds_alternative<StateRequest>(parse(ok).request));
+}
+
 TEST(StudioMessages, HelloDescribesTheScene) {
   const TransferFile& t = room().transfer;
   const nlohmann::json h = hello_message(t, "tiny.rlt", nlohmann::json::object());

@@ -184,7 +184,8 @@ test('clicking a wall aims the wall washer there and its bright spot moves', asy
   const targets = [walls[0], walls.at(-1)];
   for (const [k, t] of targets.entries()) {
     await page.locator(`[data-testid="aim-${washer}"]`).click();
-    await afterNewFrame(() => page.mouse.click(t.x, t.y));
+    const box = await page.locator('#viewport').boundingBox();  // pick() takes canvas pixels
+    await afterNewFrame(() => page.mouse.click(box.x + t.x, box.y + t.y));
     const target = await page.evaluate((n) => window.relightStudio.state().luminaires[n].target, names[washer]);
     for (let c = 0; c < 3; ++c) assert.ok(Math.abs(target[c] - t.point[c]) < 0.05, `target ${target} vs ${t.point}`);
     await pixels();

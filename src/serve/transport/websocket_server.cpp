@@ -74,16 +74,29 @@ WebSocketServer::WebSocketServer(const WebSocketServerOptions& options, WebSocke
     asio::error_code ec;
     socket.set_option(asio::ip::tcp::no_delay(true), ec);
   });
+  // Browsers let any page open a WebSocket to any address, so an upgrade that carries an
+  // Origin (every browser's does) must come from a page this server served: the Origin's
+  // host:port equals the Host the browser asked for. Clients without one (scripts) pass.
   e.set_validate_handler([&s](Handle h) {
     const Endpoint::connection_ptr c = s.endpoint.get_con_from_hdl(h);
-    return path_of(c->get_resource()) == s.options.websocket_path;
+    if (path_of(c->get_resource()) != s.options.websocket_path) return false;
+    const std::string origin = c->get_request_header("Origin");
+    if (origin.empty()) return true;
+    const std::size_t scheme = origin.find("://");
+    return scheme != std::string::npos && origin.substr(scheme + 3) == c->get_request_header("Host");
   });
   e.set_open_handler([&s](Handle h) {
     const ConnectionId id = s.next_id++;
     s.ids[h] = id;
     s.handles[id] = h;
     ++s.open_count;
-    if (s.handlers.open) s.handlers.open(id);
+    try {
+      if (s.handlers.open) s.handlers.open(id);
+    } catch (const std::exception& e) {
+      std::cerr << "relight serve: internal error on a new connection: " << e.what() << std::endl;
+      websocketpp::lib::error_code ec;
+      s.endpoint.close(h, websocketpp::close::status::internal_endpoint_error, "internal error", ec);
+    }
   });
   e.set_close_handler([&s](Handle h) {
     const auto it = s.ids.find(h);
@@ -92,7 +105,11 @@ WebSocketServer::WebSocketServer(const WebSocketServerOptions& options, WebSocke
     s.handles.erase(id);
     s.ids.erase(it);
     --s.open_count;
-    if (s.handlers.close) s.handlers.close(id);
+    try {
+      if (s.handlers.close) s.handlers.close(id);
+    } catch (const std::exception& e) {
+      std::cerr << "relight serve: internal error on a closed connection: " << e.what() << std::endl;
+    }
   });
   e.set_message_handler([&s](Handle h, Endpoint::message_ptr m) {
     const auto it = s.ids.find(h);
@@ -166,9 +183,13 @@ void WebSocketServer::send(ConnectionId connection, std::string payload, bool bi
     const auto it = s.handles.find(connection);
     if (it == s.handles.end()) return;
     websocketpp::lib::error_code ec;  // a connection closing meanwhile: dropped
-    if (droppable) {
-      const Endpoint::connection_ptr c = s.endpoint.get_con_from_hdl(it->second, ec);
-      if (ec || c->get_buffered_amount() > kSlowClientBytes) return;
+    const Endpoint::connection_ptr c = s.endpoint.get_con_from_hdl(it->second, ec);
+    if (ec) return;
+    const std::size_t buffered = c->get_buffered_amount();
+    if (droppable && buffered > kSlowClientBytes) return;
+    if (buffered > kStalledClientBytes) {  // it does not read at all: let it go
+      c->close(websocketpp::close::status::policy_violation, "client does not read", ec);
+      return;
     }
     s.endpoint.send(it->second, p.data(), p.size(),
                     binary ? websocketpp::frame::opcode::binary : websocketpp::frame::opcode::text,
