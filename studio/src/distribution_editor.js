@@ -89,7 +89,9 @@ export class DistributionEditor {
       this.table,
     );
     this._installPointer();
-    new ResizeObserver(() => this.draw()).observe(this.canvas);
+    this.resizeObserver?.disconnect();  // a reconnect builds the panel anew
+    this.resizeObserver = new ResizeObserver(() => this.draw());
+    this.resizeObserver.observe(this.canvas);
     this.select(this.index);
   }
 

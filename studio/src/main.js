@@ -153,7 +153,7 @@ function onHello(hello) {
   luminairePanel.setScene(hello);
   windowsPanel.setScene(hello);
   editor.setScene(hello);
-  store.reset(hello.state || {});
+  store.reset(hello.state || {}, hello.client ?? null);
   // Every luminaire's distribution: flux for the panels, exact C0 samples for the editor.
   for (const l of hello.luminaires) requestDistribution(l.name);
 }

@@ -22,6 +22,11 @@ export class Markers {
 
   setScene(hello) {
     this.hello = hello;
+    // Free the previous scene's markers (a reconnect builds them anew).
+    this.group.traverse((o) => {
+      o.geometry?.dispose();
+      o.material?.dispose?.();
+    });
     this.group.clear();
     this._key = null;
     const b = hello.bounds;

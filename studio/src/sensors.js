@@ -31,6 +31,7 @@ export class Sensors {
     if (this.object) {
       this.viewer.overlays.remove(this.object);
       this.object.geometry.dispose();
+      this.object.material.dispose();
     }
     const pos = new Float32Array(3 * offset);
     this.sets.forEach((s) => s.points.forEach((p, i) => pos.set(p, 3 * (s.offset + i))));

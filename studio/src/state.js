@@ -64,14 +64,16 @@ export class StateStore {
     for (const l of this.listeners) l(source);
   }
 
-  // A new connection: the server's current state.
-  reset(doc) {
+  // A new connection: the server's current state; `client` is this connection's number from
+  // hello, so that echoes of our own states are told from other clients' by number.
+  reset(doc, client = null) {
     this.doc = clone(doc || {});
     this.shown = clone(this.doc);
     this.sent.clear();
     this.latestSeq = null;
     this.lastSentCanon = canonical(this.doc);
-    this.myClient = null;
+    this.myClient = client;
+    this.refusedSeq = null;
     this._scheduled = false;
     this._notify('remote');
   }
@@ -140,6 +142,16 @@ export class StateStore {
       mine && (this.myClient != null ? msg.client === this.myClient : canonical(msg.state) === mine.canon);
     if (isMine) {
       if (this.myClient == null && msg.client != null) this.myClient = msg.client;
+      // After a refusal the document went back to the state shown then; an echo of an
+      // earlier state of ours that the server applied since is the state shown now.
+      const afterRefusal = this.refusedSeq != null && this.latestSeq === this.refusedSeq &&
+        msg.seq < this.refusedSeq && !this._scheduled;
+      if (afterRefusal) {
+        this.doc = clone(msg.state || {});
+        this.lastSentCanon = canonical(this.doc);
+        this._notify('remote');
+        return 'mine';
+      }
       if (msg.seq !== this.latestSeq || this._scheduled) return 'stale';
       return 'mine';
     }
@@ -158,6 +170,7 @@ export class StateStore {
   refused(seq) {
     if (seq == null || seq !== this.latestSeq || !this.sent.has(seq)) return false;
     this._scheduled = false;
+    this.refusedSeq = seq;
     this.doc = clone(this.shown ?? {});
     this.lastSentCanon = canonical(this.doc);
     this._notify('remote');

@@ -27,22 +27,21 @@ export function row(label, controls, title) {
 }
 
 // A value that the user changes by `input` and `change` events alike (tests and keyboard
-// users may fire either); handler(value) runs once per distinct value.
+// users may fire either): handler(value) runs on every `input`, and on a `change` unless
+// that change only ends an `input` of the same value. Values the program sets fire neither,
+// so re-picking a value after a Reset or a remote state always reaches the handler.
 export function onValue(input, handler, read = (e) => e.value) {
-  let last;
-  const fire = () => {
+  let lastInput;
+  input.addEventListener('input', () => {
+    lastInput = read(input);
+    handler(lastInput);
+  });
+  input.addEventListener('change', () => {
     const v = read(input);
-    if (v === last) return;
-    last = v;
-    handler(v);
-  };
-  input.addEventListener('input', fire);
-  input.addEventListener('change', fire);
-  return {
-    reset(value) {
-      last = value;
-    },
-  };
+    const sameAsInput = v === lastInput;
+    lastInput = undefined;
+    if (!sameAsInput) handler(v);
+  });
 }
 
 // Sets a control's value unless the user is using it right now.

@@ -192,7 +192,10 @@ export class WindowsPanel {
           value: sunMode(env),
           testid: `sun-mode-${b.i}`,
           onChange: (m) => {
-            if (m === 'none') delete b.env.sun;
+            if (m === 'none') {
+              delete b.env.sun;
+              delete b.env.sun_illuminance; // a sun disc needs a sun position
+            }
             if (m === 'place') b.env.sun = { latitude: 48.14, longitude: 11.58, utc_offset: 1, datetime: '2026-03-21T12:00' };
             if (m === 'angles') b.env.sun = { azimuth_deg: 180, altitude_deg: 35 };
             if (m !== 'none' && b.env.sun_illuminance === undefined) b.env.sun_illuminance = 70000;

@@ -169,6 +169,13 @@ test('malformed messages get errors naming the problem and the server keeps answ
   c.close();
 });
 
+test("a page of another origin cannot open the WebSocket; the studio's own origin can", async () => {
+  await assert.rejects(connect(server.ws, { origin: 'http://evil.example' }), /403|Unexpected/);
+  const own = await connect(server.ws, { origin: `http://127.0.0.1:${server.port}` });
+  assert.equal((await own.nextJson('hello')).type, 'hello');
+  own.close();
+});
+
 test('the distribution message gives exact and approximated curves', async () => {
   const c = await connect(server.ws);
   const hello = await c.nextJson('hello');

@@ -56,8 +56,8 @@ export function residentKiB(pid) {
 
 // A WebSocket client that queues what it receives: text as parsed JSON, binary as Buffers.
 export class Client {
-  constructor(url) {
-    this.ws = new WebSocket(url);
+  constructor(url, options = {}) {
+    this.ws = new WebSocket(url, options);
     this.queue = [];
     this.waiters = [];
     this.closed = null;
@@ -102,8 +102,8 @@ export class Client {
   close() { this.ws.close(); }
 }
 
-export async function connect(url) {
-  const c = new Client(url);
+export async function connect(url, options) {
+  const c = new Client(url, options);
   await c.opened;
   return c;
 }
