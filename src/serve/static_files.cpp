@@ -46,7 +46,7 @@ HttpResponse text(int status, std::string body) {
 }  // namespace
 
 fs::path studio_client_folder(const fs::path& requested) {
-  const fs::path folder = requested.empty() ? fs::path(RELIGHT_STUDIO_DIR) : requested;
+  fs::path folder = requested.empty() ? fs::path(RELIGHT_STUDIO_DIR) : requested;
   const std::string where = requested.empty() ? folder.string() : "--client " + folder.string();
   if (!fs::is_regular_file(folder / "index.html")) {
     fail_input(where, "not a studio client folder (no index.html)");

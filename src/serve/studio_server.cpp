@@ -26,6 +26,8 @@ namespace fs = std::filesystem;
 namespace {
 
 // A validated state waiting for the worker; a newer one replaces it (coalescing).
+// As StateRequest (serve/studio_messages.h), a false positive of clang-tidy 14:
+// NOLINTNEXTLINE(bugprone-exception-escape)
 struct PendingState {
   LightingState state;
   nlohmann::json document;
@@ -114,7 +116,7 @@ struct StudioServer::Impl {
   void work() {
     LightingState last_good = shown.state;
     nlohmann::json shown_document = nlohmann::json::object();  // the worker's own copy
-    std::uint32_t frame_number = shown.frame_number;         // only the worker advances it
+    std::uint32_t frame_number = shown.frame_number;           // only the worker advances it
     while (true) {
       PendingState p;
       {

@@ -66,26 +66,27 @@ WebSocketServer::WebSocketServer(const WebSocketServerOptions& options, WebSocke
   e.init_asio();
   e.set_reuse_addr(true);
   e.set_max_message_size(options.max_message_bytes);
-  e.set_max_http_body_size(64 * 1024);
+  e.set_max_http_body_size(std::size_t{64} * 1024);
 
   // Frames go out at once: without TCP_NODELAY, Nagle's algorithm holds a frame's last segment
   // until the client's delayed ACK (up to 40 ms on Linux), measured as ~100 ms of latency.
-  e.set_socket_init_handler([](Handle, asio::ip::tcp::socket& socket) {
+  e.set_socket_init_handler([](const Handle&, asio::ip::tcp::socket& socket) {
     asio::error_code ec;
     socket.set_option(asio::ip::tcp::no_delay(true), ec);
   });
   // Browsers let any page open a WebSocket to any address, so an upgrade that carries an
   // Origin (every browser's does) must come from a page this server served: the Origin's
   // host:port equals the Host the browser asked for. Clients without one (scripts) pass.
-  e.set_validate_handler([&s](Handle h) {
+  e.set_validate_handler([&s](const Handle& h) {
     const Endpoint::connection_ptr c = s.endpoint.get_con_from_hdl(h);
     if (path_of(c->get_resource()) != s.options.websocket_path) return false;
     const std::string origin = c->get_request_header("Origin");
     if (origin.empty()) return true;
     const std::size_t scheme = origin.find("://");
-    return scheme != std::string::npos && origin.substr(scheme + 3) == c->get_request_header("Host");
+    return scheme != std::string::npos &&
+           origin.substr(scheme + 3) == c->get_request_header("Host");
   });
-  e.set_open_handler([&s](Handle h) {
+  e.set_open_handler([&s](const Handle& h) {
     const ConnectionId id = s.next_id++;
     s.ids[h] = id;
     s.handles[id] = h;
@@ -95,10 +96,11 @@ WebSocketServer::WebSocketServer(const WebSocketServerOptions& options, WebSocke
     } catch (const std::exception& e) {
       std::cerr << "relight serve: internal error on a new connection: " << e.what() << std::endl;
       websocketpp::lib::error_code ec;
-      s.endpoint.close(h, websocketpp::close::status::internal_endpoint_error, "internal error", ec);
+      s.endpoint.close(h, websocketpp::close::status::internal_endpoint_error, "internal error",
+                       ec);
     }
   });
-  e.set_close_handler([&s](Handle h) {
+  e.set_close_handler([&s](const Handle& h) {
     const auto it = s.ids.find(h);
     if (it == s.ids.end()) return;
     const ConnectionId id = it->second;
@@ -108,10 +110,11 @@ WebSocketServer::WebSocketServer(const WebSocketServerOptions& options, WebSocke
     try {
       if (s.handlers.close) s.handlers.close(id);
     } catch (const std::exception& e) {
-      std::cerr << "relight serve: internal error on a closed connection: " << e.what() << std::endl;
+      std::cerr << "relight serve: internal error on a closed connection: " << e.what()
+                << std::endl;
     }
   });
-  e.set_message_handler([&s](Handle h, Endpoint::message_ptr m) {
+  e.set_message_handler([&s](const Handle& h, const Endpoint::message_ptr& m) {
     const auto it = s.ids.find(h);
     if (it == s.ids.end() || !s.handlers.message) return;
     try {  // a handler's failure must not end the event loop (and every other connection)
@@ -121,7 +124,7 @@ WebSocketServer::WebSocketServer(const WebSocketServerOptions& options, WebSocke
       std::cerr << "relight serve: internal error on a message: " << e.what() << std::endl;
     }
   });
-  e.set_http_handler([&s](Handle h) {
+  e.set_http_handler([&s](const Handle& h) {
     const Endpoint::connection_ptr c = s.endpoint.get_con_from_hdl(h);
     HttpResponse r{404, "text/plain; charset=utf-8", "not found\n"};
     try {
@@ -133,7 +136,7 @@ WebSocketServer::WebSocketServer(const WebSocketServerOptions& options, WebSocke
     c->set_status(static_cast<websocketpp::http::status_code::value>(r.status));
     c->replace_header("Content-Type", r.content_type);
     c->replace_header("Cache-Control", "no-store");
-    c->set_body(std::move(r.body));
+    c->set_body(r.body);
   });
 
   asio::error_code ec;
@@ -147,9 +150,12 @@ WebSocketServer::WebSocketServer(const WebSocketServerOptions& options, WebSocke
 }
 
 WebSocketServer::~WebSocketServer() {
-  if (impl_->endpoint.is_listening()) {
-    asio::error_code ec;
-    impl_->endpoint.stop_listening(ec);
+  try {
+    if (impl_->endpoint.is_listening()) {
+      asio::error_code ec;
+      impl_->endpoint.stop_listening(ec);
+    }
+  } catch (...) {  // nothing to report from a destructor; the socket closes with the process
   }
 }
 
