@@ -77,8 +77,8 @@ test('state change → its frame back at the client: round trip measured', async
   }
   const median = (v) => [...v].sort((a, b) => a - b)[Math.floor(v.length / 2)];
   console.log(`round trip: state message → its RLFR frame decoded-ready at a node client, 50 ` +
-              `dimmer changes: median ${median(times).toFixed(2)} ms (server's own relight and ` +
-              `encoding: median ${median(serverMs).toFixed(2)} ms)`);
+              `dimmer changes: median ${median(times).toFixed(2)} ms (server's relight and per-vertex values: ` +
+              `median ${median(serverMs).toFixed(2)} ms)`);
   assert.ok(median(times) < 1000);
   c.close();
 });
