@@ -73,8 +73,8 @@ TEST(StudioMessages, MalformedMessagesNameWhereAndKeepTheirSeq) {
 
 TEST(StudioMessages, DeepNestingIsRefusedBeforeParsing) {
   EXPECT_EQ(json_nesting_depth(R"({"a":[1,{"b":"[[[[{{"}],"c":"\"["}])"), 3u);
-  const std::string deep = R"({"luminaires":)" + std::string(100000, '[') +
-                           std::string(100000, ']') + "}";
+  const std::string deep =
+      R"({"luminaires":)" + std::string(100000, '[') + std::string(100000, ']') + "}";
   EXPECT_NE(refusal(deep).first.find("nested deeper than 64"), std::string::npos);
   std::string ok = R"({"type":"state","state":{"luminaires":{"down":{"distribution":)"
                    R"({"type":"curve","gamma_deg":[0,90],"candela":[1,0]}}}}})";
