@@ -1,0 +1,45 @@
+// Where to sample the incident radiance (the thesis papers/004 §3.3.2–3.3.3, Algorithm 3.4):
+// a breadth-first traversal of the receiver BVH from the root. At each node the incident
+// radiance is sampled at the node's sample position x and the oracle
+//     e = r · |l_x| / H_d²                                                  (Eq. 3.3)
+// estimates the error of reconstructing the whole node from that one sample (r the node's
+// radius, |l_x| the norm of the sampled coefficients, H_d the harmonic mean distance to the
+// emitters). A node whose e is within the user's bound ε (or a leaf) keeps its sample, with a
+// valid domain of radius r; otherwise its two children are traversed. The traversal also
+// stops splitting when the samples would exceed the user's cap. Each level of the traversal
+// is sampled in parallel; the decisions are taken in breadth-first order, so the result does
+// not depend on the number of threads.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "nearfield/incident_radiance.h"
+#include "nearfield/incident_sample.h"
+#include "nearfield/receiver_bvh.h"
+
+namespace relight {
+
+struct AdaptiveSamplingSettings {
+  double epsilon = 0.01;           // the oracle's bound (units of r·|l|/H_d²: cd/m² per m)
+  std::size_t max_samples = 4096;  // cap on kept samples (≥ 1)
+};
+
+struct AdaptiveSampling {
+  std::vector<IncidentSample> samples;            // the kept ones
+  std::vector<std::uint32_t> node_of_sample;      // BVH node each sample belongs to
+  std::vector<std::uint32_t> sample_of_receiver;  // the sample whose node holds the receiver
+  std::size_t evaluations = 0;  // incident-radiance samples taken (kept and refined)
+};
+
+using IncidentSampler = std::function<IncidentRadiance(Vec3)>;
+
+double oracle(double radius, const IncidentRadiance& sample);
+
+AdaptiveSampling sample_adaptively(const ReceiverBvh& bvh, std::size_t receivers,
+                                   const IncidentSampler& sampler,
+                                   const AdaptiveSamplingSettings& settings);
+
+}  // namespace relight
