@@ -23,6 +23,7 @@ int run_cli(int argc, char** argv) {
   add_bench_command(app, action);
   add_analyze_command(app, action);
   add_serve_command(app, action);
+  add_nearfield_command(app, action);
   add_demo_command(app, action);
   try {
     app.parse(argc, argv);

@@ -21,5 +21,6 @@ void add_probe_command(CLI::App& app, Action& action);
 void add_bench_command(CLI::App& app, Action& action);
 void add_analyze_command(CLI::App& app, Action& action);
 void add_serve_command(CLI::App& app, Action& action);
+void add_nearfield_command(CLI::App& app, Action& action);
 
 }  // namespace relight

@@ -22,6 +22,7 @@ SubRay trace(Vec3 x, Vec3 dir, const RayTracer& emitters, const RayTracer* occlu
   if (!hit.hit()) return {};
   if (occluders) {
     Ray shadow{x, dir};
+    shadow.t_near = 1e-4;  // a sample at a receiver must not be shadowed by its own surface
     shadow.t_far = hit.t * (1 - 1e-6);
     if (occluders->occluded(shadow)) return {};
   }

@@ -18,6 +18,12 @@ LightingState default_lighting_state(const Scene& scene) {
     s.portals.push_back({p.environment, p.tint, p.frost_deg,
                          std::vector<ExteriorPlacement>(scene.exterior.size())});
   }
+  for (const Emitter& e : scene.emitters) {
+    EmitterState state;
+    state.luminance = e.luminance;
+    state.color = e.color;
+    s.emitters.push_back(state);
+  }
   return s;
 }
 
@@ -53,9 +59,7 @@ void apply_luminaire(LuminaireState& s, const Luminaire& scene_luminaire, const 
   if (const auto d = node.find("dimmer")) s.dimmer = d->number_at_least(0);
   if (node.has("color") && node.has("cct_kelvin")) node.fail("give either color or cct_kelvin");
   if (const auto c = node.find("color")) {
-    const Rgb color = c->rgb_non_negative();
-    if (!(luminance(color) > 0)) c->fail("colour must have a positive luminance");
-    s.color = color / luminance(color);
+    s.color = c->chromaticity();
   }
   if (const auto k = node.find("cct_kelvin")) {
     const double kelvin = k->number();
@@ -112,6 +116,24 @@ std::size_t portal_index(const Scene& scene, const JsonNode& where, const std::s
   where.fail("no portal named \"" + name + "\" in the precomputed scene");
 }
 
+std::size_t emitter_index(const Scene& scene, const JsonNode& where, const std::string& name) {
+  for (std::size_t i = 0; i < scene.emitters.size(); ++i) {
+    if (scene.emitters[i].name == name) return i;
+  }
+  where.fail("no emitter named \"" + name + "\" in the precomputed scene");
+}
+
+void apply_emitter(EmitterState& e, const JsonNode& node) {
+  node.expect_keys({"translate", "rotate_deg", "luminance", "color", "on"});
+  if (const auto t = node.find("translate")) e.translate = t->vec3();
+  if (const auto r = node.find("rotate_deg")) e.rotate_deg = r->number();
+  if (const auto l = node.find("luminance")) e.luminance = l->number_at_least(0);
+  if (const auto c = node.find("color")) {
+    e.color = c->chromaticity();
+  }
+  if (const auto o = node.find("on")) e.on = o->boolean();
+}
+
 void apply_portal(PortalState& s, const Scene& scene, const JsonNode& node,
                   const std::filesystem::path& base_dir) {
   node.expect_keys({"environment", "tint", "frost_deg", "exterior"});
@@ -126,7 +148,7 @@ void apply_portal(PortalState& s, const Scene& scene, const JsonNode& node,
 void apply_lighting_state(LightingState& state, const Scene& scene, const nlohmann::json& document,
                           const std::string& where, const std::filesystem::path& base_dir) {
   const JsonNode root(document, where, "/");
-  root.expect_keys({"luminaires", "portals", "exterior"});
+  root.expect_keys({"luminaires", "portals", "exterior", "emitters"});
   if (const auto lums = root.find("luminaires")) {
     if (!lums->is_object()) lums->fail("expected an object mapping luminaire names to states");
     for (const auto& [name, unused] : lums->value().items()) {
@@ -140,6 +162,14 @@ void apply_lighting_state(LightingState& state, const Scene& scene, const nlohma
     std::vector<PortalState*> all;
     for (PortalState& p : state.portals) all.push_back(&p);
     apply_exterior(all, scene, *x);
+  }
+  if (const auto emitters = root.find("emitters")) {
+    if (!emitters->is_object())
+      emitters->fail("expected an object mapping emitter names to states");
+    for (const auto& [name, unused] : emitters->value().items()) {
+      const JsonNode node = emitters->at(name);
+      apply_emitter(state.emitters[emitter_index(scene, node, name)], node);
+    }
   }
   if (const auto portals = root.find("portals")) {
     if (!portals->is_object()) portals->fail("expected an object mapping portal names to states");

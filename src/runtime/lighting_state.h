@@ -42,9 +42,22 @@ struct PortalState {
   bool operator==(const PortalState&) const = default;
 };
 
+// A near-field emitter (issue 5): where it is (turned by `rotate_deg` about the vertical axis
+// through its pivot, then moved by `translate`, as an exterior placement), how bright and
+// which colour, and whether it is on. Needs no new precompute: its light is sampled at run time.
+struct EmitterState {
+  Vec3 translate{0, 0, 0};
+  double rotate_deg = 0;
+  double luminance = 0;  // cd/m²
+  Rgb color{1, 1, 1};    // luminance-normalised
+  bool on = true;
+  bool operator==(const EmitterState&) const = default;
+};
+
 struct LightingState {
   std::vector<LuminaireState> luminaires;  // scene order
   std::vector<PortalState> portals;        // scene order
+  std::vector<EmitterState> emitters;      // scene order
 };
 
 LightingState default_lighting_state(const Scene& scene);

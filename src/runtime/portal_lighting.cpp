@@ -6,6 +6,7 @@
 #include <map>
 
 #include "common/input_error.h"
+#include "math/placement.h"
 #include "math/sh.h"
 #include "runtime/relighter.h"
 
@@ -25,12 +26,10 @@ std::vector<ExteriorObject> placed_exterior(const Scene& scene,
     const ExteriorGeometry& g = scene.exterior[i];
     const ExteriorPlacement p = i < placements.size() ? placements[i] : ExteriorPlacement{};
     if (!p.visible) continue;
-    const double a = p.rotate_deg * kPi / 180, c = std::cos(a), s = std::sin(a);
     std::vector<Vec3> positions;
     positions.reserve(g.geometry.positions.size());
     for (const Vec3& x : g.geometry.positions) {
-      const Vec3 d = x - g.pivot;  // counter-clockwise about +y seen from above
-      positions.push_back(g.pivot + Vec3{c * d.x + s * d.z, d.y, -s * d.x + c * d.z} + p.translate);
+      positions.push_back(placed_point(x, g.pivot, p.rotate_deg, p.translate));
     }
     std::map<std::uint32_t, std::size_t> by_material;
     for (std::size_t t = 0; t < g.geometry.triangles.size(); ++t) {

@@ -24,7 +24,12 @@ constexpr std::uint32_t kMeshNormals = rlt_fourcc("MNRM");
 constexpr std::uint32_t kVertexAlbedo = rlt_fourcc("MALB");
 constexpr std::uint32_t kTriangles = rlt_fourcc("MTRI");
 constexpr std::uint32_t kPortalTriangles = rlt_fourcc("MPRT");
-constexpr std::uint32_t kTriangleMaterials = rlt_fourcc("MMAT");  // optional (older files lack it)
+constexpr std::uint32_t kTriangleMaterials = rlt_fourcc("MMAT");
+// Near-field emitters (only when the scene has some): shadowed SH transfer per receiver, and
+// its interreflected part (RGB) when the precompute bounced it.
+constexpr std::uint32_t kNearfieldTransfer = rlt_fourcc("NFTR");
+constexpr std::uint32_t kNearfieldInterreflected =
+    rlt_fourcc("NFTI");  // optional (older files lack it)
 
 // Per-luminaire sections: two type characters, then the luminaire index in the upper
 // 16 bits ("DX" + j: direction x, "DY", "DZ", "DF": direct factor, "TI": indirect SH
@@ -112,6 +117,7 @@ void write_transfer_file(const fs::path& file, const Precomputed& p, const Scene
   const nlohmann::json metadata = {
       {"photometry", photometry_files},
       {"portal_sh_order", p.portal_sh_order},
+      {"nearfield_sh_order", p.nearfield_sh_order},
       {"portals", portals},
       {"format", "relight transfer"},
       {"scene_file", fs::absolute(scene_file).lexically_normal().string()},
@@ -148,6 +154,12 @@ void write_transfer_file(const fs::path& file, const Precomputed& p, const Scene
   w.add_u32(kTriangles, "triangles", triangles);
   w.add_u32(kPortalTriangles, "portal triangles", p.triangle_portal);
   w.add_u32(kTriangleMaterials, "triangle materials", p.mesh.triangle_material);
+  if (!p.nearfield_transfer.empty()) {
+    w.add_f32(kNearfieldTransfer, "near-field transfer", p.nearfield_transfer);
+  }
+  if (!p.nearfield_interreflected.empty()) {
+    w.add_f32(kNearfieldInterreflected, "near-field interreflected", p.nearfield_interreflected);
+  }
   for (std::size_t j = 0; j < p.luminaires.size(); ++j) {
     const LuminaireTransfer& l = p.luminaires[j];
     w.add_f32(luminaire_section('D', 'X', j), section_name("direct dir x", j), l.direct.dir_x);
@@ -335,6 +347,24 @@ TransferFile open_transfer_file(const fs::path& file) {
     t.view.luminaires.push_back(v);
   }
   read_portal_views(t, where);
+  t.nearfield_sh_order = m.value("nearfield_sh_order", 0);
+  if (!t.scene.emitters.empty()) {
+    if (t.nearfield_sh_order < 1 || t.nearfield_sh_order > 16 ||
+        !t.file.find_info(kNearfieldTransfer)) {
+      fail_input(where, "the scene has emitters but the file holds no near-field transfer");
+    }
+    const std::size_t kn = static_cast<std::size_t>(sh_count(t.nearfield_sh_order));
+    t.nearfield_transfer = t.file.view<float>(kNearfieldTransfer);
+    if (t.nearfield_transfer.size() != receivers * kn) {
+      fail_input(where, "near-field transfer has an inconsistent size");
+    }
+    if (t.file.find_info(kNearfieldInterreflected)) {
+      t.nearfield_interreflected = t.file.view<float>(kNearfieldInterreflected);
+      if (t.nearfield_interreflected.size() != receivers * kn * 3) {
+        fail_input(where, "near-field interreflected transfer has an inconsistent size");
+      }
+    }
+  }
   return t;
 }
 

@@ -157,6 +157,12 @@ Rgb JsonNode::rgb_non_negative() const {
   return {v.x, v.y, v.z};
 }
 
+Rgb JsonNode::chromaticity() const {
+  const Rgb color = rgb_non_negative();
+  if (!(luminance(color) > 0)) fail("colour must have a positive luminance");
+  return color / luminance(color);
+}
+
 Rgb JsonNode::rgb_in_unit_range() const {
   const Rgb c = rgb_non_negative();
   if (c.r > 1 || c.g > 1 || c.b > 1) fail("components must lie in 0..1");

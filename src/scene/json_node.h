@@ -44,10 +44,13 @@ class JsonNode {
   int integer_in(int lo, int hi) const;
   bool boolean() const;
   std::string string() const;
-  Vec3 vec3() const;                    // [x, y, z], finite
-  Vec3 direction() const;               // non-zero vec3, normalised
-  Rgb rgb_in_unit_range() const;        // [r, g, b], each 0..1
-  Rgb rgb_non_negative() const;         // [r, g, b], each >= 0
+  Vec3 vec3() const;              // [x, y, z], finite
+  Vec3 direction() const;         // non-zero vec3, normalised
+  Rgb rgb_in_unit_range() const;  // [r, g, b], each 0..1
+  Rgb rgb_non_negative() const;   // [r, g, b], each >= 0
+  // A light's colour: [r, g, b] ≥ 0 with positive luminance, scaled to luminance 1
+  // (a chromaticity; ARCHITECTURE §4.4).
+  Rgb chromaticity() const;
   std::vector<double> numbers() const;  // array of finite numbers
 
   // Convenience: optional member with a default.

@@ -76,6 +76,19 @@ struct ExteriorGeometry {
   Vec3 pivot;  // centre of its bounding box
 };
 
+// A near-field area emitter (issue 5, the thesis papers/004): a diffuse emitting surface of
+// constant luminance that moves close to the receivers, lit by adaptive sampling of the
+// incident radiance instead of by precomputed luminaire transfer. Not part of the room: it
+// neither occludes nor reflects in the precompute. The lighting state moves (translate, turn
+// about the vertical axis through `pivot`), dims and re-colours it.
+struct Emitter {
+  std::string name;
+  TriangleSoup geometry;  // emitting on the front side of each triangle
+  double luminance = 0;   // cd/m²
+  Rgb color{1, 1, 1};     // chromaticity, luminance-normalised
+  Vec3 pivot;             // centre of its bounding box
+};
+
 struct Camera {
   std::string name;
   Vec3 eye, target, up{0, 1, 0};
@@ -100,6 +113,16 @@ struct PrecomputeSettings {
   int portal_face_size = 32;
   int portal_sh_order = 6;
   int portal_samples_per_cell = 4;
+  // Near-field emitters (issue 5, the thesis §3.2.1): per-receiver SH transfer vectors with
+  // self-shadowing, l < nearfield_sh_order, from nearfield_directions stratified directions
+  // (a square number), made only when the scene has emitters; with nearfield_interreflection
+  // also their interreflected part through the gather operator (RGB).
+  int nearfield_sh_order = 4;
+  int nearfield_directions = 256;
+  bool nearfield_interreflection = false;
+  // Occluders within this distance (m) shadow the near-field transfer; 0: a quarter of the
+  // diagonal of the scene's bounding box.
+  double nearfield_shadow_distance = 0;
 };
 
 struct Bounds {
@@ -115,6 +138,7 @@ struct Scene {
   std::vector<Camera> cameras;
   std::vector<Portal> portals;
   std::vector<ExteriorGeometry> exterior;
+  std::vector<Emitter> emitters;
   PrecomputeSettings precompute;
 
   Bounds bounds() const;

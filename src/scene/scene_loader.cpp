@@ -145,6 +145,46 @@ struct Loader {
     }
   }
 
+  // Emitters: name, a geometry entry (its "material" may be left out: an emitter is not a
+  // surface of the room), luminance in cd/m² (> 0) and a colour (luminance-normalised).
+  void load_emitters(const JsonNode& node) {
+    std::set<std::string> names;
+    for (const JsonNode& e : node.elements()) {
+      e.expect_keys({"name", "geometry", "luminance", "color"});
+      Emitter emitter;
+      emitter.name = e.at("name").string();
+      if (emitter.name.empty()) e.at("name").fail("name must not be empty");
+      if (!names.insert(emitter.name).second) {
+        e.at("name").fail("duplicate emitter \"" + emitter.name + "\"");
+      }
+      const JsonNode g = e.at("geometry");
+      if (!g.is_object()) g.fail("expected a geometry entry (quad, box, sphere or mesh)");
+      nlohmann::json entry = g.value();
+      if (!entry.contains("material")) entry["material"] = emitter_material();
+      emitter.geometry = geometry_entry(JsonNode(entry, g.file(), g.pointer()));
+      if (emitter.geometry.triangles.empty()) g.fail("emitter has no triangles");
+      Vec3 lo = emitter.geometry.positions.front(), hi = lo;
+      for (const Vec3& p : emitter.geometry.positions) {
+        if (!is_finite(p)) g.fail("emitter geometry has a non-finite coordinate");
+        lo = min(lo, p);
+        hi = max(hi, p);
+      }
+      emitter.pivot = (lo + hi) * 0.5;
+      emitter.luminance = e.at("luminance").positive();
+      if (const auto c = e.find("color")) {
+        emitter.color = c->chromaticity();
+      }
+      scene.emitters.push_back(std::move(emitter));
+    }
+  }
+
+  // The material emitter geometry gets when its entry names none (black, never in the room).
+  std::string emitter_material() {
+    static constexpr const char* kName = "emitter";
+    if (!material_index.contains(kName)) add_material({kName, Rgb{0, 0, 0}, false});
+    return kName;
+  }
+
   TriangleSoup geometry_entry(const JsonNode& g) {
     TriangleSoup soup;
     {
@@ -193,9 +233,7 @@ struct Loader {
       if (length(c0) < 1e-6) l.at("c0").fail("c0 must not be parallel to aim");
       lum.c0 = normalize(c0);
       if (const auto c = l.find("color")) {
-        const Rgb color = c->rgb_non_negative();
-        if (!(luminance(color) > 0)) c->fail("colour must have a positive luminance");
-        lum.color = color / luminance(color);
+        lum.color = c->chromaticity();
       }
       if (const auto d = l.find("dimmer")) lum.dimmer = d->number_at_least(0);
       if (const auto s = l.find("size")) {
@@ -320,7 +358,8 @@ struct Loader {
   void load_precompute(const JsonNode& p) {
     p.expect_keys({"max_edge", "sh_order", "crease_deg", "gather_rays", "sensor_gather_rays",
                    "tolerance", "max_bounces", "direct", "portal_face_size", "portal_sh_order",
-                   "portal_samples_per_cell"});
+                   "portal_samples_per_cell", "nearfield_sh_order", "nearfield_directions",
+                   "nearfield_interreflection", "nearfield_shadow_distance"});
     PrecomputeSettings& s = scene.precompute;
     if (const auto n = p.find("max_edge")) s.max_edge = n->positive();
     if (const auto n = p.find("sh_order")) s.sh_order = n->integer_in(1, 32);
@@ -337,6 +376,20 @@ struct Loader {
     if (const auto n = p.find("direct")) {
       s.direct = n->string();
       if (s.direct != "exact" && s.direct != "sh") n->fail("expected \"exact\" or \"sh\"");
+    }
+    if (const auto n = p.find("nearfield_sh_order")) s.nearfield_sh_order = n->integer_in(1, 16);
+    if (const auto n = p.find("nearfield_directions")) {
+      s.nearfield_directions = n->integer_in(1, 1 << 20);
+      const int root = static_cast<int>(std::lround(std::sqrt(s.nearfield_directions)));
+      if (root * root != s.nearfield_directions) {
+        n->fail("nearfield_directions must be a square number (a stratified √N × √N grid)");
+      }
+    }
+    if (const auto n = p.find("nearfield_shadow_distance")) {
+      s.nearfield_shadow_distance = n->number_at_least(0);
+    }
+    if (const auto n = p.find("nearfield_interreflection")) {
+      s.nearfield_interreflection = n->boolean();
     }
     if (const auto n = p.find("portal_face_size")) {
       s.portal_face_size = n->integer_in(1, 256);
@@ -417,7 +470,7 @@ Scene scene_from_json(const nlohmann::json& document, const fs::path& file,
                       const EmbeddedFiles* embedded) {
   const JsonNode root(document, file.string(), "/");
   root.expect_keys({"description", "materials", "geometry", "luminaires", "sensors", "cameras",
-                    "portals", "exterior", "precompute"});
+                    "portals", "exterior", "emitters", "precompute"});
   Loader loader;
   loader.scene.file = file;
   loader.base_dir = file.has_parent_path() ? file.parent_path() : fs::path(".");
@@ -430,6 +483,7 @@ Scene scene_from_json(const nlohmann::json& document, const fs::path& file,
   if (const auto n = root.find("cameras")) loader.load_cameras(*n);
   if (const auto n = root.find("portals")) loader.load_portals(*n);
   if (const auto n = root.find("exterior")) loader.load_exterior(*n);
+  if (const auto n = root.find("emitters")) loader.load_emitters(*n);
   if (const auto n = root.find("precompute")) loader.load_precompute(*n);
   for (const Vec3& p : loader.scene.geometry.positions) {
     if (!is_finite(p)) root.at("geometry").fail("geometry has a non-finite coordinate");

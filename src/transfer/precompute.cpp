@@ -1,12 +1,14 @@
 #include "transfer/precompute.h"
 
 #include <chrono>
+#include <cmath>
 
 #include "light/luminaire_frame.h"
 #include "math/sh.h"
 #include "trace/traced_scene.h"
 #include "transfer/bounce_solver.h"
 #include "transfer/gather_operator.h"
+#include "transfer/nearfield_transfer.h"
 #include "transfer/sh_direct.h"
 #include "transfer/transfer_blocks.h"
 
@@ -107,6 +109,37 @@ Precomputed precompute_transfer(const Scene& scene, const PrecomputeOptions& opt
     out.phases.push_back({"portal direct", seconds_since(start), portal_rays});
   }
 
+  // Near-field emitters: shadowed SH transfer per receiver, its columns bounced too when asked.
+  const int kn = scene.emitters.empty() ? 0 : sh_count(scene.precompute.nearfield_sh_order);
+  const Eigen::Index nearfield_first = direct_columns.cols();
+  if (kn > 0) {
+    start = Clock::now();
+    NearfieldTransferSettings settings;
+    settings.order = scene.precompute.nearfield_sh_order;
+    settings.sqrt_directions =
+        static_cast<int>(std::lround(std::sqrt(scene.precompute.nearfield_directions)));
+    settings.seed = options.seed;
+    const Bounds b = scene.bounds();
+    settings.max_distance = scene.precompute.nearfield_shadow_distance > 0
+                                ? scene.precompute.nearfield_shadow_distance
+                                : 0.25 * length(b.max - b.min);
+    out.nearfield_sh_order = settings.order;
+    out.nearfield_transfer =
+        nearfield_transfer(traced.opaque, ray_points, out.receivers.normals, settings);
+    if (scene.precompute.nearfield_interreflection) {
+      direct_columns.conservativeResize(Eigen::NoChange, nearfield_first + kn);
+      for (Eigen::Index r = 0; r < n; ++r) {
+        for (Eigen::Index c = 0; c < kn; ++c) {
+          direct_columns(r, nearfield_first + c) =
+              out.nearfield_transfer[static_cast<std::size_t>(r * kn + c)];
+        }
+      }
+    }
+    const std::uint64_t rays =
+        out.receivers.size() * static_cast<std::uint64_t>(scene.precompute.nearfield_directions);
+    out.phases.push_back({"near-field transfer", seconds_since(start), rays});
+  }
+
   BounceSettings bounce;
   bounce.tolerance = scene.precompute.tolerance;
   bounce.max_bounces = scene.precompute.max_bounces;
@@ -128,6 +161,17 @@ Precomputed precompute_transfer(const Scene& scene, const PrecomputeOptions& opt
     const Eigen::MatrixXf g = result.indirect[1].middleCols(first, kp);
     const Eigen::MatrixXf b = result.indirect[2].middleCols(first, kp);
     out.portals[static_cast<std::size_t>(p)].indirect_blocks = pack_blocks({&r, &g, &b});
+  }
+  if (kn > 0 && scene.precompute.nearfield_interreflection) {
+    out.nearfield_interreflected.resize(static_cast<std::size_t>(n * kn * 3));
+    for (Eigen::Index r = 0; r < n; ++r) {
+      for (Eigen::Index c = 0; c < kn; ++c) {
+        for (int ch = 0; ch < 3; ++ch) {
+          out.nearfield_interreflected[static_cast<std::size_t>((r * kn + c) * 3 + ch)] =
+              result.indirect[static_cast<std::size_t>(ch)](r, nearfield_first + c);
+        }
+      }
+    }
   }
   out.phases.push_back({"pack", seconds_since(start), 0});
   return out;

@@ -60,6 +60,12 @@ struct Precomputed {
   std::vector<LuminaireTransfer> luminaires;  // in scene order
   int portal_sh_order = 6;
   std::vector<PortalTransfer> portals;  // in scene order
+  // Near-field emitters (scene has emitters): per receiver nearfield_sh_order² shadowed transfer
+  // coefficients (transfer/nearfield_transfer.h), and with interreflection the bounced part,
+  // per receiver K × RGB. Empty otherwise.
+  int nearfield_sh_order = 0;
+  std::vector<float> nearfield_transfer;
+  std::vector<float> nearfield_interreflected;
   std::vector<PhaseTiming> phases;
   std::vector<std::string> warnings;  // e.g. portals too large for their shells (§6)
 };

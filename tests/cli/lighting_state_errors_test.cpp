@@ -127,7 +127,7 @@ TEST_F(LightingStateFiles, UnknownKey) {
   EXPECT_EQ(top.exit_code, 2);
   EXPECT_EQ(top.err.rfind("error: " + state_path("unknown-top.json").string() + ":", 0), 0u)
       << top.err;
-  EXPECT_NE(top.err.find("lights: unknown key \"lights\" (expected one of: luminaires, portals, exterior)\n"),
+  EXPECT_NE(top.err.find("lights: unknown key \"lights\" (expected one of: luminaires, portals, exterior, emitters)\n"),
             std::string::npos)
       << top.err;
   EXPECT_EQ(top.err.find('\n'), top.err.size() - 1) << top.err;
@@ -143,7 +143,7 @@ TEST_F(LightingStateFiles, UnknownKey) {
 // fixed.
 TEST_F(LightingStateFiles, UnknownTopLevelKeyHasTheRootPointer) {
   expect_state_error("unknown-top-key.json", R"({ "lights": {} })", ":/lights",
-                     "unknown key \"lights\" (expected one of: luminaires, portals, exterior)");
+                     "unknown key \"lights\" (expected one of: luminaires, portals, exterior, emitters)");
 }
 
 TEST_F(LightingStateFiles, MovingALuminaireIsRefused) {

@@ -1,4 +1,4 @@
-#include "nearfield/nearfield_transfer.h"
+#include "transfer/nearfield_transfer.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -40,7 +40,9 @@ std::vector<float> nearfield_transfer(const RayTracer& occluders, std::span<cons
           const Vec3 w = sample_uniform_sphere(u1, u2);
           const double cosine = dot(n, w);
           if (cosine <= 0) continue;
-          if (occluders.occluded({origin, w})) continue;
+          Ray ray{origin, w};
+          ray.t_far = settings.max_distance;
+          if (occluders.occluded(ray)) continue;
           sh_eval(settings.order, w, y);
           for (std::size_t c = 0; c < k; ++c) t[c] += weight * cosine * y[c];
         }

@@ -5,10 +5,13 @@
 // radiance with SH coefficients l_k is E(p) = Σ_k t_k l_k (and the radiance a diffuse surface
 // of albedo ρ sends is ρE/π). Estimated by stratified uniform directions over the sphere
 // (Algorithm 3.2: a jittered √N × √N grid in (cos θ, φ)), each of weight 4π/N, one visibility
-// ray each towards the upper hemisphere.
+// ray each towards the upper hemisphere, up to max_distance: self-shadowing is the receivers'
+// own neighbourhood (the thesis shades an object in the open; inside a room the walls would
+// block every distant direction while the emitters are inside).
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -20,6 +23,9 @@ namespace relight {
 struct NearfieldTransferSettings {
   int order = 4;             // SH bands l < order (the thesis: 16 coefficients)
   int sqrt_directions = 16;  // √N: N = 256 directions per receiver
+  // Occluders farther than this (m) do not shadow: a room's walls would otherwise hide every
+  // direction, while near-field emitters shine from inside the room (see PrecomputeSettings).
+  double max_distance = std::numeric_limits<double>::infinity();
   std::uint64_t seed = 1;
 };
 

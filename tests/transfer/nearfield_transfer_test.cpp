@@ -1,4 +1,4 @@
-// nearfield/nearfield_transfer.h (thesis §3.2.1): unshadowed, a receiver's transfer vector is
+// transfer/nearfield_transfer.h (thesis §3.2.1): unshadowed, a receiver's transfer vector is
 // the SH projection of the clamped cosine about its normal (zonal coefficients √π/2, √(π/3),
 // √(5π)/8, 0 for l = 0..3); under a blocker it is zero; and E = t · l gives πL under uniform
 // radiance L.
@@ -8,7 +8,7 @@
 
 #include "math/sh.h"
 #include "math/zonal.h"
-#include "nearfield/nearfield_transfer.h"
+#include "transfer/nearfield_transfer.h"
 #include "scene/primitives.h"
 
 namespace relight {
