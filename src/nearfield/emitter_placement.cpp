@@ -22,8 +22,13 @@ PlacedEmitters place_emitters(const std::vector<Emitter>& emitters,
       out.positions.push_back(placed_point(p, emitter.pivot, s.rotate_deg, s.translate));
     }
     for (const Triangle& t : emitter.geometry.triangles) {
-      out.triangles.push_back({t[0] + first, t[1] + first, t[2] + first});
+      const Triangle placed{t[0] + first, t[1] + first, t[2] + first};
+      out.triangles.push_back(placed);
       out.emitter_of_triangle.push_back(static_cast<std::uint32_t>(e));
+      const Vec3 a = out.positions[placed[0]];
+      const Vec3 n = cross(out.positions[placed[1]] - a, out.positions[placed[2]] - a);
+      out.normals.push_back(length(n) > 0 ? normalize(n) : Vec3{0, 0, 0});
+      out.triangle_radiance.push_back(out.radiance.back());
     }
   }
   return out;

@@ -17,9 +17,11 @@ struct SubRay {
   double distance = 0;
 };
 
-SubRay trace(Vec3 x, Vec3 dir, const RayTracer& emitters, const RayTracer* occluders) {
+SubRay trace(Vec3 x, Vec3 dir, const RayTracer& emitters, std::span<const Vec3> normals,
+             const RayTracer* occluders) {
   const RayHit hit = emitters.intersect({x, dir});
   if (!hit.hit()) return {};
+  if (!normals.empty() && dot(normals[hit.triangle], dir) >= 0) return {};  // its dark back
   if (occluders) {
     Ray shadow{x, dir};
     shadow.t_near = 1e-4;  // a sample at a receiver must not be shadowed by its own surface
@@ -38,6 +40,7 @@ Vec3 face_direction(int face, double s, double t) {
 
 IncidentRadiance sample_incident_radiance(Vec3 x, const RayTracer& emitters,
                                           std::span<const Rgb> emitter_radiance,
+                                          std::span<const Vec3> emitter_normals,
                                           const RayTracer* occluders,
                                           const IncidentRadianceSettings& settings) {
   const int n = settings.face_size;
@@ -67,8 +70,8 @@ IncidentRadiance sample_incident_radiance(Vec3 x, const RayTracer& emitters,
     for (int q = 0; q < 4; ++q) {
       const double s = (c.i + 0.25 + 0.5 * (q % 2)) / n, t = (c.j + 0.25 + 0.5 * (q / 2)) / n;
       coarse_dir[index][static_cast<std::size_t>(q)] = face_direction(c.face, s, t);
-      coarse[index][static_cast<std::size_t>(q)] =
-          trace(x, coarse_dir[index][static_cast<std::size_t>(q)], emitters, occluders);
+      coarse[index][static_cast<std::size_t>(q)] = trace(
+          x, coarse_dir[index][static_cast<std::size_t>(q)], emitters, emitter_normals, occluders);
     }
   }
   const auto same = [](const SubRay& a, const SubRay& b) {
@@ -99,7 +102,7 @@ IncidentRadiance sample_incident_radiance(Vec3 x, const RayTracer& emitters,
       for (int a = 0; a < kFine; ++a) {
         const Vec3 dir =
             face_direction(c.face, (c.i + (a + 0.5) / kFine) / n, (c.j + (b + 0.5) / kFine) / n);
-        add(trace(x, dir, emitters, occluders), dir, omega / (kFine * kFine));
+        add(trace(x, dir, emitters, emitter_normals, occluders), dir, omega / (kFine * kFine));
       }
     }
   }

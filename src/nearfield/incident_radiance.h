@@ -33,10 +33,13 @@ struct IncidentRadiance {
   double emitter_solid_angle = 0;  // sr of the cubemap the emitters cover
 };
 
-// `emitters` reports, per hit, an id into `emitter_radiance` (cd/m² per channel);
+// `emitters` reports, per hit, an id into `emitter_radiance` (cd/m² per channel) and, when
+// given, into `emitter_normals`: a triangle seen from behind (its back, dot(ω, n) ≥ 0) emits
+// nothing but still hides what is behind it; without normals both sides emit.
 // `occluders` is the static scene (may be null: no occlusion).
 IncidentRadiance sample_incident_radiance(Vec3 x, const RayTracer& emitters,
                                           std::span<const Rgb> emitter_radiance,
+                                          std::span<const Vec3> emitter_normals,
                                           const RayTracer* occluders,
                                           const IncidentRadianceSettings& settings);
 

@@ -68,14 +68,16 @@ NearfieldScene::NearfieldScene(std::vector<Vec3> receivers, int order,
 NearfieldResult NearfieldScene::light(const PlacedEmitters& emitters,
                                       const NearfieldSettings& settings) const {
   if (settings.max_samples < 1) throw std::invalid_argument("near-field: max_samples must be >= 1");
-  const RayTracer tracer(emitters.positions, emitters.triangles, emitters.emitter_of_triangle);
+  const RayTracer tracer(emitters.positions, emitters.triangles,
+                         identity_ids(emitters.triangles.size()));
   IncidentRadianceSettings incident;
   incident.face_size = settings.face_size;
   incident.order = order_;
   const bool occlude = settings.scene_occlusion && occluders_.triangle_count() > 0;
   const auto sample_at = [&](Vec3 x) {
     const RayTracer* occluders = occlude && !inside_geometry(x) ? &occluders_ : nullptr;
-    return sample_incident_radiance(x, tracer, emitters.radiance, occluders, incident);
+    return sample_incident_radiance(x, tracer, emitters.triangle_radiance, emitters.normals,
+                                    occluders, incident);
   };
   const std::size_t k = static_cast<std::size_t>(sh_count(order_));
   const std::size_t n = receivers_.size();

@@ -36,7 +36,7 @@ struct EmitterAbove {
     return sample_adaptively(bvh, receivers.size(),
                              [&](Vec3 x) {
                                return sample_incident_radiance(x, emitters, std::span(&radiance, 1),
-                                                               nullptr, s);
+                                                               {}, nullptr, s);
                              },
                              {epsilon, cap});
   }

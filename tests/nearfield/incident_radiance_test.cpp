@@ -28,7 +28,7 @@ TEST(IncidentRadiance, SmallFarEmitterIsThePointLightClosedForm) {
   IncidentRadianceSettings s;
   s.face_size = 32;
   const IncidentRadiance in =
-      sample_incident_radiance(x, sphere, std::span(&radiance, 1), nullptr, s);
+      sample_incident_radiance(x, sphere, std::span(&radiance, 1), {}, nullptr, s);
   std::vector<double> y(16);
   sh_eval(4, dir, y);
   const double intensity_over_d2 = kPi * a * a / (d * d);  // I/d² per unit radiance
@@ -56,7 +56,7 @@ TEST(IncidentRadiance, OccludedEmitterAddsNothing) {
   const RayTracer blocker(wall.positions, wall.triangles, ids);
   const Rgb radiance{100, 100, 100};
   const IncidentRadiance in =
-      sample_incident_radiance({0, 0, 0}, sphere, std::span(&radiance, 1), &blocker, {});
+      sample_incident_radiance({0, 0, 0}, sphere, std::span(&radiance, 1), {}, &blocker, {});
   EXPECT_EQ(sh_luminance_norm(in.sh), 0);
   EXPECT_TRUE(std::isinf(in.harmonic_mean_distance));
 }
