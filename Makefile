@@ -24,12 +24,14 @@ test: build
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
 # Benchmarks: Google Benchmark programs on the demo room, then the 1M-receiver dragon
-# scene (assets from npm through the bootstrap). Not part of `make test`.
+# scene and the near-field scenes (dragon res2, a church-like nave; assets from npm through
+# the bootstrap). Not part of `make test`.
 bench: build
 	@scripts/bootstrap.sh --bench
 	@$(BUILD)/relight_benchmarks
 	@BUILD=$(BUILD) scripts/bench-dragon.sh
 	@BUILD=$(BUILD) scripts/bench-dragon.sh dragon-window
+	@BUILD=$(BUILD) scripts/bench-nearfield.sh
 
 format:
 	@clang-format -i $$(git ls-files 'src/*.cpp' 'src/*.h' 'tests/*.cpp' 'tests/*.h' 'bench/*.cpp')

@@ -1,5 +1,5 @@
 // `relight nearfield SCENE.rlt [--state STATE.json] --epsilon E [--max-samples N]
-//   [--method adaptive|icp|truth] [--face-size K] [--no-scene-occlusion] [-o IMAGE] [view options]`
+//   [--method adaptive|icp|truth] [--face-size K] [--scene-occlusion] [-o IMAGE] [view options]`
 // Lights a precomputed scene's receivers by its near-field emitters as the lighting state
 // places them (issue 5, the thesis papers/004; nearfield/nearfield_lighting.h), with the
 // chosen sampling method, and compares with the truth (a sample at every receiver). Prints one
@@ -31,7 +31,7 @@ struct NearfieldArgs {
   double epsilon = 0.01;
   std::size_t max_samples = 4096;
   int face_size = 16;
-  bool scene_occlusion = true;
+  bool scene_occlusion = false;
   ViewArgs view;
 };
 
@@ -142,8 +142,9 @@ void add_nearfield_command(CLI::App& app, Action& action) {
   cmd->add_option("--face-size", args->face_size, "cubemap texels per face side at each sample")
       ->check(CLI::Range(1, 256))
       ->capture_default_str();
-  cmd->add_flag("!--no-scene-occlusion", args->scene_occlusion,
-                "only emitters occlude emitters at the samples (the static scene does by default)");
+  cmd->add_flag("--scene-occlusion", args->scene_occlusion,
+                "the static scene occludes the emitters at each sample too (default: only the "
+                "emitters; static shadows are in the transfer)");
   add_view_options(*cmd, args->view);
   cmd->callback([args, &action] { action = [args] { return run_nearfield(*args); }; });
 }

@@ -157,5 +157,28 @@ TEST(NearfieldLighting, MovingAnEmitterChangesTheSamples) {
   for (const Rgb& l : off.sh) EXPECT_EQ(luminance(l), 0);
 }
 
+// --scene-occlusion: a closed box between a floor and an emitter shadows the floor's truth;
+// a sample inside the box (the mean of its own surface's receivers) is recognised as inside
+// and still sees the emitter.
+TEST(NearfieldLighting, SceneOcclusionShadowsButNotFromInsideAClosedObject) {
+  const TriangleSoup box = make_box({-0.5, 0.5, -0.5}, {0.5, 1.5, 0.5}, Facing::kOutward, 0);
+  const std::vector<Vec3> floor{{0, 0, 0}, {0.1, 0, 0.1}};
+  const NearfieldScene floor_scene(floor, kOrder, box.positions, box.triangles);
+  const PlacedEmitters above = placed({sphere_emitter("top", {0, 3, 0}, 0.4, 1e4)});
+  NearfieldSettings truth = settings(NearfieldMethod::kTruth, 0, 1);
+  const double open = luminance(floor_scene.light(above, truth).sh[0]);
+  truth.scene_occlusion = true;
+  EXPECT_GT(open, 0);
+  EXPECT_EQ(luminance(floor_scene.light(above, truth).sh[0]), 0);  // in the box's shadow
+
+  const NearfieldScene box_scene(box.positions, kOrder, box.positions, box.triangles);
+  NearfieldSettings one = settings(NearfieldMethod::kAdaptive, 1e12, 1);  // the root only
+  one.scene_occlusion = true;
+  const NearfieldResult r = box_scene.light(above, one);
+  ASSERT_EQ(r.samples.size(), 1u);
+  EXPECT_NEAR(r.samples[0].position.y, 1.0, 1e-9);  // the box's centre
+  EXPECT_GT(luminance(r.samples[0].sh[0]), 0);
+}
+
 }  // namespace
 }  // namespace relight
