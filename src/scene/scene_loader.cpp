@@ -115,6 +115,20 @@ struct Loader {
     for (const JsonNode& g : node.elements()) scene.geometry.append(geometry_entry(g));
   }
 
+  // What a lighting state turns a movable object about (exterior objects, emitters): the
+  // centre of its bounding box. Fails at `where` for no triangles or a non-finite coordinate.
+  static Vec3 movable_pivot(const TriangleSoup& geometry, const JsonNode& where,
+                            const std::string& what) {
+    if (geometry.triangles.empty()) where.fail(what + " has no triangles");
+    Vec3 lo = geometry.positions.front(), hi = lo;
+    for (const Vec3& p : geometry.positions) {
+      if (!is_finite(p)) where.fail(what + " geometry has a non-finite coordinate");
+      lo = min(lo, p);
+      hi = max(hi, p);
+    }
+    return (lo + hi) * 0.5;
+  }
+
   // Exterior entries are geometry entries with an optional "name".
   void load_exterior(const JsonNode& node) {
     std::set<std::string> names;
@@ -133,14 +147,7 @@ struct Loader {
       for (std::uint32_t m : object.geometry.triangle_material) {
         if (scene.materials[m].portal) e.fail("exterior geometry cannot be window glass");
       }
-      if (object.geometry.triangles.empty()) e.fail("exterior object has no triangles");
-      Vec3 lo = object.geometry.positions.front(), hi = lo;
-      for (const Vec3& p : object.geometry.positions) {
-        if (!is_finite(p)) e.fail("exterior geometry has a non-finite coordinate");
-        lo = min(lo, p);
-        hi = max(hi, p);
-      }
-      object.pivot = (lo + hi) * 0.5;
+      object.pivot = movable_pivot(object.geometry, e, "exterior object");
       scene.exterior.push_back(std::move(object));
     }
   }
@@ -162,14 +169,7 @@ struct Loader {
       nlohmann::json entry = g.value();
       if (!entry.contains("material")) entry["material"] = emitter_material();
       emitter.geometry = geometry_entry(JsonNode(entry, g.file(), g.pointer()));
-      if (emitter.geometry.triangles.empty()) g.fail("emitter has no triangles");
-      Vec3 lo = emitter.geometry.positions.front(), hi = lo;
-      for (const Vec3& p : emitter.geometry.positions) {
-        if (!is_finite(p)) g.fail("emitter geometry has a non-finite coordinate");
-        lo = min(lo, p);
-        hi = max(hi, p);
-      }
-      emitter.pivot = (lo + hi) * 0.5;
+      emitter.pivot = movable_pivot(emitter.geometry, g, "emitter");
       emitter.luminance = e.at("luminance").positive();
       if (const auto c = e.find("color")) {
         emitter.color = c->chromaticity();
