@@ -24,12 +24,6 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-std::vector<std::uint32_t> identity_ids(std::size_t n) {
-  std::vector<std::uint32_t> ids(n);
-  for (std::size_t i = 0; i < n; ++i) ids[i] = static_cast<std::uint32_t>(i);
-  return ids;
-}
-
 }  // namespace
 
 NearfieldMethod parse_nearfield_method(const std::string& name) {
@@ -61,7 +55,7 @@ NearfieldScene::NearfieldScene(std::vector<Vec3> receivers, int order,
       occluder_positions_(std::move(occluder_positions)),
       occluder_triangles_(std::move(occluder_triangles)),
       occluders_(occluder_positions_, occluder_triangles_,
-                 identity_ids(occluder_triangles_.size())) {
+                 sequential_ids(occluder_triangles_.size())) {
   if (order < 1) throw std::invalid_argument("near-field: order must be >= 1");
 }
 
@@ -69,7 +63,7 @@ NearfieldResult NearfieldScene::light(const PlacedEmitters& emitters,
                                       const NearfieldSettings& settings) const {
   if (settings.max_samples < 1) throw std::invalid_argument("near-field: max_samples must be >= 1");
   const RayTracer tracer(emitters.positions, emitters.triangles,
-                         identity_ids(emitters.triangles.size()));
+                         sequential_ids(emitters.triangles.size()));
   IncidentRadianceSettings incident;
   incident.face_size = settings.face_size;
   incident.order = order_;

@@ -44,12 +44,6 @@ struct Shown {
   std::uint32_t frame_number = 0;
 };
 
-std::vector<std::uint32_t> all_triangle_ids(std::size_t n) {
-  std::vector<std::uint32_t> ids(n);
-  for (std::size_t i = 0; i < n; ++i) ids[i] = static_cast<std::uint32_t>(i);
-  return ids;
-}
-
 nlohmann::json vec3_json(Vec3 v) {
   return {v.x, v.y, v.z};
 }
@@ -311,7 +305,7 @@ StudioServer::StudioServer(const fs::path& rlt, const StudioOptions& options)
   s.vertex_portal = vertex_portals(t);
   s.geometry = encode_geometry(t);
   s.picker =
-      std::make_unique<RayTracer>(t.positions, t.triangles, all_triangle_ids(t.triangles.size()));
+      std::make_unique<RayTracer>(t.positions, t.triangles, sequential_ids(t.triangles.size()));
   const LightingState initial = default_lighting_state(t.scene);
   const auto start = std::chrono::steady_clock::now();
   std::shared_ptr<const FrameValues> values = s.relight_values(initial);

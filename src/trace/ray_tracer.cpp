@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 
@@ -109,6 +110,12 @@ bool RayTracer::occluded(const Ray& r) const {
   RTCRay ray = to_embree(r);
   rtcOccluded1(handles_->scene, &context, &ray);
   return ray.tfar < 0;  // Embree sets tfar = -inf on an occlusion
+}
+
+std::vector<std::uint32_t> sequential_ids(std::size_t n) {
+  std::vector<std::uint32_t> ids(n);
+  std::iota(ids.begin(), ids.end(), 0u);
+  return ids;
 }
 
 Vec3 offset_from_surface(Vec3 p, Vec3 n) {

@@ -54,6 +54,9 @@ class RayTracer {
   std::vector<std::uint32_t> ids_;
 };
 
+// Ids 0 … n−1: a tracer built with them reports each hit triangle by its own index.
+std::vector<std::uint32_t> sequential_ids(std::size_t n);
+
 // Start point for a secondary ray leaving a surface at p with unit normal n, pushed off
 // the surface to avoid self-intersection in Embree's single precision.
 Vec3 offset_from_surface(Vec3 p, Vec3 n);

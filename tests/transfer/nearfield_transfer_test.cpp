@@ -8,16 +8,14 @@
 
 #include "math/sh.h"
 #include "math/zonal.h"
-#include "transfer/nearfield_transfer.h"
 #include "scene/primitives.h"
+#include "transfer/nearfield_transfer.h"
 
 namespace relight {
 namespace {
 
 RayTracer tracer_of(const TriangleSoup& soup) {
-  std::vector<std::uint32_t> ids(soup.triangles.size());
-  for (std::uint32_t i = 0; i < ids.size(); ++i) ids[i] = i;
-  return RayTracer(soup.positions, soup.triangles, ids);
+  return RayTracer(soup.positions, soup.triangles, sequential_ids(soup.triangles.size()));
 }
 
 TEST(NearfieldTransfer, UnshadowedIsTheClampedCosine) {
