@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "nearfield/inverse_distance_reconstruction.h"
+#include "sh_rows.h"
 
 namespace relight {
 namespace {
@@ -25,21 +26,8 @@ std::vector<Rgb> vector_of(double base) {
   return sh;
 }
 
-void expect_row(std::span<const Rgb> out, std::size_t point, const std::vector<Rgb>& expected,
-                double tolerance) {
-  for (std::size_t j = 0; j < kCoefficients; ++j) {
-    const Rgb got = out[point * kCoefficients + j];
-    EXPECT_NEAR(got.r, expected[j].r, tolerance) << "point " << point << " coefficient " << j;
-    EXPECT_NEAR(got.g, expected[j].g, tolerance) << "point " << point << " coefficient " << j;
-    EXPECT_NEAR(got.b, expected[j].b, tolerance) << "point " << point << " coefficient " << j;
-  }
-}
-
-std::vector<Rgb> mix(const std::vector<Rgb>& a, double wa, const std::vector<Rgb>& b, double wb) {
-  std::vector<Rgb> m;
-  for (std::size_t j = 0; j < a.size(); ++j) m.push_back(wa * a[j] + wb * b[j]);
-  return m;
-}
+using testing::expect_row;
+using testing::mix;
 
 const std::vector<IncidentSample> kTwo{{{0, 0, 0}, 0, vector_of(1)}, {{1, 0, 0}, 0, vector_of(7)}};
 
