@@ -4,7 +4,7 @@ BUILD ?= build
 JOBS  ?= 2
 DEMO_OUT ?= out/demo
 
-.PHONY: all bootstrap build demo test bench format clean
+.PHONY: all bootstrap build demo test bench install format clean
 
 all: build
 
@@ -22,6 +22,12 @@ demo: build
 
 test: build
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+# `make install PREFIX=/opt/relight`: relight in PREFIX/bin, the studio client (with three.js)
+# in PREFIX/share/relight/studio, where `relight serve` finds it.
+PREFIX ?= /usr/local
+install: build
+	@cmake --install $(BUILD) --prefix $(PREFIX)
 
 # Benchmarks: Google Benchmark programs on the demo room, then the 1M-receiver dragon
 # scene and the near-field scenes (dragon res2, a church-like nave; assets from npm through

@@ -14,14 +14,14 @@
 #include <tbb/parallel_reduce.h>
 
 #include "cli/demo_room.h"
+#include "engine/gather_operator.h"
 #include "math/frame.h"
 #include "math/sampling.h"
 #include "runtime/relighter.h"
-#include "runtime/transfer_file.h"
 #include "scene/scene_loader.h"
+#include "sources/precompute.h"
+#include "store/transfer_file.h"
 #include "trace/traced_scene.h"
-#include "transfer/gather_operator.h"
-#include "transfer/precompute.h"
 
 namespace relight {
 namespace {

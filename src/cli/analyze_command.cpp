@@ -1,7 +1,7 @@
 // `relight analyze SCENE.rlt --sh-energy [-o FILE.csv]`: analyses of a precomputed file.
 // --sh-energy (the only one so far): per portal and colour channel, how much each SH order
-// of the stored indirect transfer can carry (the interior-scene paper's Eq. 4–5 and
-// Figure 8; runtime/sh_energy.h), as a table on stdout and optionally a CSV
+// of the stored indirect transfer can carry (Yue et al. 2009's Eq. 4–5 and
+// Figure 8; sources/portal/sh_energy.h), as a table on stdout and optionally a CSV
 // `portal,l,channel,energy,share,cumulative`.
 #include <cstdio>
 #include <iostream>
@@ -14,8 +14,8 @@
 #include "cli/commands.h"
 #include "common/atomic_file.h"
 #include "common/input_error.h"
-#include "runtime/sh_energy.h"
-#include "runtime/transfer_file.h"
+#include "sources/portal/sh_energy.h"
+#include "store/transfer_file.h"
 
 namespace relight {
 

@@ -18,8 +18,8 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.h"
-#include "cli/relit_scene.h"
 #include "common/input_error.h"
+#include "runtime/relit_scene.h"
 
 namespace relight {
 
@@ -72,15 +72,16 @@ std::vector<double> time_ms(int frames, F&& f) {
 }
 
 int run_bench(const BenchArgs& args) {
-  RelitScene relit = relight_transfer_file(args.rlt, std::nullopt);
-  Relighter& relighter = *relit.relighter;
+  RelitScene relit(args.rlt, std::nullopt);
+  Relighter& relighter = relit.relighter();
+  std::vector<float> irradiance(3 * relighter.receivers());
   LightingState state = relighter.state();
 
   if (args.sky && state.portals.empty()) {
     fail_input(args.rlt, "--sky needs a scene with portals (windows)");
   }
   // A frame: a lighting change (new weights, new shells) and the full weighted sum.
-  relighter.relight(relit.irradiance);  // warm
+  relighter.relight(irradiance);  // warm
   std::vector<double> shell_ms;
   const double frame_ms = median(time_ms(args.frames, [&](int i) {
     if (args.sky) {
@@ -89,7 +90,7 @@ int run_bench(const BenchArgs& args) {
       for (LuminaireState& l : state.luminaires) l.dimmer = 0.5 + 0.5 * ((i % 2) == 0);
     }
     relighter.set_state(state);
-    relighter.relight(relit.irradiance);
+    relighter.relight(irradiance);
     double shells = 0;
     for (std::size_t p = 0; p < state.portals.size(); ++p) shells += relighter.shell_seconds(p);
     shell_ms.push_back(shells * 1e3);
@@ -119,7 +120,7 @@ int run_bench(const BenchArgs& args) {
   const double streaming = buffer.size() * sizeof(std::uint64_t) / (stream_ms * 1e-3) / 1e9;
   nlohmann::json line = {{"mode", args.sky ? "sky" : "luminaires"},
                          {"receivers", relighter.receivers()},
-                         {"luminaires", relit.transfer->scene.luminaires.size()},
+                         {"luminaires", relit.scene().luminaires.size()},
                          {"portals", state.portals.size()},
                          {"transfer_bytes", bytes},
                          {"stored_transfer_bytes", relighter.transfer_bytes()},

@@ -15,11 +15,12 @@
 #include "cli/demo_room.h"
 #include "cli/precompute_run.h"
 #include "cli/reference_run.h"
-#include "cli/relit_scene.h"
 #include "cli/serve_run.h"
 #include "common/atomic_file.h"
 #include "common/input_error.h"
+#include "render/relit_scene_image.h"
 #include "render/sensor_report.h"
+#include "runtime/relit_scene.h"
 #include "scene/scene_loader.h"
 
 namespace relight {
@@ -119,14 +120,14 @@ int run_demo(const DemoArgs& args) {
     run_precompute(document, scene_file, rlt, options);
   }
 
-  RelitScene relit = relight_transfer_file(rlt, std::nullopt);
-  const Scene& scene = relit.transfer->scene;
+  RelitScene relit(rlt, std::nullopt);
+  const Scene& scene = relit.scene();
   const Camera& camera = scene.cameras.front();
   for (const auto& [name, text] : {std::pair{"evening", kEvening}, std::pair{"work", kWork}}) {
     const fs::path state_file = dir / (std::string(name) + ".json");
     write_text_atomically(state_file, text);
     relit.apply(load_lighting_state(scene, state_file));
-    const ShadedImages images = relit.render(camera, args.width, args.height, true);
+    const ShadedImages images = render_relit_scene(relit, camera, args.width, args.height, true);
     const fs::path png = dir / ("room-" + std::string(name) + ".png");
     const fs::path lux = dir / ("room-" + std::string(name) + "-lux.png");
     const fs::path csv = dir / ("work-plane-" + std::string(name) + ".csv");
@@ -148,7 +149,7 @@ int run_demo(const DemoArgs& args) {
     const fs::path state_file = dir / (name + ".json");
     write_text_atomically(state_file, clear_day_state(time));
     relit.apply(load_lighting_state(scene, state_file));
-    const ShadedImages images = relit.render(camera, args.width, args.height, true);
+    const ShadedImages images = render_relit_scene(relit, camera, args.width, args.height, true);
     write_image(dir / ("room-" + name + ".png"), images.luminance, {});
     write_sensor_csv(dir / ("work-plane-" + name + ".csv"), scene, relit.sensor_irradiance());
     std::cout << name << ": ";

@@ -9,8 +9,8 @@
 #include "cli/commands.h"
 #include "light/luminaire_frame.h"
 #include "scene/scene_loader.h"
+#include "sources/portal/portal_geometry.h"
 #include "trace/traced_scene.h"
-#include "transfer/portal_geometry.h"
 
 namespace relight {
 

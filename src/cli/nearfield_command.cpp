@@ -1,7 +1,7 @@
 // `relight nearfield SCENE.rlt [--state STATE.json] --epsilon E [--max-samples N]
 //   [--method adaptive|icp|truth] [--face-size K] [--scene-occlusion] [-o IMAGE] [view options]`
 // Lights a precomputed scene's receivers by its near-field emitters as the lighting state
-// places them (issue 5, the thesis papers/004; nearfield/nearfield_lighting.h), with the
+// places them (issue 5, Sun 2005; sources/nearfield/nearfield_lighting.h), with the
 // chosen sampling method, and compares with the truth (a sample at every receiver). Prints one
 // JSON line: method, epsilon, max_samples, receivers, samples, evaluations, placement_s,
 // sampling_s, reconstruction_s, truth_s, rmse (cd/m², vertex radiance ρE/π, RGB) and
@@ -16,11 +16,13 @@
 #include "cli/commands.h"
 #include "cli/view_args.h"
 #include "common/input_error.h"
+#include "material/lambert.h"
 #include "math/sh.h"
-#include "nearfield/nearfield_lighting.h"
 #include "render/camera.h"
 #include "render/vertex_shading.h"
-#include "runtime/transfer_file.h"
+#include "runtime/lighting_state.h"
+#include "sources/nearfield/nearfield_lighting.h"
+#include "store/transfer_file.h"
 
 namespace relight {
 
@@ -46,7 +48,7 @@ std::vector<Vec3> receiver_positions(const TransferFile& t) {
 std::vector<float> radiance_of(const TransferFile& t, const std::vector<float>& irradiance) {
   std::vector<float> l(3 * t.vertex_count);
   for (std::size_t i = 0; i < l.size(); ++i) {
-    l[i] = static_cast<float>(t.vertex_albedo[i] * irradiance[i] / kPi);
+    l[i] = static_cast<float>(lambertian_radiance(t.vertex_albedo[i], irradiance[i]));
   }
   return l;
 }

@@ -11,9 +11,9 @@
 #include "cli/commands.h"
 #include "cli/precompute_run.h"
 #include "common/input_error.h"
-#include "runtime/transfer_file.h"
 #include "scene/scene_loader.h"
-#include "transfer/precompute.h"
+#include "sources/precompute.h"
+#include "store/transfer_file.h"
 
 namespace relight {
 

@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "transfer/precompute.h"
+#include "sources/precompute.h"
 
 namespace relight {
 

@@ -7,9 +7,9 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.h"
-#include "cli/relit_scene.h"
 #include "common/input_error.h"
 #include "render/sensor_report.h"
+#include "runtime/relit_scene.h"
 
 namespace relight {
 
@@ -20,10 +20,10 @@ struct ProbeArgs {
 };
 
 int run_probe(const ProbeArgs& args) {
-  const RelitScene relit = relight_transfer_file(
-      args.rlt,
-      args.state.empty() ? std::nullopt : std::optional<std::filesystem::path>(args.state));
-  const Scene& scene = relit.transfer->scene;
+  const RelitScene relit(args.rlt, args.state.empty()
+                                       ? std::nullopt
+                                       : std::optional<std::filesystem::path>(args.state));
+  const Scene& scene = relit.scene();
   if (scene.sensor_count() == 0) fail_input(args.rlt, "the scene has no sensors");
   const std::vector<Rgb> e = relit.sensor_irradiance();
   print_sensor_statistics(std::cout, sensor_statistics(scene, e));

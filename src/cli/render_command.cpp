@@ -8,9 +8,10 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.h"
-#include "cli/relit_scene.h"
 #include "cli/view_args.h"
+#include "render/relit_scene_image.h"
 #include "render/vertex_shading.h"
+#include "runtime/relit_scene.h"
 
 namespace relight {
 
@@ -24,16 +25,15 @@ struct RenderArgs {
 int run_render(const RenderArgs& args) {
   const auto start = std::chrono::steady_clock::now();
   const DisplayOptions display = display_options(args.view);
-  RelitScene relit = relight_transfer_file(
-      args.rlt,
-      args.state.empty() ? std::nullopt : std::optional<std::filesystem::path>(args.state));
-  const TransferFile& t = *relit.transfer;
+  RelitScene relit(args.rlt, args.state.empty() ? std::nullopt
+                                                : std::optional<std::filesystem::path>(args.state));
+  const TransferFile& t = relit.transfer();
   const Camera camera = choose_camera(
       t.scene,
       args.view.camera.empty() ? std::nullopt : std::optional<std::string>(args.view.camera),
       t.bounds());
   const ShadedImages images =
-      relit.render(camera, args.view.width, args.view.height, args.direct == "pixel");
+      render_relit_scene(relit, camera, args.view.width, args.view.height, args.direct == "pixel");
   const bool lux = display.false_color && display.false_color->quantity == Quantity::kIlluminance;
   const DisplayReport report =
       write_image(args.view.output, lux ? images.illuminance : images.luminance, display);

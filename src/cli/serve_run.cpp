@@ -17,6 +17,7 @@ int serve_studio(const std::filesystem::path& rlt, const StudioOptions& options)
   StudioServer server(rlt, options);
   std::cout << "relight studio: " << server.url() << "  (open it in a browser; Ctrl-C stops)"
             << std::endl;
+  std::cout << "relight studio: client files from " << server.client_folder().string() << std::endl;
   server.run();
   std::cout << "relight studio: stopped" << std::endl;
   return 0;

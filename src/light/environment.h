@@ -93,7 +93,7 @@ Environment make_sky_environment(SkyModel sky);
 // local time, or the given angles. Throws std::invalid_argument for SunPlacement::kNone.
 Vec3 sun_direction(const SunSpec& sun);
 
-// The environment of a spec. A map spec needs the loaded image (render/environment_map_io.h
+// The environment of a spec. A map spec needs the loaded image (light/environment_map_io.h
 // reads spec.file); other kinds ignore `map`. A sky without a "sun" puts the (irrelevant) sun
 // at the zenith.
 Environment make_environment(const EnvironmentSpec& spec,

@@ -3,11 +3,7 @@
 namespace relight {
 
 PlacedLuminaire place_luminaire(const Luminaire& l) {
-  return {l.position,
-          l.aim,
-          l.c0,
-          cross(l.c0, l.aim),
-          l.color * l.dimmer,
+  return {l.position, photometric_frame(l.aim, l.c0), l.color * l.dimmer,
           load_distribution(l.distribution)};
 }
 

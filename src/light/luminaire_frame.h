@@ -1,8 +1,9 @@
-// A luminaire placed in the world: its loaded photometry, its photometric frame and
-// its colour and dimming, answering "how many candela (RGB) toward this world
-// direction". Frame convention (docs/scene-format.md): γ = 0 along aim, C0 along c0,
-// C90 = cross(c0, aim), so C angles run counter-clockwise seen from above for a
-// downlight, as in IES LM-63 type C.
+// The photometric frame, built here and nowhere else, and a luminaire placed in the world:
+// its loaded photometry, its frame and its colour and dimming, answering "how many candela
+// (RGB) toward this world direction". Frame convention (docs/scene-format.md): γ = 0 along
+// aim, C0 along c0, C90 = cross(c0, aim), so C angles run counter-clockwise seen from above
+// for a downlight, as in IES LM-63 type C — a left-handed frame (docs/design-notes.md, "The
+// photometric frame is left-handed"; pinned by tests/sources/luminaire/luminaire_sh_test.cpp).
 #pragma once
 
 #include <vector>
@@ -13,19 +14,29 @@
 
 namespace relight {
 
-struct PlacedLuminaire {
-  Vec3 position;
-  Vec3 aim, c0, c90;
-  Rgb rgb_scale;  // color (luminance-normalised) × dimmer
-  Distribution distribution;
+struct PhotometricFrame {
+  Vec3 aim{0, -1, 0}, c0{1, 0, 0}, c90{0, 0, -1};
 
   // Direction in the photometric frame: (sinγ cosC, sinγ sinC, cosγ).
   Vec3 to_photometric(Vec3 world_dir) const {
     return {dot(world_dir, c0), dot(world_dir, c90), dot(world_dir, aim)};
   }
+};
+
+// The frame of a luminaire aimed along `aim` with C0 along `c0` (unit, not parallel).
+constexpr PhotometricFrame photometric_frame(Vec3 aim, Vec3 c0) {
+  return {aim, c0, cross(c0, aim)};
+}
+
+struct PlacedLuminaire {
+  Vec3 position;
+  PhotometricFrame frame;
+  Rgb rgb_scale;  // color (luminance-normalised) × dimmer
+  Distribution distribution;
+
   // RGB intensity (candela per channel) toward a unit world direction.
   Rgb intensity_toward(Vec3 world_dir) const {
-    return rgb_scale * distribution.intensity(to_photometric(world_dir));
+    return rgb_scale * distribution.intensity(frame.to_photometric(world_dir));
   }
 };
 

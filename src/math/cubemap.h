@@ -16,7 +16,7 @@
 // dω = du dv / (1 + u² + v²)^{3/2}, whose integral over [0, u] × [0, v] is
 // A(u, v) = atan2(u v, sqrt(1 + u² + v²)); a texel [u0,u1]×[v0,v1] has
 // Ω = A(u1,v1) − A(u0,v1) − A(u1,v0) + A(u0,v0) (e.g. Driscoll, "Cubemap Texel Solid Angle",
-// 2012; used for per-texel SH projection in Sun 2005, papers/004 §3.3.4).
+// 2012; used for per-texel SH projection in Sun 2005 §3.3.4).
 #pragma once
 
 #include <cstddef>

@@ -1,6 +1,6 @@
 // 2D Haar wavelets on one N×N cubemap face (N a power of two), for the per-receiver
-// compression of the direct (portal) component: the interior-scene paper
-// (papers/000_86ec1bd7f4a8db38 §3.4, §4.1.2) encodes each vertex's cubemap either with pulse
+// compression of the direct (portal) component: Yue et al. 2009
+// (Yue et al. 2009 §3.4, §4.1.2) encodes each vertex's cubemap either with pulse
 // functions or with "a Haar wavelet decomposition for each cubemap face", after [NRH03] (Ng,
 // Ramamoorthi, Hanrahan 2003), whose run time is a sparse dot product in the wavelet domain.
 //

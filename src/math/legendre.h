@@ -2,7 +2,7 @@
 //
 // P_l(x) by Bonnet's recurrence (l+1) P_{l+1} = (2l+1) x P_l − l P_{l−1}: the basis of the
 // axisymmetric luminous intensity expansion I(γ) = Σ w_l P_l(cosγ) of Dobashi et al. 1995
-// (papers/002, Eq. 2) and of zonal harmonics (Y_l0 = sqrt((2l+1)/4π) P_l).
+// (Dobashi et al. 1995, Eq. 2) and of zonal harmonics (Y_l0 = sqrt((2l+1)/4π) P_l).
 //
 // The associated functions are the SH-normalised ones, without the Condon–Shortley phase:
 //   Pbar_l^m(x) = sqrt((2l+1)/(4π) · (l−m)!/(l+m)!) · P_l^m(x),  P_l^m(x) = (1−x²)^{m/2} d^m

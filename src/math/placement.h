@@ -1,6 +1,10 @@
-// Moving an object in a lighting state (docs/lighting-state.md: exterior objects, near-field
-// emitters): turned by rotate_deg about the vertical axis through its pivot, counter-clockwise
-// seen from above (the right-handed turn about +y), then moved by translate.
+// The one placement of a rigid object in a lighting state (docs/lighting-state.md: exterior
+// objects, near-field emitters, and the movable objects to come): turned by `rotate_deg` about
+// the vertical axis through the object's pivot (the centre of its bounding box as the scene
+// placed it), counter-clockwise seen from above (the right-handed turn about +y), then moved
+// by `translate` (m, from where the scene put it). Pinned by the lighting-state tests of
+// exterior objects and emitters (tests/runtime/lighting_state_portals_test.cpp,
+// tests/sources/nearfield/nearfield_lighting_test.cpp).
 #pragma once
 
 #include <cmath>
@@ -9,10 +13,22 @@
 
 namespace relight {
 
-inline Vec3 placed_point(Vec3 p, Vec3 pivot, double rotate_deg, Vec3 translate) {
-  const double a = radians(rotate_deg), c = std::cos(a), s = std::sin(a);
+struct Placement {
+  Vec3 translate{0, 0, 0};
+  double rotate_deg = 0;
+  bool operator==(const Placement&) const = default;
+};
+
+inline Vec3 placed_point(Vec3 p, Vec3 pivot, const Placement& placement) {
+  const double a = radians(placement.rotate_deg), c = std::cos(a), s = std::sin(a);
   const Vec3 d = p - pivot;
-  return pivot + Vec3{c * d.x + s * d.z, d.y, -s * d.x + c * d.z} + translate;
+  return pivot + Vec3{c * d.x + s * d.z, d.y, -s * d.x + c * d.z} + placement.translate;
+}
+
+// The same turn applied to a direction (a normal, an aim).
+inline Vec3 placed_direction(Vec3 v, const Placement& placement) {
+  const double a = radians(placement.rotate_deg), c = std::cos(a), s = std::sin(a);
+  return {c * v.x + s * v.z, v.y, -s * v.x + c * v.z};
 }
 
 }  // namespace relight

@@ -19,7 +19,9 @@ std::uint32_t Pcg32::next_u32() {
   return (xorshifted >> rot) | (xorshifted << ((32u - rot) & 31u));
 }
 
-double Pcg32::next_double() { return next_u32() * (1.0 / 4294967296.0); }
+double Pcg32::next_double() {
+  return next_u32() * (1.0 / 4294967296.0);
+}
 
 Vec3 sample_cosine_hemisphere(double u1, double u2) {
   const double r = std::sqrt(u1);

@@ -5,7 +5,7 @@
 //    index(l, m) = l(l+1) + m, −l <= m <= l.
 //  * Direction: a unit Vec3 in whatever frame the caller uses; z is the polar axis
 //    (θ from +z) and φ = atan2(y, x) (from +x toward +y), as in Dobashi et al. 1995
-//    (papers/002, Eq. 5-6). Coefficients live in the same frame as the directions.
+//    (Dobashi et al. 1995, Eq. 5-6). Coefficients live in the same frame as the directions.
 //  * Real SH WITHOUT the Condon–Shortley phase, orthonormal over the unit sphere:
 //      Y_l0  = Pbar_l^0(cosθ)
 //      Y_lm  = sqrt(2) Pbar_l^m(cosθ) cos(mφ)     m > 0

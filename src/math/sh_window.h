@@ -3,7 +3,7 @@
 // A window h_l multiplies every coefficient of band l (for zonal/Legendre expansions: w_l).
 // Kinds, with N = order − 1 the highest degree kept:
 //  * kNone      h_l = 1.
-//  * kSigma     Lanczos' sigma factor, Dobashi et al. 1995 (papers/002) Eq. 12-13:
+//  * kSigma     Lanczos' sigma factor, Dobashi et al. 1995 Eq. 12-13:
 //               h_0 = 1, h_l = sin(πl/(N+1)) / (πl/(N+1)). It averages the truncated series
 //               over one period of the first dropped degree N+1 (Hamming, Digital Filters 1977).
 //  * kHanning   h_l = (1 + cos(πl/(N+1))) / 2: the Hann window of width N+1 as used for SH

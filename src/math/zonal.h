@@ -1,7 +1,7 @@
 // Zonal harmonics and Legendre expansions of axisymmetric intensity distributions.
 //
 // Dobashi, Kaneda, Nakatani, Yamashita, Nishita, "A Quick Rendering Method Using Basis
-// Functions for Interactive Lighting Design", CGF 1995 (papers/002):
+// Functions for Interactive Lighting Design", CGF 1995 (Dobashi et al. 1995):
 //  * Eq. 2-3: I(γ) = Σ_l w_l P_l(cosγ), w_l = (2l+1)/2 ∫_0^π I(γ) P_l(cosγ) sinγ dγ.
 //  * Eq. 19: the integral discretised on M+1 equally spaced samples γ_i = iπ/M,
 //    w_l = (2l+1)/2 Σ_i t_i I(γ_i) f_l(γ_i) Δγ with f_l(γ) = P_l(cosγ) sinγ (Eq. 20).

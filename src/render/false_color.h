@@ -15,8 +15,8 @@
 
 #include <array>
 
+#include "image/image.h"
 #include "render/false_color_scale.h"
-#include "render/image.h"
 
 namespace relight {
 

@@ -16,8 +16,8 @@
 
 #include <string_view>
 
+#include "image/image.h"
 #include "render/false_color_scale.h"
-#include "render/image.h"
 
 namespace relight {
 

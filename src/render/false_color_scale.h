@@ -24,7 +24,7 @@
 #include <string_view>
 #include <vector>
 
-#include "render/image.h"
+#include "image/image.h"
 
 namespace relight {
 

@@ -7,8 +7,8 @@
 #include <string>
 
 #include "common/input_error.h"
-#include "render/image_exr.h"
-#include "render/image_png.h"
+#include "image/image_exr.h"
+#include "image/image_png.h"
 #include "render/tone_map.h"
 
 namespace relight {

@@ -8,8 +8,8 @@
 #include <filesystem>
 #include <optional>
 
+#include "image/image.h"
 #include "render/false_color.h"
-#include "render/image.h"
 
 namespace relight {
 

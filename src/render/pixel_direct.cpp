@@ -1,6 +1,6 @@
 #include "render/pixel_direct.h"
 
-#include "transfer/luminaire_direct.h"
+#include "sources/luminaire/luminaire_direct.h"
 
 namespace relight {
 
@@ -11,10 +11,13 @@ std::vector<PixelLight> pixel_lights(const Scene& scene, const Relighter& religh
   for (std::size_t j = 0; j < scene.luminaires.size(); ++j) {
     const LuminaireState& s = state.luminaires[j];
     const Distribution& d = relighter.distribution(j);
-    PixelLight l{scene.luminaires[j].position,      s.aim, s.c0, cross(s.c0, s.aim),
-                 s.on ? s.color * s.dimmer : Rgb{}, &d,    {}};
-    l.opening = opening_sample_offsets(luminaire_opening(scene.luminaires[j], d.opening()),
-                                       {l.aim, l.c0, l.c90}, opening_samples);
+    PixelLight l{scene.luminaires[j].position,
+                 photometric_frame(s.aim, s.c0),
+                 s.on ? s.color * s.dimmer : Rgb{},
+                 &d,
+                 {}};
+    l.opening = opening_sample_offsets(luminaire_opening(scene.luminaires[j], d.opening()), l.frame,
+                                       opening_samples);
     lights.push_back(std::move(l));
   }
   return lights;
@@ -29,8 +32,7 @@ Rgb exact_direct_irradiance(const RayTracer& occluders, const std::vector<PixelL
     const DirectFactor f = direct_factor(occluders, p, n, l.position, l.opening, rays);
     if (f.factor <= 0) continue;
     const Vec3 w = f.direction;
-    const Vec3 local{dot(w, l.c0), dot(w, l.c90), dot(w, l.aim)};
-    e += l.rgb * (l.distribution->intensity(local) * f.factor);
+    e += l.rgb * (l.distribution->intensity(l.frame.to_photometric(w)) * f.factor);
   }
   return e;
 }

@@ -1,15 +1,16 @@
 // Exact direct light at the surface point seen by each pixel: the same direct geometry
-// the precompute stores per receiver (transfer/luminaire_direct.h: visibility of the
+// the precompute stores per receiver (sources/luminaire/luminaire_direct.h: visibility of the
 // luminous opening, cos θ / d²) evaluated at the hit instead of at vertices, times the
 // current distribution, aim, colour and dimming. With the per-vertex interreflected light
 // interpolated as usual, images show sharp shadows and beam edges that per-vertex
-// (Gouraud) shading blurs over one mesh edge — past the lighting-design paper, whose
+// (Gouraud) shading blurs over one mesh edge — past Dobashi et al. 1995, whose
 // images are per-vertex throughout.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
+#include "light/luminaire_frame.h"
 #include "runtime/relighter.h"
 #include "scene/scene.h"
 #include "trace/ray_tracer.h"
@@ -17,7 +18,8 @@
 namespace relight {
 
 struct PixelLight {
-  Vec3 position, aim, c0, c90;
+  Vec3 position;
+  PhotometricFrame frame;
   Rgb rgb;  // colour × dimmer (0 when off)
   const Distribution* distribution = nullptr;
   std::vector<Vec3> opening;  // sample offsets on the luminous opening
@@ -31,7 +33,7 @@ std::vector<PixelLight> pixel_lights(const Scene& scene, const Relighter& religh
 Rgb exact_direct_irradiance(const RayTracer& occluders, const std::vector<PixelLight>& lights,
                             Vec3 p, Vec3 n);
 
-// A portal's sharp sun (runtime/portal_lighting.h) for per-pixel tracing: the direct sun
+// A portal's sharp sun (sources/portal/portal_lighting.h) for per-pixel tracing: the direct sun
 // lands exactly where its rays pass the window, instead of within a shell cubemap cell
 // (2.8° at 32² a face) interpolated between vertices.
 struct PixelSun {

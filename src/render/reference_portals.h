@@ -1,6 +1,6 @@
 // Daylight in the reference path tracer: the exterior seen through portals (windows).
 //
-// The portal paper (§3) lets the environment reach an interior only through its window
+// Yue et al. 2009 (§3) lets the environment reach an interior only through its window
 // openings. The reference follows that literally, with no shared code from the transfer
 // side: a ray that crosses a triangle of portal p and then meets no opaque surface
 // receives p's environment radiance in its direction; a ray that escapes without crossing
@@ -54,7 +54,7 @@ struct ReferencePortals {
 };
 
 // The portals of `scene` over the prepared mesh, each with its environment
-// (`environments[i]` for scene.portals[i]; render/environment_map_io.h's load_environment
+// (`environments[i]` for scene.portals[i]; light/environment_map_io.h's load_environment
 // reads map files, tests pass environments directly). Portal triangles of a material that
 // no portal names stay openings to a black exterior. Throws std::invalid_argument when
 // the counts differ.

@@ -10,6 +10,7 @@
 #include <tbb/parallel_for.h>
 
 #include "common/progress.h"
+#include "material/lambert.h"
 #include "math/frame.h"
 #include "math/sampling.h"
 
@@ -40,7 +41,8 @@ Vec3 opening_point(const ReferenceOpening& o, const PlacedLuminaire& l, Pcg32& r
     t = rng.next_double() - 0.5;
   } while (o.round && 4 * (s * s + t * t) > 1);
   const double h = rng.next_double() - 0.5;
-  return l.c0 * (s * o.length) + l.c90 * (t * o.width) - l.aim * (h * o.height);
+  const PhotometricFrame& f = l.frame;
+  return f.c0 * (s * o.length) + f.c90 * (t * o.width) - f.aim * (h * o.height);
 }
 
 Rgb direct_illuminance(PathContext& ctx, Vec3 p, Vec3 n, Sources sources = Sources::kAll) {
@@ -118,7 +120,7 @@ Rgb incident_luminance(PathContext& ctx, Vec3 origin, Vec3 dir) {
     // exterior through portals), then continue; a continuation that escapes adds nothing.
     const Rgb e = direct_illuminance(ctx, s.position, s.normal) +
                   daylight_illuminance(ctx, s.position, s.normal);
-    result += throughput * s.albedo * e * (1 / kPi);
+    result += throughput * lambertian_radiance(s.albedo, e);
     throughput = throughput * s.albedo;
     const double survive = std::min(1.0, max_component(s.albedo));
     if (survive <= 0 || ctx.rng.next_double() >= survive) break;
@@ -233,7 +235,7 @@ ReferenceImages reference_render(const PinholeCamera& camera, const ReferenceSce
                         daylight_illuminance(ctx, hit.position, hit.normal) +
                         indirect_sample(ctx, hit.position, hit.normal);
           e_sum += e;
-          l_sum += hit.albedo * e * (1 / kPi);
+          l_sum += lambertian_radiance(hit.albedo, e);
           ++covered;
         }
         // Pixels partly covering the background average over all samples (black there);

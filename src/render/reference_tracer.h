@@ -22,10 +22,10 @@
 #include <cstdint>
 #include <vector>
 
+#include "image/image.h"
 #include "light/luminaire_frame.h"
 #include "math/rgb.h"
 #include "render/camera.h"
-#include "render/image.h"
 #include "render/reference_portals.h"
 #include "scene/mesh_preparation.h"
 #include "scene/scene.h"

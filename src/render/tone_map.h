@@ -31,7 +31,7 @@
 #include <cstdint>
 #include <optional>
 
-#include "render/image.h"
+#include "image/image.h"
 
 namespace relight {
 

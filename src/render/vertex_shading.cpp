@@ -1,4 +1,5 @@
 #include "render/vertex_shading.h"
+#include "material/lambert.h"
 
 #include <limits>
 
@@ -50,7 +51,7 @@ ShadedImages shade_vertices(const PinholeCamera& camera, const VertexShadingInpu
           }
           // Per-vertex albedo is constant within a triangle (vertices split at material
           // boundaries), so ρ/π · E interpolates like per-vertex radiance.
-          const Rgb l = albedo * e * (1 / kPi);
+          const Rgb l = lambertian_radiance(albedo, e);
           e_sum += e;
           l_sum += l;
           ++covered;

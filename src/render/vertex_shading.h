@@ -1,4 +1,4 @@
-// Images from per-vertex results (the lighting-design paper's display step, Eq. 18 then
+// Images from per-vertex results (Dobashi et al. 1995's display step, Eq. 18 then
 // Gouraud shading): a primary ray per sub-pixel finds the visible triangle, and the
 // vertex values are interpolated with the hit's barycentrics — the same interpolation the
 // gather operator assumes, so an image shows exactly what the transfer computed.
@@ -9,8 +9,8 @@
 #include <span>
 #include <vector>
 
+#include "image/image.h"
 #include "render/camera.h"
-#include "render/image.h"
 #include "scene/triangle_soup.h"
 #include "trace/ray_tracer.h"
 

@@ -12,11 +12,10 @@ namespace relight {
 LightingState default_lighting_state(const Scene& scene) {
   LightingState s;
   for (const Luminaire& l : scene.luminaires) {
-    s.luminaires.push_back({true, l.dimmer, l.color, l.aim, l.c0, l.distribution});
+    s.luminaires.push_back(luminaire_state(l));
   }
   for (const Portal& p : scene.portals) {
-    s.portals.push_back({p.environment, p.tint, p.frost_deg,
-                         std::vector<ExteriorPlacement>(scene.exterior.size())});
+    s.portals.push_back(portal_state(p, scene.exterior.size()));
   }
   for (const Emitter& e : scene.emitters) {
     EmitterState state;
@@ -90,10 +89,15 @@ std::size_t exterior_index(const Scene& scene, const JsonNode& where, const std:
   where.fail("no exterior object named \"" + name + "\" in the precomputed scene");
 }
 
-void apply_placement(ExteriorPlacement& p, const JsonNode& node) {
-  node.expect_keys({"translate", "rotate_deg", "visible"});
+// "translate" and "rotate_deg" of an object's entry (math/placement.h).
+void apply_placement(Placement& p, const JsonNode& node) {
   if (const auto t = node.find("translate")) p.translate = t->vec3();
   if (const auto r = node.find("rotate_deg")) p.rotate_deg = r->number();
+}
+
+void apply_exterior_placement(ExteriorPlacement& p, const JsonNode& node) {
+  node.expect_keys({"translate", "rotate_deg", "visible"});
+  apply_placement(p, node);
   if (const auto v = node.find("visible")) p.visible = v->boolean();
 }
 
@@ -105,7 +109,7 @@ void apply_exterior(const std::vector<PortalState*>& portals, const Scene& scene
   for (const auto& [name, unused] : node.value().items()) {
     const JsonNode entry = node.at(name);
     const std::size_t i = exterior_index(scene, entry, name);
-    for (PortalState* p : portals) apply_placement(p->exterior[i], entry);
+    for (PortalState* p : portals) apply_exterior_placement(p->exterior[i], entry);
   }
 }
 
@@ -125,8 +129,7 @@ std::size_t emitter_index(const Scene& scene, const JsonNode& where, const std::
 
 void apply_emitter(EmitterState& e, const JsonNode& node) {
   node.expect_keys({"translate", "rotate_deg", "luminance", "color", "on"});
-  if (const auto t = node.find("translate")) e.translate = t->vec3();
-  if (const auto r = node.find("rotate_deg")) e.rotate_deg = r->number();
+  apply_placement(e, node);
   if (const auto l = node.find("luminance")) e.luminance = l->number_at_least(0);
   if (const auto c = node.find("color")) {
     e.color = c->chromaticity();

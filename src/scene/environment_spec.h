@@ -1,7 +1,7 @@
 // What a scene or a run-time lighting state says about the exterior seen through a portal:
 // the ENV objects of issue 4, as plain data parsed from JSON. light/environment.h turns a
 // spec into an evaluable Environment (it computes the sun position and reads no files);
-// render/environment_map_io.h reads the map files.
+// light/environment_map_io.h reads the map files.
 //
 //   { "type": "uniform", "luminance": cd/m², "color": [r, g, b] }
 //   { "type": "map", "file": "x.exr" | "x.hdr", "rotate_deg": deg, "scale": factor }

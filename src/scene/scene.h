@@ -50,7 +50,7 @@ struct SensorSet {
   int nu = 0, nv = 0;
 };
 
-// A window (portal paper §3): the triangles of its portal materials, through which light
+// A window (Yue et al. 2009 §3): the triangles of its portal materials, through which light
 // of the exterior environment enters. Precompute and run time use it from the daylight
 // issue on; the loader validates it now.
 struct Portal {
@@ -59,7 +59,7 @@ struct Portal {
   EnvironmentSpec environment;
   Rgb tint{1, 1, 1};     // window glass colour (transmittance per channel)
   double frost_deg = 0;  // frosted glass: angular width of the blur of the shell
-  // The shell-size check of the interior-scene paper §6: the nearest exterior object is
+  // The shell-size check of Yue et al. 2009 §6: the nearest exterior object is
   // `exterior_distance` m away (0: only sky, no check) and the directional error l/(2r) may
   // be at most `shell_tolerance_deg`.
   double exterior_distance = 0;
@@ -76,7 +76,7 @@ struct ExteriorGeometry {
   Vec3 pivot;  // centre of its bounding box
 };
 
-// A near-field area emitter (issue 5, the thesis papers/004): a diffuse emitting surface of
+// A near-field area emitter (issue 5, Sun 2005): a diffuse emitting surface of
 // constant luminance that moves close to the receivers, lit by adaptive sampling of the
 // incident radiance instead of by precomputed luminaire transfer. Not part of the room: it
 // neither occludes nor reflects in the precompute. The lighting state moves (translate, turn
@@ -105,15 +105,15 @@ struct PrecomputeSettings {
   int sensor_gather_rays = 4096;
   double tolerance = 1e-4;  // relative change that ends the bounce iteration
   int max_bounces = 100;
-  std::string direct = "exact";  // "exact" | "sh" (the lighting-design paper's mode)
-  // Portals (issue 4, the interior-scene paper §4.1): the direct component is a cubemap of
+  std::string direct = "exact";  // "exact" | "sh" (Dobashi et al. 1995's mode)
+  // Portals (issue 4, Yue et al. 2009 §4.1): the direct component is a cubemap of
   // portal_face_size² cells a face per receiver, each cell the portal covers integrated over
   // portal_samples_per_cell directions (16× as many on the window's outline); the indirect
   // component is SH, l < portal_sh_order, RGB.
   int portal_face_size = 32;
   int portal_sh_order = 6;
   int portal_samples_per_cell = 4;
-  // Near-field emitters (issue 5, the thesis §3.2.1): per-receiver SH transfer vectors with
+  // Near-field emitters (issue 5, Sun 2005 §3.2.1): per-receiver SH transfer vectors with
   // self-shadowing, l < nearfield_sh_order, from nearfield_directions stratified directions
   // (a square number), made only when the scene has emitters; with nearfield_interreflection
   // also their interreflected part through the gather operator (RGB).

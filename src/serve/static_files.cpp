@@ -45,8 +45,28 @@ HttpResponse text(int status, std::string body) {
 
 }  // namespace
 
+namespace {
+
+// Where `cmake --install` puts the client: PREFIX/share/relight/studio beside PREFIX/bin/relight.
+fs::path installed_client_folder() {
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (ec) return {};
+  return exe.parent_path().parent_path() / "share" / "relight" / "studio";
+}
+
+}  // namespace
+
 fs::path studio_client_folder(const fs::path& requested) {
-  fs::path folder = requested.empty() ? fs::path(RELIGHT_STUDIO_DIR) : requested;
+  fs::path folder = requested;
+  if (folder.empty()) {
+    // An installed relight serves its installed client; a build tree serves the checkout's.
+    const fs::path installed = installed_client_folder();
+    std::error_code ec;
+    folder = !installed.empty() && fs::is_regular_file(installed / "index.html", ec)
+                 ? installed
+                 : fs::path(RELIGHT_STUDIO_DIR);
+  }
   const std::string where = requested.empty() ? folder.string() : "--client " + folder.string();
   if (!fs::is_regular_file(folder / "index.html")) {
     fail_input(where, "not a studio client folder (no index.html)");
@@ -54,7 +74,7 @@ fs::path studio_client_folder(const fs::path& requested) {
   if (!fs::is_regular_file(folder / "node_modules/three/build/three.module.js")) {
     fail_input(where,
                "three.js is not installed in node_modules/: run scripts/bootstrap.sh (npm ci "
-               "--prefix studio)");
+               "--prefix studio), or install relight (make install PREFIX=...)");
   }
   return folder;
 }

@@ -11,8 +11,10 @@
 
 namespace relight {
 
-// The client folder: `requested` when given, else the one compiled in (the source tree's
-// studio/). Throws InputError when it lacks index.html or three.js (with the fix).
+// The client folder: `requested` when given; else the installed one (PREFIX/share/relight/studio
+// beside PREFIX/bin/relight, put there by `cmake --install`) when it exists; else the one
+// compiled in (the source tree's studio/). Throws InputError when it lacks index.html or
+// three.js (with the fix).
 std::filesystem::path studio_client_folder(const std::filesystem::path& requested);
 
 HttpResponse serve_static_file(const std::filesystem::path& client_folder,

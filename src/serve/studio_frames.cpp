@@ -3,6 +3,8 @@
 #include <bit>
 #include <cstring>
 
+#include "engine/receivers.h"
+#include "material/lambert.h"
 #include "math/vec3.h"
 #include "serve/half_float.h"
 
@@ -89,12 +91,13 @@ void compute_frame_values(const TransferFile& t, std::span<const int> vertex_por
       continue;
     }
     for (int c = 0; c < 3; ++c) {
-      l[c] = static_cast<float>(t.vertex_albedo[3 * v + c] * e[c] / kPi);
+      l[c] = static_cast<float>(lambertian_radiance(t.vertex_albedo[3 * v + c], e[c]));
     }
     out.illuminance[v] = static_cast<float>(photometric(e));
   }
   for (std::size_t s = 0; s < t.sensor_count; ++s) {
-    out.sensors[s] = static_cast<float>(photometric(&irradiance[3 * (t.vertex_count + s)]));
+    out.sensors[s] =
+        static_cast<float>(photometric(&irradiance[3 * sensor_receiver(t.vertex_count, s)]));
   }
 }
 

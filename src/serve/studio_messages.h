@@ -13,8 +13,8 @@
 #include <nlohmann/json.hpp>
 
 #include "math/vec3.h"
-#include "runtime/distribution_profile.h"
-#include "runtime/transfer_file.h"
+#include "sources/luminaire/distribution_profile.h"
+#include "store/transfer_file.h"
 
 namespace relight {
 

@@ -9,9 +9,9 @@
 #include <stdexcept>
 #include <thread>
 
-#include "cli/relit_scene.h"
 #include "common/input_error.h"
 #include "light/distribution.h"
+#include "runtime/relit_scene.h"
 #include "serve/static_files.h"
 #include "serve/studio_frames.h"
 #include "serve/studio_messages.h"
@@ -64,10 +64,10 @@ struct StudioServer::Impl {
   fs::path rlt;
   StudioOptions options;
   fs::path client_folder;
-  RelitScene relit;
+  std::unique_ptr<RelitScene> relit;
   std::vector<int> vertex_portal;
   std::string geometry;
-  std::unique_ptr<RayTracer> picker;
+  const RayTracer* picker = nullptr;  // relit's tracer of every triangle
   std::unique_ptr<WebSocketServer> transport;
 
   std::mutex mutex;  // guards everything below
@@ -81,8 +81,8 @@ struct StudioServer::Impl {
 
   std::thread worker;
 
-  const TransferFile& transfer() const { return *relit.transfer; }
-  const Scene& scene() const { return relit.transfer->scene; }
+  const TransferFile& transfer() const { return relit->transfer(); }
+  const Scene& scene() const { return relit->scene(); }
 
   // Replies may quote what a client sent (a parse error's "last read"), cut inside a UTF-8
   // sequence: such bytes are replaced (U+FFFD), never thrown on.
@@ -96,14 +96,14 @@ struct StudioServer::Impl {
 
   // Relights with `state` (the worker's relighter) and makes the frame.
   std::shared_ptr<const FrameValues> relight_values(const LightingState& state) {
-    relit.apply(state);
+    relit->apply(state);
     std::vector<Rgb> glass;
     for (std::size_t p = 0; p < scene().portals.size(); ++p) {
       glass.push_back(
-          window_view_radiance(relit.relighter->shell(p), transfer().view.portals[p].outward));
+          window_view_radiance(relit->relighter().shell(p), transfer().view.portals[p].outward));
     }
     auto values = std::make_shared<FrameValues>();
-    compute_frame_values(transfer(), vertex_portal, relit.irradiance, glass, *values);
+    compute_frame_values(transfer(), vertex_portal, relit->irradiance(), glass, *values);
     return values;
   }
 
@@ -126,7 +126,7 @@ struct StudioServer::Impl {
       } catch (const std::exception& e) {  // e.g. a map file that cannot be read
         send_json(p.client, error_message(p.seq, e.what()));
         try {
-          relit.apply(last_good);
+          relit->apply(last_good);
         } catch (const std::exception&) {  // it lit before: cannot fail again
         }
       }
@@ -142,7 +142,7 @@ struct StudioServer::Impl {
     const std::uint32_t number = frame_number + 1;
     const auto frame =
         std::make_shared<const std::string>(encode_frame(number, p.seq, ms.count(), *values));
-    incremental_updates = relit.relighter->incremental_curve_updates();
+    incremental_updates = relit->relighter().incremental_curve_updates();
     std::vector<std::string> profiles;
     for (std::size_t j = 0; j < scene().luminaires.size(); ++j) {
       const std::string& name = scene().luminaires[j].name;
@@ -300,12 +300,11 @@ StudioServer::StudioServer(const fs::path& rlt, const StudioOptions& options)
   s.rlt = rlt;
   s.options = options;
   s.client_folder = studio_client_folder(options.client);
-  s.relit = relight_transfer_file(rlt, std::nullopt);
+  s.relit = std::make_unique<RelitScene>(rlt, std::nullopt);
   const TransferFile& t = s.transfer();
   s.vertex_portal = vertex_portals(t);
   s.geometry = encode_geometry(t);
-  s.picker =
-      std::make_unique<RayTracer>(t.positions, t.triangles, sequential_ids(t.triangles.size()));
+  s.picker = &s.relit->mesh_tracer();  // built here: picks run on the network thread
   const LightingState initial = default_lighting_state(t.scene);
   const auto start = std::chrono::steady_clock::now();
   std::shared_ptr<const FrameValues> values = s.relight_values(initial);
@@ -346,6 +345,10 @@ StudioServer::~StudioServer() {
 
 std::uint16_t StudioServer::port() const {
   return impl_->transport->port();
+}
+
+const std::filesystem::path& StudioServer::client_folder() const {
+  return impl_->client_folder;
 }
 
 std::string StudioServer::url() const {

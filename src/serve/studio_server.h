@@ -31,8 +31,10 @@ class StudioServer {
 
   std::uint16_t port() const;
   std::string url() const;  // http://HOST:PORT/
-  void run();               // serves until stop() or a signal
-  void stop();              // from any thread
+  // The folder the client's files are served from (serve/static_files.h).
+  const std::filesystem::path& client_folder() const;
+  void run();   // serves until stop() or a signal
+  void stop();  // from any thread
 
  private:
   struct Impl;

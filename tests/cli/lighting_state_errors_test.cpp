@@ -127,7 +127,8 @@ TEST_F(LightingStateFiles, UnknownKey) {
   EXPECT_EQ(top.exit_code, 2);
   EXPECT_EQ(top.err.rfind("error: " + state_path("unknown-top.json").string() + ":", 0), 0u)
       << top.err;
-  EXPECT_NE(top.err.find("lights: unknown key \"lights\" (expected one of: luminaires, portals, exterior, emitters)\n"),
+  EXPECT_NE(top.err.find("lights: unknown key \"lights\" (expected one of: luminaires, portals, "
+                         "exterior, emitters)\n"),
             std::string::npos)
       << top.err;
   EXPECT_EQ(top.err.find('\n'), top.err.size() - 1) << top.err;
@@ -142,8 +143,9 @@ TEST_F(LightingStateFiles, UnknownKey) {
 // reported as "FILE://lights" instead of "FILE:/lights" (scene files alike). Enable once
 // fixed.
 TEST_F(LightingStateFiles, UnknownTopLevelKeyHasTheRootPointer) {
-  expect_state_error("unknown-top-key.json", R"({ "lights": {} })", ":/lights",
-                     "unknown key \"lights\" (expected one of: luminaires, portals, exterior, emitters)");
+  expect_state_error(
+      "unknown-top-key.json", R"({ "lights": {} })", ":/lights",
+      "unknown key \"lights\" (expected one of: luminaires, portals, exterior, emitters)");
 }
 
 TEST_F(LightingStateFiles, MovingALuminaireIsRefused) {

@@ -6,8 +6,8 @@
 
 #include <gtest/gtest.h>
 
-#include "render/image.h"
-#include "render/image_exr.h"
+#include "image/image.h"
+#include "image/image_exr.h"
 #include "run_command.h"
 #include "support/daylight_room.h"
 

@@ -15,10 +15,10 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "engine/transfer_blocks.h"
 #include "math/sh.h"
 #include "run_command.h"
 #include "store/rlt_file.h"
-#include "transfer/transfer_blocks.h"
 
 namespace relight {
 namespace {

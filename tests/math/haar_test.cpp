@@ -1,5 +1,5 @@
 // The 2D non-standard Haar transform (math/haar.h) used by the per-face wavelet encoding of
-// the portal paper (papers/000 §4.1.2): exact inverse, orthonormality (Parseval, which the
+// Yue et al. 2009 (Yue et al. 2009 §4.1.2): exact inverse, orthonormality (Parseval, which the
 // run-time sparse dot product relies on), the documented basis supports and coefficient
 // normalisation, and the RGB / multi-face variants.
 #include "math/haar.h"

@@ -15,17 +15,17 @@
 #include <gtest/gtest.h>
 
 #include "light/environment.h"
+#include "light/environment_map_io.h"
 #include "light/luminaire_frame.h"
 #include "math/cubemap.h"
-#include "render/environment_map_io.h"
 #include "render/reference_tracer.h"
 #include "runtime/lighting_state.h"
 #include "runtime/relighter.h"
-#include "runtime/transfer_file.h"
 #include "scene/scene_loader.h"
+#include "sources/precompute.h"
+#include "store/transfer_file.h"
 #include "support/daylight_room.h"
 #include "trace/traced_scene.h"
-#include "transfer/precompute.h"
 
 namespace relight {
 namespace {
@@ -50,7 +50,7 @@ class Daylight {
     options.progress = false;
     precomputed_ = precompute_transfer(scene_, options);
     relighter_ = std::make_unique<Relighter>(in_memory_view(precomputed_), scene_,
-                                             RelighterSettings{ShWindow::kSigma, load_environment});
+                                             RelighterSettings{ShWindow::kSigma});
     std::printf("precompute: %zu receivers (%zu sensors), %.2f s\n", precomputed_.receivers.size(),
                 precomputed_.receivers.sensor_count, seconds_since(start));
   }

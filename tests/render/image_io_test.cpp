@@ -15,10 +15,10 @@
 #include <vector>
 
 #include "common/input_error.h"
+#include "image/image_exr.h"
+#include "image/image_png.h"
 #include "render/false_color_legend.h"
-#include "render/image_exr.h"
 #include "render/image_io.h"
-#include "render/image_png.h"
 
 namespace relight {
 namespace {

@@ -11,10 +11,10 @@
 #include "render/reference_tracer.h"
 #include "render/vertex_shading.h"
 #include "runtime/relighter.h"
-#include "runtime/transfer_file.h"
 #include "scene/scene_loader.h"
+#include "sources/precompute.h"
+#include "store/transfer_file.h"
 #include "trace/traced_scene.h"
-#include "transfer/precompute.h"
 
 namespace relight {
 namespace {
@@ -146,7 +146,7 @@ TEST(RelightAccuracy, AimedCosinePowerAndCurveExactDirectWithinOnePercent) {
 }
 
 TEST(RelightAccuracy, ShDirectModeErrorFallsWithOrderAndWindow) {
-  // The lighting-design paper's own method: direct light from the SH series. Errors are
+  // Dobashi et al. 1995's own method: direct light from the SH series. Errors are
   // reported (mean |ΔE| / peak E over the sensor line) and must fall with the order.
   const json aim = {kAim30.x, kAim30.y, kAim30.z};
   for (const auto& [name, distribution, intensity] :
@@ -322,8 +322,8 @@ TEST(RelightAccuracy, FurnishedRoomImageMatchesReference) {
   }
   const RayTracer tracer(r.precomputed.mesh.positions, opaque, ids);
   const ShadedImages shaded = shade_vertices(
-      camera, {tracer, r.precomputed.mesh.positions, r.precomputed.mesh.triangles, albedo, e, {}, {}},
-      4);
+      camera,
+      {tracer, r.precomputed.mesh.positions, r.precomputed.mesh.triangles, albedo, e, {}, {}}, 4);
 
   const std::vector<PlacedLuminaire> luminaires = place_luminaires(r.scene);
   const PreparedMesh mesh = prepare_mesh(r.scene.geometry, PreparationSettings{});
@@ -387,11 +387,16 @@ TEST(RelightAccuracy, FurnishedRoomImageMatchesReference) {
   std::vector<float> indirect(3 * relighter.receivers());
   relighter.relight(indirect, false);
   const std::vector<PixelLight> lights = pixel_lights(r.scene, relighter);
-  const ShadedImages pixel = shade_vertices(
-      camera,
-      {tracer, r.precomputed.mesh.positions, r.precomputed.mesh.triangles, albedo, indirect,
-       [&](Vec3 q, Vec3 n) { return exact_direct_irradiance(tracer, lights, q, n); }, {}},
-      4);
+  const ShadedImages pixel =
+      shade_vertices(camera,
+                     {tracer,
+                      r.precomputed.mesh.positions,
+                      r.precomputed.mesh.triangles,
+                      albedo,
+                      indirect,
+                      [&](Vec3 q, Vec3 n) { return exact_direct_irradiance(tracer, lights, q, n); },
+                      {}},
+                     4);
   const Stats exact = compare_images(pixel.luminance);
   report("pixel", exact);
   EXPECT_LE(exact.mean, 0.02);

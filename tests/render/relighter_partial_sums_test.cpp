@@ -3,13 +3,13 @@
 // state gives, in both direct modes.
 #include <gtest/gtest.h>
 
-#include "render/environment_map_io.h"
+#include "light/environment_map_io.h"
 #include "runtime/lighting_state.h"
 #include "runtime/relighter.h"
-#include "runtime/transfer_file.h"
 #include "scene/scene_loader.h"
+#include "sources/precompute.h"
+#include "store/transfer_file.h"
 #include "support/daylight_room.h"
-#include "transfer/precompute.h"
 
 namespace relight {
 namespace {
@@ -30,7 +30,7 @@ TEST(RelighterPartialSums, AnyOrderOfChangesGivesTheFreshResult) {
   PrecomputeOptions options;
   options.progress = false;
   const Precomputed p = precompute_transfer(scene, options);
-  const RelighterSettings settings{ShWindow::kSigma, load_environment};
+  const RelighterSettings settings{ShWindow::kSigma};
 
   const auto state_of = [&](const char* text) {
     LightingState s = default_lighting_state(scene);

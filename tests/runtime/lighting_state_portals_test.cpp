@@ -3,8 +3,8 @@
 
 #include "common/input_error.h"
 #include "runtime/lighting_state.h"
-#include "runtime/portal_lighting.h"
 #include "scene/scene_loader.h"
+#include "sources/portal/portal_lighting.h"
 
 namespace relight {
 namespace {

@@ -1,12 +1,12 @@
 // Editing a curve distribution at run time: moving one control point updates the SH
-// weights incrementally (the lighting-design paper's Eq. 21) and gives the same light as
+// weights incrementally (Dobashi et al. 1995's Eq. 21) and gives the same light as
 // projecting the edited curve anew.
 #include <gtest/gtest.h>
 
 #include "runtime/relighter.h"
-#include "runtime/transfer_file.h"
 #include "scene/scene_loader.h"
-#include "transfer/precompute.h"
+#include "sources/precompute.h"
+#include "store/transfer_file.h"
 
 namespace relight {
 namespace {

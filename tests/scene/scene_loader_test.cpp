@@ -288,9 +288,8 @@ TEST(SceneLoaderExterior, NamedEntriesAreGeometryWithAPivot) {
 
 TEST(SceneLoaderPortals, PortalPrecomputeSettingsAreChecked) {
   nlohmann::json scene = scene_with_portals(nlohmann::json::array());
-  scene["precompute"] = {{"portal_face_size", 16},
-                         {"portal_sh_order", 4},
-                         {"portal_samples_per_cell", 8}};
+  scene["precompute"] = {
+      {"portal_face_size", 16}, {"portal_sh_order", 4}, {"portal_samples_per_cell", 8}};
   const Scene s = scene_from_json(scene, "p.json");
   EXPECT_EQ(s.precompute.portal_face_size, 16);
   EXPECT_EQ(s.precompute.portal_sh_order, 4);

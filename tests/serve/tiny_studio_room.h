@@ -5,10 +5,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "runtime/transfer_file.h"
 #include "scene/scene_loader.h"
+#include "sources/precompute.h"
+#include "store/transfer_file.h"
 #include "support/temp_dir.h"
-#include "transfer/precompute.h"
 
 namespace relight::testing {
 

@@ -1,0 +1,46 @@
+// The bounce solver of the interreflection engine (ARCHITECTURE §4.3): every basis
+// column of direct irradiance (one per SH basis function of a luminaire, per portal basis,
+// …; geometry-only, scalar) bounces through the same gather operator G, all columns at
+// once, one colour channel at a time (albedo colours the light, §4.2):
+//
+//   E_c(0) = E_d,   E_c(n+1) = E_d + G_vv · diag(ρ_c) · E_c(n)   (vertex rows)
+//
+// until max over columns of ‖E(n+1) − E(n)‖ / ‖E(n+1)‖ < tolerance. The result is the
+// interreflected part only, I_c = G · diag(ρ_c) · E_c, for every receiver (vertex and
+// sensor rows): the total irradiance is E_d + I_c.
+//
+// Dobashi et al. 1995 (Eq. 16–17) solves one radiosity system
+// per basis luminance, sharing only the form factors; Yue et al. 2009 (Yue et al. 2009,
+// §4.1.1) traces a photon map per SH basis. Here one sparse × dense product per bounce
+// advances all K basis columns together, and no ray is traced after G is built.
+#pragma once
+
+#include <array>
+
+#include <Eigen/Core>
+
+#include "engine/gather_operator.h"
+#include "engine/receivers.h"
+
+namespace relight {
+
+struct BounceSettings {
+  double tolerance = 1e-4;  // relative change per bounce that ends the iteration
+  int max_bounces = 100;    // 0: no interreflection at all
+};
+
+struct BounceResult {
+  std::array<Eigen::MatrixXf, 3> indirect;  // receivers × K per channel (r, g, b), lux
+  int bounces = 0;  // products G · diag(ρ) · E computed, the most over channels
+  double seconds = 0;
+};
+
+// `direct` is receivers × K (sensor rows are accepted and not used: sensors do not
+// reflect). The albedo is receivers.albedo of the vertex rows. Channels whose albedo
+// equals an earlier channel's are copied, not solved again. Throws std::invalid_argument
+// when the sizes of gather, receivers and direct disagree.
+BounceResult solve_bounces(const GatherOperator& gather, const Receivers& receivers,
+                           const Eigen::MatrixXf& direct, const BounceSettings& settings,
+                           bool progress);
+
+}  // namespace relight

@@ -1,0 +1,58 @@
+// The bounce solver's columns (ARCHITECTURE §4.3): every source that bounces light through
+// the one gather operator asks the registry for a range of columns, one per basis function
+// of each of its instances (a luminaire's K SH bases, a portal's shell bases, the emitters'
+// shadowed-transfer bases). The registry hands the ranges out in order and is the only place
+// that knows where a source's columns lie; sources read and write their columns through
+// their ranges (DirectColumns::of, indirect_of). Pinned by tests/engine/column_registry_test.cpp.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "engine/bounce_solver.h"
+
+namespace relight {
+
+struct ColumnRange {
+  Eigen::Index first = 0;
+  Eigen::Index count = 0;
+};
+
+class ColumnRegistry {
+ public:
+  // A new range of `count` columns after every range handed out so far; `owner` names it
+  // in messages ("luminaire 2", "portal south").
+  ColumnRange add(std::string owner, Eigen::Index count);
+  Eigen::Index columns() const { return columns_; }
+  const std::vector<std::string>& owners() const { return owners_; }
+
+ private:
+  Eigen::Index columns_ = 0;
+  std::vector<std::string> owners_;
+};
+
+// The direct irradiance of every registered column, receivers × columns (scalar: albedo
+// colours the bounced light, ARCHITECTURE §4.2).
+class DirectColumns {
+ public:
+  DirectColumns(Eigen::Index receivers, const ColumnRegistry& registry)
+      : matrix_(receivers, registry.columns()) {}
+  auto of(ColumnRange r) { return matrix_.middleCols(r.first, r.count); }
+  const Eigen::MatrixXf& matrix() const { return matrix_; }
+
+ private:
+  Eigen::MatrixXf matrix_;
+};
+
+// A range's interreflected columns of one colour channel (0 r, 1 g, 2 b), receivers × count.
+inline auto indirect_of(const BounceResult& result, int channel, ColumnRange r) {
+  return result.indirect[static_cast<std::size_t>(channel)].middleCols(r.first, r.count);
+}
+
+// A range's interreflected columns packed in the blocked RGB layout (engine/transfer_blocks.h).
+std::vector<float> pack_indirect_blocks(const BounceResult& result, ColumnRange r);
+
+}  // namespace relight

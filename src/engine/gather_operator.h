@@ -1,0 +1,46 @@
+// The sparse gather operator G of the interreflection engine (ARCHITECTURE §4.3): the one
+// piece of ray tracing every light source's indirect transfer shares. Row r (a receiver:
+// vertices first, then sensors) holds where M cosine-distributed rays from r land: a ray
+// that hits the front side of triangle t at barycentrics (b0, b1, b2) adds b_k / M to
+// G[r, t_k]; misses, back sides (they absorb) and portals (openings: light arriving
+// through them is the portal transfer's job) add nothing. Columns are mesh vertices.
+//
+// With irradiance E per vertex and luminance L = ρ/π · E, the irradiance reflected onto r
+// is π · mean(L over the cosine-distributed rays) = (G · diag(ρ) · E)[r]: G is the
+// point-to-vertex-basis form factor matrix. Dobashi et al. 1995 (Dobashi et al. 1995,
+// Eq. 14–17) computes the form factors F_ij between patches once and runs one radiosity
+// solve per SH basis; Yue et al. 2009 (§4.1.1) shoots a photon map per
+// basis function and final-gathers each. Here the rays are traced once, for all bases and
+// all bounces, and every basis column then bounces through the same sparse matrix
+// (bounce_solver.h).
+#pragma once
+
+#include <cstdint>
+
+#include <Eigen/SparseCore>
+
+#include "engine/receivers.h"
+#include "scene/mesh_preparation.h"
+#include "trace/traced_scene.h"
+
+namespace relight {
+
+struct GatherOperator {
+  // receivers × mesh vertices; each row sums to the fraction of its rays that reached a
+  // front face (1 inside a closed room, less where rays escape through openings).
+  Eigen::SparseMatrix<float, Eigen::RowMajor> matrix;
+  std::uint64_t rays = 0;  // rays traced to build it
+  double seconds = 0;      // wall-clock time to build it
+};
+
+// Shoots `rays_per_receiver` cosine-distributed rays from every receiver (a scrambled
+// (0,2)-sequence per receiver, Kollig & Keller 2002, deterministic from `seed` and the
+// receiver's index, independent of thread scheduling). Receivers must be those of `mesh`
+// (vertex_count == mesh vertex count) and `traced` built from the same mesh. Throws
+// std::invalid_argument for rays_per_receiver < 1, mismatched inputs or a matrix with more
+// than 2^31 - 1 entries.
+GatherOperator build_gather_operator(const Receivers& receivers, const PreparedMesh& mesh,
+                                     const TracedScene& traced, int rays_per_vertex,
+                                     int rays_per_sensor, std::uint64_t seed, bool progress);
+
+}  // namespace relight

@@ -1,0 +1,29 @@
+#include "engine/source_precompute.h"
+
+#include <chrono>
+
+namespace relight {
+
+SourcesResult precompute_sources(const SourceContext& context, const GatherOperator& gather,
+                                 const BounceSettings& bounce,
+                                 std::span<SourcePrecompute* const> sources) {
+  ColumnRegistry registry;
+  for (SourcePrecompute* s : sources) s->register_columns(registry);
+  DirectColumns columns(static_cast<Eigen::Index>(context.receivers.size()), registry);
+  SourcesResult out;
+  for (SourcePrecompute* s : sources) {
+    PhaseTiming t = s->compute_direct(context, columns);
+    if (!t.name.empty()) out.phases.push_back(std::move(t));
+  }
+  const BounceResult result =
+      solve_bounces(gather, context.receivers, columns.matrix(), bounce, context.progress);
+  out.bounces = result.bounces;
+  out.phases.push_back({"bounces", result.seconds, 0});
+  const auto start = std::chrono::steady_clock::now();
+  for (SourcePrecompute* s : sources) s->take_indirect(result);
+  const std::chrono::duration<double> pack = std::chrono::steady_clock::now() - start;
+  out.phases.push_back({"pack", pack.count(), 0});
+  return out;
+}
+
+}  // namespace relight

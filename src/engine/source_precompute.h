@@ -1,0 +1,61 @@
+// What a source module gives the precompute driver (docs/architecture.md, "Where the next
+// thing goes"): it registers the columns it bounces, computes its direct transfer (writing
+// the direct irradiance of each registered column, and keeping whatever else it stores, e.g.
+// exact-direct geometry or cubemaps), and takes its interreflected columns after the one
+// bounce solve that all sources share. precompute_sources() runs them in order.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "engine/bounce_solver.h"
+#include "engine/column_registry.h"
+#include "engine/gather_operator.h"
+#include "engine/receivers.h"
+#include "scene/mesh_preparation.h"
+#include "trace/traced_scene.h"
+
+namespace relight {
+
+struct PhaseTiming {
+  std::string name;
+  double seconds = 0;
+  std::uint64_t rays = 0;
+};
+
+// What every source's direct transfer sees: the receivers, where their rays start, the
+// prepared mesh and its Embree scenes.
+struct SourceContext {
+  const Receivers& receivers;
+  const std::vector<Vec3>& ray_points;  // engine/receivers.h receiver_ray_points
+  const PreparedMesh& mesh;
+  const TracedScene& traced;
+  bool progress = true;
+};
+
+class SourcePrecompute {
+ public:
+  virtual ~SourcePrecompute() = default;
+  // Adds a range per bounced basis set to `registry` (none for a source that does not bounce).
+  virtual void register_columns(ColumnRegistry& registry) = 0;
+  // The direct transfer: fills the direct irradiance of its ranges. Returns its phase
+  // timing, or an empty name for none.
+  virtual PhaseTiming compute_direct(const SourceContext& context, DirectColumns& columns) = 0;
+  // Takes the interreflected light of its ranges.
+  virtual void take_indirect(const BounceResult& result) = 0;
+};
+
+struct SourcesResult {
+  int bounces = 0;
+  std::vector<PhaseTiming> phases;  // each source's direct phase, "bounces", "pack"
+};
+
+// Registers every source's columns, computes their direct transfer in order, bounces all
+// columns through `gather` together, and hands each source its interreflected columns.
+SourcesResult precompute_sources(const SourceContext& context, const GatherOperator& gather,
+                                 const BounceSettings& bounce,
+                                 std::span<SourcePrecompute* const> sources);
+
+}  // namespace relight

@@ -1,0 +1,205 @@
+// OpenEXR writing and reading (see image_exr.h). The file is encoded into memory through
+// an Imf::OStream and then written by write_bytes_atomically, so EXR and PNG share one
+// atomic, errno-reporting write path.
+#include "image/image_exr.h"
+
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfIO.h>
+#include <ImfInputFile.h>
+#include <ImfOutputFile.h>
+#include <ImfRgbaFile.h>
+#include <ImfTestFile.h>
+#include <half.h>
+
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "common/input_error.h"
+#include "image/image_bytes.h"
+
+namespace relight {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr std::size_t kMaxPixels = std::size_t{1} << 30;
+constexpr std::size_t kPixelStride = 3 * sizeof(float);  // interleaved R, G, B floats
+
+class MemoryOStream final : public Imf::OStream {
+ public:
+  MemoryOStream() : Imf::OStream("memory") {}
+
+  void write(const char c[], int n) override {
+    const std::size_t end = position_ + static_cast<std::size_t>(n);
+    if (end > bytes_.size()) bytes_.resize(end);
+    std::memcpy(bytes_.data() + position_, c, static_cast<std::size_t>(n));
+    position_ = end;
+  }
+  std::uint64_t tellp() override { return position_; }
+  void seekp(std::uint64_t position) override { position_ = position; }
+
+  const std::vector<std::uint8_t>& bytes() const { return bytes_; }
+
+ private:
+  std::vector<std::uint8_t> bytes_;
+  std::size_t position_ = 0;
+};
+
+bool needs_float(const Image& image) {
+  for (const Rgb& p : image.pixels) {
+    for (const double v : {p.r, p.g, p.b}) {
+      if (std::isfinite(v) && std::abs(v) > kHalfMax) return true;
+    }
+  }
+  return false;
+}
+
+// Interleaved R, G, B samples of type T (half or float), the frame buffer for them, and
+// the encoded file. The buffer type must match the file's channel type on output.
+template <typename T>
+std::vector<std::uint8_t> encode_exr_as(const Image& image, Imf::PixelType type) {
+  Imf::Header header(image.width, image.height);
+  header.compression() = Imf::ZIP_COMPRESSION;
+  std::vector<T> data;
+  data.reserve(3 * image.pixels.size());
+  for (const Rgb& p : image.pixels) {
+    data.insert(data.end(), {T(static_cast<float>(p.r)), T(static_cast<float>(p.g)),
+                             T(static_cast<float>(p.b))});
+  }
+  const std::size_t pixel_stride = 3 * sizeof(T);
+  const std::size_t row_stride = pixel_stride * static_cast<std::size_t>(image.width);
+  Imf::FrameBuffer frame;
+  const char* names[] = {"R", "G", "B"};
+  for (int c = 0; c < 3; ++c) {
+    header.channels().insert(names[c], Imf::Channel(type));
+    char* base = reinterpret_cast<char*>(data.data() + c);
+    frame.insert(names[c], Imf::Slice(type, base, pixel_stride, row_stride));
+  }
+
+  MemoryOStream stream;
+  {
+    Imf::OutputFile file(stream, header);  // the offset table is written on destruction
+    file.setFrameBuffer(frame);
+    file.writePixels(image.height);
+  }
+  return stream.bytes();
+}
+
+std::vector<std::uint8_t> encode_exr(const Image& image) {
+  if (needs_float(image)) return encode_exr_as<float>(image, Imf::FLOAT);
+  return encode_exr_as<Imath::half>(image, Imf::HALF);
+}
+
+// Reads the named channels as floats into interleaved slots 0..2 of `data` (an absent
+// channel reads as 0).
+void read_float_channels(Imf::InputFile& file, const Imath::Box2i& window,
+                         const char* const (&names)[3], std::vector<float>& data) {
+  const auto width =
+      static_cast<std::size_t>(static_cast<long long>(window.max.x) - window.min.x + 1);
+  Imf::FrameBuffer frame;
+  for (int c = 0; c < 3; ++c) {
+    if (names[c] == nullptr) continue;
+    frame.insert(names[c], Imf::Slice::Make(Imf::FLOAT, data.data() + c, window, kPixelStride,
+                                            kPixelStride * width, 1, 1, 0.0));
+  }
+  file.setFrameBuffer(frame);
+  file.readPixels(window.min.y, window.max.y);
+}
+
+Image to_image(int width, int height, const std::vector<float>& data) {
+  Image image = make_image(width, height);
+  for (std::size_t i = 0; i < image.pixels.size(); ++i) {
+    image.pixels[i] = {data[3 * i], data[3 * i + 1], data[3 * i + 2]};
+  }
+  return image;
+}
+
+// Luminance-chroma files need the library's YC → RGB reconstruction (half precision).
+Image read_luminance_chroma(const fs::path& path, const Imath::Box2i& window, int width,
+                            int height) {
+  Imf::RgbaInputFile file(path.c_str());
+  std::vector<Imf::Rgba> pixels(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+  // The library addresses pixel (x, y) at base + x + y * width, x and y in data-window
+  // coordinates; offset the base so that the window's corner lands on pixels[0].
+  const std::ptrdiff_t origin =
+      static_cast<std::ptrdiff_t>(window.min.x) + static_cast<std::ptrdiff_t>(window.min.y) * width;
+  file.setFrameBuffer(pixels.data() - origin, 1, static_cast<std::size_t>(width));
+  file.readPixels(window.min.y, window.max.y);
+  Image image = make_image(width, height);
+  for (std::size_t i = 0; i < pixels.size(); ++i) {
+    image.pixels[i] = {float(pixels[i].r), float(pixels[i].g), float(pixels[i].b)};
+  }
+  return image;
+}
+
+Image decode_exr(const fs::path& path) {
+  Imf::InputFile file(path.c_str());
+  const Imath::Box2i window = file.header().dataWindow();
+  const long long w = static_cast<long long>(window.max.x) - window.min.x + 1;
+  const long long h = static_cast<long long>(window.max.y) - window.min.y + 1;
+  if (w <= 0 || h <= 0 || static_cast<std::size_t>(w * h) > kMaxPixels) {
+    fail_input(path.string(),
+               "unsupported data window " + std::to_string(w) + "x" + std::to_string(h));
+  }
+  const int width = static_cast<int>(w), height = static_cast<int>(h);
+  const Imf::ChannelList& channels = file.header().channels();
+  const auto find = [&](const char* name) -> const char* {
+    const Imf::Channel* channel = channels.findChannel(name);
+    if (channel == nullptr) return nullptr;
+    if (channel->xSampling != 1 || channel->ySampling != 1) {
+      fail_input(path.string(), std::string("subsampled channel ") + name + " is not supported");
+    }
+    return name;
+  };
+
+  std::vector<float> data(3 * static_cast<std::size_t>(w * h), 0.0f);
+  if (channels.findChannel("R") || channels.findChannel("G") || channels.findChannel("B")) {
+    const char* const names[3] = {find("R"), find("G"), find("B")};
+    read_float_channels(file, window, names, data);
+    return to_image(width, height, data);
+  }
+  if (channels.findChannel("RY") || channels.findChannel("BY")) {
+    return read_luminance_chroma(path, window, width, height);
+  }
+  if (channels.findChannel("Y")) {
+    const char* const names[3] = {find("Y"), nullptr, nullptr};
+    read_float_channels(file, window, names, data);
+    for (std::size_t i = 0; i < data.size(); i += 3) data[i + 1] = data[i + 2] = data[i];
+    return to_image(width, height, data);
+  }
+  fail_input(path.string(), "no R, G, B or Y channel");
+}
+
+}  // namespace
+
+void write_exr(const fs::path& path, const Image& image) {
+  if (!is_valid(image)) throw std::invalid_argument("write_exr: pixel count != width × height");
+  std::vector<std::uint8_t> bytes;
+  try {
+    bytes = encode_exr(image);
+  } catch (const std::exception& e) {  // Iex::BaseExc derives from std::exception
+    fail_input(path.string(), std::string("cannot encode OpenEXR: ") + e.what());
+  }
+  write_bytes_atomically(path, bytes);
+}
+
+Image read_exr(const fs::path& path) {
+  std::error_code error;
+  if (!fs::is_regular_file(path, error)) fail_input(path.string(), "no such file");
+  if (!Imf::isOpenExrFile(path.c_str())) fail_input(path.string(), "not an OpenEXR file");
+  try {
+    return decode_exr(path);
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception& e) {  // damaged or truncated file
+    fail_input(path.string(), std::string("cannot read OpenEXR: ") + e.what());
+  }
+}
+
+}  // namespace relight

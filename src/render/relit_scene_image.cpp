@@ -1,0 +1,37 @@
+#include "render/relit_scene_image.h"
+
+#include "math/cubemap.h"
+#include "render/pixel_direct.h"
+
+namespace relight {
+
+ShadedImages render_relit_scene(RelitScene& scene, const Camera& camera, int width, int height,
+                                bool pixel_direct) {
+  const TransferFile& t = scene.transfer();
+  const RayTracer& occluders = scene.opaque_tracer();
+  const RayTracer& windows = scene.portal_tracer();
+  const PinholeCamera pinhole = make_pinhole_camera(camera, width, height);
+  const Relighter& lit = scene.relighter();
+  const auto background = [&](Vec3 origin, Vec3 dir) {
+    const RayHit hit = windows.intersect({origin, dir});
+    if (!hit.hit()) return Rgb{};
+    const Shell& shell = lit.shell(hit.triangle);
+    return shell.cubemap[cubemap_texel_index(shell.face_size, cubemap_texel(shell.face_size, dir))];
+  };
+  if (!pixel_direct) {
+    return shade_vertices(
+        pinhole,
+        {occluders, t.positions, t.triangles, t.vertex_albedo, scene.irradiance(), {}, background});
+  }
+  const std::vector<float> indirect = scene.indirect_irradiance();
+  const std::vector<PixelLight> lights = pixel_lights(t.scene, lit);
+  const std::vector<PixelSun> suns = pixel_suns(lit, t.scene.portals.size());
+  return shade_vertices(pinhole, {occluders, t.positions, t.triangles, t.vertex_albedo, indirect,
+                                  [&](Vec3 p, Vec3 n) {
+                                    return exact_direct_irradiance(occluders, lights, p, n) +
+                                           sun_irradiance(occluders, windows, suns, p, n);
+                                  },
+                                  background});
+}
+
+}  // namespace relight

@@ -1,0 +1,16 @@
+// An image of a relit scene through a camera: per-vertex radiance interpolated over the
+// triangles (Gouraud-equivalent), or with `pixel_direct` the direct light evaluated exactly
+// at each pixel's surface point (render/pixel_direct.h) and only the interreflected light
+// interpolated. Windows show the current shell of their portal.
+#pragma once
+
+#include "render/camera.h"
+#include "render/vertex_shading.h"
+#include "runtime/relit_scene.h"
+
+namespace relight {
+
+ShadedImages render_relit_scene(RelitScene& scene, const Camera& camera, int width, int height,
+                                bool pixel_direct = false);
+
+}  // namespace relight

@@ -1,0 +1,62 @@
+// The one owner of "a lighting state applied to a precomputed scene" (docs/architecture.md,
+// "runtime"): the opened .rlt, the Relighter over its sources, the current irradiance per
+// receiver, the sensors' readings, per-vertex radiance, and the ray tracers over the stored
+// mesh that renderers, pickers and exact direct light need. `render`, `probe`, `bench`,
+// `nearfield`, `serve` and the demo all go through it.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "math/rgb.h"
+#include "runtime/lighting_state.h"
+#include "runtime/relighter.h"
+#include "store/transfer_file.h"
+#include "trace/ray_tracer.h"
+
+namespace relight {
+
+class RelitScene {
+ public:
+  // Opens `rlt` and lights it with the state in `state_file`, or the scene's own state.
+  RelitScene(const std::filesystem::path& rlt,
+             const std::optional<std::filesystem::path>& state_file);
+
+  const TransferFile& transfer() const { return *transfer_; }
+  const Scene& scene() const { return transfer_->scene; }
+  Relighter& relighter() { return *relighter_; }
+  const Relighter& relighter() const { return *relighter_; }
+  const LightingState& state() const { return relighter_->state(); }
+
+  // Applies a state and relights.
+  void apply(const LightingState& state);
+
+  // Irradiance per receiver, RGB interleaved (3 per receiver: vertices, then sensors).
+  std::span<const float> irradiance() const { return irradiance_; }
+  // What renderers that evaluate direct light per pixel add it to: the same without the
+  // luminaires' direct light and the portals' sharp suns (Relighter::relight).
+  std::vector<float> indirect_irradiance();
+  // Sensor illuminance (lx, RGB) in scene order, sensor sets back to back.
+  std::vector<Rgb> sensor_irradiance() const;
+  // Per-vertex luminance L = ρE/π (cd/m², RGB), 3 per vertex, from `irradiance` (3 per
+  // receiver or per vertex).
+  std::vector<float> vertex_radiance(std::span<const float> irradiance) const;
+
+  // Ray tracers over the stored mesh, built on first use: the opaque triangles (ids: the
+  // triangle's index in the mesh), the portals' glass (ids: the portal's index), and every
+  // triangle (ids: its index; for picking).
+  const RayTracer& opaque_tracer();
+  const RayTracer& portal_tracer();
+  const RayTracer& mesh_tracer();
+
+ private:
+  std::unique_ptr<TransferFile> transfer_;  // stable address: the Relighter refers to it
+  std::unique_ptr<Relighter> relighter_;
+  std::vector<float> irradiance_;
+  std::unique_ptr<RayTracer> opaque_tracer_, portal_tracer_, mesh_tracer_;
+};
+
+}  // namespace relight

@@ -1,0 +1,120 @@
+#include "sources/luminaire/luminaire_direct.h"
+
+#include <atomic>
+#include <cmath>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "common/progress.h"
+
+namespace relight {
+
+namespace {
+
+// Keeps the shadow ray from reaching a luminaire that sits on a surface.
+constexpr double kLightMargin = 1e-4;  // m
+
+bool is_round(OpeningShape s) {
+  switch (s) {
+    case OpeningShape::kCircular:
+    case OpeningShape::kEllipse:
+    case OpeningShape::kVerticalCylinder:
+    case OpeningShape::kVerticalEllipticalCylinder:
+    case OpeningShape::kSphere:
+    case OpeningShape::kEllipsoidalSpheroid:
+      return true;
+    default:
+      return false;
+  }
+}
+
+}  // namespace
+
+std::vector<Vec3> opening_sample_offsets(const LuminousOpening& opening,
+                                         const PhotometricFrame& frame, int samples) {
+  const double length = opening.length_m, width = opening.width_m, height = opening.height_m;
+  if (samples <= 1 || opening.shape == OpeningShape::kPoint ||
+      (length <= 0 && width <= 0 && height <= 0)) {
+    return {Vec3{}};
+  }
+  // n × n stratified cells over the plan (C0 × C90), cell centres, optionally stacked in
+  // height; round openings keep the cells whose centre lies inside the ellipse.
+  const int layers = height > 0 ? 2 : 1;
+  const int n = std::max(1, static_cast<int>(std::lround(std::sqrt(samples / double(layers)))));
+  std::vector<Vec3> out;
+  for (int layer = 0; layer < layers; ++layer) {
+    const double h = layers == 1 ? 0 : height * ((layer + 0.5) / layers - 0.5);
+    for (int i = 0; i < n; ++i) {
+      for (int j = 0; j < n; ++j) {
+        const double s = (i + 0.5) / n - 0.5, t = (j + 0.5) / n - 0.5;  // in [-½, ½]
+        if (is_round(opening.shape) && 4 * (s * s + t * t) > 1) continue;
+        out.push_back(frame.c0 * (s * length) + frame.c90 * (t * width) - frame.aim * h);
+      }
+    }
+  }
+  if (out.empty()) out.push_back({});
+  return out;
+}
+
+LuminousOpening luminaire_opening(const Luminaire& l, const LuminousOpening& from_file) {
+  if (!l.has_size) return from_file;
+  return {l.size.z > 0 ? OpeningShape::kRectangularWithLuminousSides : OpeningShape::kRectangular,
+          l.size.x, l.size.y, l.size.z};
+}
+
+DirectFactor direct_factor(const RayTracer& occluders, Vec3 p, Vec3 normal, Vec3 luminaire_position,
+                           const std::vector<Vec3>& opening_offsets, std::uint64_t& rays) {
+  const Vec3 d = p - luminaire_position;
+  const double dist = length(d);
+  DirectFactor out{dist > 0 ? d / dist : Vec3{0, -1, 0}, 0};
+  const double cos_receiver = -dot(normal, out.direction);
+  if (dist <= kLightMargin || cos_receiver <= 0) return out;
+  // Visible fraction of the opening, seen from the point.
+  const Vec3 origin = offset_from_surface(p, normal);
+  int visible = 0;
+  for (const Vec3& offset : opening_offsets) {
+    const Vec3 to_light = luminaire_position + offset - origin;
+    const double span = length(to_light);
+    ++rays;
+    if (span <= kLightMargin ||
+        !occluders.occluded({origin, to_light / span, 0, span - kLightMargin})) {
+      ++visible;
+    }
+  }
+  const double fraction = static_cast<double>(visible) / opening_offsets.size();
+  out.factor = fraction * cos_receiver / (dist * dist);
+  return out;
+}
+
+DirectGeometry compute_direct_geometry(const Receivers& receivers,
+                                       const std::vector<Vec3>& ray_points,
+                                       const TracedScene& traced, Vec3 luminaire_position,
+                                       const std::vector<Vec3>& opening_offsets, bool progress) {
+  const std::size_t n = receivers.size();
+  DirectGeometry g;
+  g.dir_x.resize(n);
+  g.dir_y.resize(n);
+  g.dir_z.resize(n);
+  g.factor.resize(n);
+  std::atomic<std::uint64_t> rays{0};
+  Progress bar("direct visibility", n, progress);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n), [&](const auto& range) {
+    std::uint64_t local_rays = 0;
+    for (std::size_t r = range.begin(); r != range.end(); ++r) {
+      bar.advance();
+      const DirectFactor f = direct_factor(traced.opaque, ray_points[r], receivers.normals[r],
+                                           luminaire_position, opening_offsets, local_rays);
+      g.dir_x[r] = static_cast<float>(f.direction.x);
+      g.dir_y[r] = static_cast<float>(f.direction.y);
+      g.dir_z[r] = static_cast<float>(f.direction.z);
+      g.factor[r] = static_cast<float>(f.factor);
+    }
+    rays += local_rays;
+  });
+  bar.finish();
+  g.rays = rays.load();
+  return g;
+}
+
+}  // namespace relight

@@ -1,0 +1,55 @@
+// Direct light from a luminaire, precomputed as geometry only (ARCHITECTURE §4.2):
+// per receiver the unit direction ω from the luminaire's photometric centre and the
+// factor g = V · max(0, n·(−ω)) / d², V the visible fraction of the luminous opening (1 or
+// 0 for a point source). At run time E_direct = colour · dimmer · I(ω in the current
+// photometric frame) · g, evaluated exactly from the current distribution and aim: no SH
+// truncation and no ringing in direct light (going past Dobashi et al. 1995, whose
+// direct light is the SH series itself; its mode is kept as "direct": "sh").
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "engine/receivers.h"
+#include "light/luminaire_frame.h"
+#include "light/photometric_web.h"
+#include "trace/traced_scene.h"
+
+namespace relight {
+
+struct DirectGeometry {
+  // Structure of arrays, one entry per receiver.
+  std::vector<float> dir_x, dir_y, dir_z;  // unit direction from the luminaire to the receiver
+  std::vector<float> factor;               // V · cos θ_receiver / d²  (1/m²)
+  std::uint64_t rays = 0;
+};
+
+// Points on (or in) the luminous opening, relative to the photometric centre: a
+// stratified pattern of about `samples` points over the opening's extent (length along
+// C0, width along C90, height along the aim, elliptical in plan for round shapes). A
+// point opening or samples <= 1 gives the centre only.
+std::vector<Vec3> opening_sample_offsets(const LuminousOpening& opening,
+                                         const PhotometricFrame& frame, int samples);
+
+// The luminous opening the transfer uses: the scene's `size` when given, else the
+// IES/LDT dimensions (a point for analytic distributions).
+LuminousOpening luminaire_opening(const Luminaire& luminaire, const LuminousOpening& from_file);
+
+struct DirectFactor {
+  Vec3 direction;     // unit, from the luminaire to the point
+  double factor = 0;  // V · cos θ / d² (1/m²)
+};
+
+// The direct geometry at one surface point p with unit normal n: what
+// compute_direct_geometry stores per receiver, and what a per-pixel renderer evaluates
+// at each hit. `rays` counts the shadow rays cast.
+DirectFactor direct_factor(const RayTracer& occluders, Vec3 p, Vec3 n, Vec3 luminaire_position,
+                           const std::vector<Vec3>& opening_offsets, std::uint64_t& rays);
+
+// `ray_points` are receiver_ray_points(receivers, mesh): the shadow rays start there.
+DirectGeometry compute_direct_geometry(const Receivers& receivers,
+                                       const std::vector<Vec3>& ray_points,
+                                       const TracedScene& traced, Vec3 luminaire_position,
+                                       const std::vector<Vec3>& opening_offsets, bool progress);
+
+}  // namespace relight

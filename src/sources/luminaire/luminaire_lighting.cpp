@@ -1,0 +1,183 @@
+#include "sources/luminaire/luminaire_lighting.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "light/luminaire_frame.h"
+#include "math/sh.h"
+#include "sources/luminaire/luminaire_sh.h"
+
+namespace relight {
+
+namespace {
+
+bool same_distribution(const DistributionSpec& a, const DistributionSpec& b) {
+  return a.type == b.type && a.candela == b.candela && a.exponent == b.exponent &&
+         a.cutoff_deg == b.cutoff_deg && a.gamma_deg == b.gamma_deg &&
+         a.curve_candela == b.curve_candela && a.file == b.file;
+}
+
+// The one control point in which two curves of equal length differ, or -1.
+int single_moved_point(const DistributionSpec& a, const DistributionSpec& b) {
+  if (a.type != DistributionType::kCurve || b.type != DistributionType::kCurve ||
+      a.gamma_deg.size() != b.gamma_deg.size()) {
+    return -1;
+  }
+  int moved = -1;
+  for (std::size_t i = 0; i < a.gamma_deg.size(); ++i) {
+    if (a.gamma_deg[i] != b.gamma_deg[i] || a.curve_candela[i] != b.curve_candela[i]) {
+      if (moved >= 0) return -1;
+      moved = static_cast<int>(i);
+    }
+  }
+  return moved;
+}
+
+}  // namespace
+
+LuminaireLighting::LuminaireLighting(LuminaireTransferSet transfer, const Scene& scene,
+                                     ShWindow window)
+    : transfer_(transfer), window_(window) {
+  if (transfer_.luminaires.size() != scene.luminaires.size()) {
+    throw std::invalid_argument("LuminaireLighting: transfer and scene disagree on luminaires");
+  }
+  luminaires_.resize(scene.luminaires.size());
+  for (const Luminaire& l : scene.luminaires) states_.push_back(luminaire_state(l));
+  for (std::size_t j = 0; j < luminaires_.size(); ++j) update(j, states_[j], true);
+}
+
+bool LuminaireLighting::set_state(std::span<const LuminaireState> states) {
+  if (states.size() != luminaires_.size()) {
+    throw std::invalid_argument("LuminaireLighting: one state per luminaire");
+  }
+  bool changed = false;
+  for (std::size_t j = 0; j < luminaires_.size(); ++j) {
+    const LuminaireState& now = states_[j];
+    const LuminaireState& next = states[j];
+    const bool geometry_changed = !(now.aim == next.aim) || !(now.c0 == next.c0) ||
+                                  !same_distribution(now.distribution, next.distribution);
+    update(j, next, geometry_changed);
+    changed = changed || geometry_changed || now.on != next.on || now.dimmer != next.dimmer ||
+              !(now.color == next.color);
+    states_[j] = next;
+  }
+  return changed;
+}
+
+void LuminaireLighting::project_distribution(std::size_t j, const LuminaireState& s) {
+  Lit& l = luminaires_[j];
+  const LuminaireShSettings sh_settings{transfer_.sh_order, window_};
+  l.distribution = load_distribution(s.distribution);
+  if (s.distribution.type != DistributionType::kCurve) {
+    l.curve.reset();
+    l.sh = luminaire_world_sh(l.distribution, s.aim, s.c0, sh_settings);
+    return;
+  }
+  // Curves: when one control point moved, update the Legendre weights by Eq. 21 (only the
+  // samples next to the point change); otherwise build the projector anew.
+  const int moved = l.curve ? single_moved_point(states_[j].distribution, s.distribution) : -1;
+  bool incremental = false;
+  if (moved >= 0) {
+    try {
+      const auto k = static_cast<std::size_t>(moved);
+      move_curve_point(*l.curve, moved, radians(s.distribution.gamma_deg[k]),
+                       s.distribution.curve_candela[k]);
+      incremental = true;
+      ++incremental_curve_updates_;
+    } catch (const std::exception&) {
+      // A move the projector cannot take (e.g. past a neighbour): project anew below.
+    }
+  }
+  const bool unchanged = l.curve && same_distribution(states_[j].distribution, s.distribution);
+  if (!incremental && !unchanged) {  // a re-aimed curve keeps its projector
+    l.curve = make_curve_projector(std::get<CurveModel>(l.distribution.model), sh_settings);
+  }
+  l.sh.resize(static_cast<std::size_t>(sh_count(transfer_.sh_order)));
+  curve_world_sh(*l.curve, s.aim, l.sh);
+}
+
+void LuminaireLighting::update(std::size_t j, const LuminaireState& s, bool geometry_changed) {
+  Lit& l = luminaires_[j];
+  const int k = sh_count(transfer_.sh_order);
+  if (geometry_changed) {
+    project_distribution(j, s);
+    if (!transfer_.direct_sh_mode) {
+      // Exact direct: the current distribution evaluated toward every receiver.
+      const LuminaireTransferView& v = transfer_.luminaires[j];
+      const PhotometricFrame frame = photometric_frame(s.aim, s.c0);
+      l.direct.resize(transfer_.receivers);
+      tbb::parallel_for(
+          tbb::blocked_range<std::size_t>(0, transfer_.receivers), [&](const auto& range) {
+            for (std::size_t r = range.begin(); r != range.end(); ++r) {
+              if (v.factor[r] == 0) {
+                l.direct[r] = 0;
+                continue;
+              }
+              const Vec3 w{v.dir_x[r], v.dir_y[r], v.dir_z[r]};
+              l.direct[r] = static_cast<float>(l.distribution.intensity(frame.to_photometric(w)) *
+                                               v.factor[r]);
+            }
+          });
+    }
+  }
+  const Rgb rgb = s.on ? s.color * s.dimmer : Rgb{};
+  l.rgb[0] = static_cast<float>(rgb.r);
+  l.rgb[1] = static_cast<float>(rgb.g);
+  l.rgb[2] = static_cast<float>(rgb.b);
+  l.active = s.on && max_component(rgb) > 0;
+  l.weights.resize(3 * static_cast<std::size_t>(k));
+  for (int b = 0; b < k; ++b) {
+    for (int c = 0; c < 3; ++c) {
+      l.weights[3 * static_cast<std::size_t>(b) + static_cast<std::size_t>(c)] =
+          static_cast<float>(l.sh[static_cast<std::size_t>(b)] * l.rgb[c]);
+    }
+  }
+}
+
+void LuminaireLighting::add_block(std::size_t b, bool include_direct,
+                                  float (&acc)[3][kBlock]) const {
+  const std::size_t n = transfer_.receivers;
+  const auto k = static_cast<std::size_t>(sh_count(transfer_.sh_order));
+  const std::size_t base = b * kBlock;
+  const std::size_t count = std::min(kBlock, n - base);
+  for (std::size_t j = 0; j < luminaires_.size(); ++j) {
+    const Lit& l = luminaires_[j];
+    if (!l.active) continue;
+    const LuminaireTransferView& v = transfer_.luminaires[j];
+    if (!include_direct) {
+      // interreflected light only
+    } else if (transfer_.direct_sh_mode) {
+      const float* s = v.direct_sh.data() + b * k * kBlock;
+      for (std::size_t basis = 0; basis < k; ++basis) {
+        const float* t = s + basis * kBlock;
+        for (int c = 0; c < 3; ++c) {
+          const float w = l.weights[3 * basis + c];
+          for (std::size_t i = 0; i < kBlock; ++i) acc[c][i] += w * t[i];
+        }
+      }
+    } else {
+      const float* d = l.direct.data() + base;
+      for (int c = 0; c < 3; ++c) {
+        for (std::size_t i = 0; i < count; ++i) acc[c][i] += l.rgb[c] * d[i];
+      }
+    }
+    add_weighted_block(v.indirect.data() + b * k * 3 * kBlock, k, l.weights.data(), acc);
+  }
+}
+
+std::size_t LuminaireLighting::transfer_bytes() const {
+  std::size_t bytes = 0;
+  for (std::size_t j = 0; j < luminaires_.size(); ++j) {
+    if (!luminaires_[j].active) continue;
+    const LuminaireTransferView& v = transfer_.luminaires[j];
+    bytes += v.indirect.size_bytes();
+    bytes += transfer_.direct_sh_mode ? v.direct_sh.size_bytes()
+                                      : luminaires_[j].direct.size() * sizeof(float);
+  }
+  return bytes;
+}
+
+}  // namespace relight

@@ -1,0 +1,356 @@
+// Pulse / per-face Haar encoding of a receiver's portal cubemap, 8-bit quantised, and the
+// run-time sparse dot product (paper 000 §4.1.2, §5, Eq. 7); layout and bounds in
+// cubemap_encoding.h.
+#include "sources/portal/cubemap_encoding.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "common/input_error.h"
+#include "math/haar.h"
+
+namespace relight {
+namespace {
+
+constexpr double kPulseLevels = 255.0;  // uint8 0..255
+constexpr double kHaarLevels = 127.0;   // int8 −127..127
+
+void check_face_size(int n) {
+  if (!is_power_of_two(n))
+    throw std::invalid_argument("cubemap encoding: face size " + std::to_string(n) +
+                                " is not a power of two");
+}
+
+std::size_t cell_count(int n) {
+  return std::size_t{6} * n * n;
+}
+
+// The float nearest above x (x ≥ 0 finite): a stored scale that no value exceeds.
+float scale_at_least(double x) {
+  float f = static_cast<float>(x);
+  if (!std::isfinite(f))
+    throw std::invalid_argument("cubemap encoding: value beyond the float range");
+  if (static_cast<double>(f) < x) f = std::nextafter(f, std::numeric_limits<float>::infinity());
+  return f;
+}
+
+// Orthonormal per-face Haar coefficients turned into amplitudes a_k = T_k / S_k (in place).
+void to_amplitudes(std::span<double> coefficients, int n) {
+  for (std::size_t start = 0; start < coefficients.size(); start += std::size_t(n) * n)
+    for (int r = 0; r < n; ++r)
+      for (int c = 0; c < n; ++c) coefficients[start + r * n + c] /= haar2d_support(n, r, c);
+}
+
+// How a record's values are quantised: uint8 against `scale` (pulse S, Haar S₀), or for a Haar
+// detail int8 against `detail_scale`.
+struct Quantiser {
+  double scale = 0;
+  double detail_scale = 0;    // Haar only
+  std::size_t face_mask = 0;  // Haar: N² − 1 (index in face = k & mask); 0 for pulse
+  double threshold = 0;
+
+  bool is_detail(std::size_t k) const { return (k & face_mask) != 0; }
+  // The quantised value, 0 when dropped.
+  long operator()(std::size_t k, double v) const {
+    if (v == 0.0) return 0;
+    const bool detail = is_detail(k);
+    const double s = detail ? detail_scale : scale;
+    if (std::abs(v) < threshold * s) return 0;
+    return std::lround(v / s * (detail ? kHaarLevels : kPulseLevels));
+  }
+};
+
+template <class F>
+std::size_t for_each_kept(std::span<const double> values, const Quantiser& quantise, F&& visit) {
+  std::size_t m = 0;
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    const long q = quantise(k, values[k]);
+    if (q == 0) continue;
+    visit(k, q);
+    ++m;
+  }
+  return m;
+}
+
+void put_uint(std::vector<std::uint8_t>& out, std::uint32_t v, std::size_t width) {
+  for (std::size_t b = 0; b < width; ++b) out.push_back(static_cast<std::uint8_t>(v >> (8 * b)));
+}
+
+std::uint32_t get_uint(const std::uint8_t* p, std::size_t width) {
+  std::uint32_t v = 0;
+  for (std::size_t b = 0; b < width; ++b) v |= std::uint32_t{p[b]} << (8 * b);
+  return v;
+}
+
+void put_float(std::vector<std::uint8_t>& out, float f) {
+  put_uint(out, std::bit_cast<std::uint32_t>(f), 4);
+}
+
+void write_record(int n, CubemapCodeKind kind, const Quantiser& quantise,
+                  std::span<const double> values, std::size_t count,
+                  std::vector<std::uint8_t>& out) {
+  const std::size_t w = cubemap_code_index_bytes(n);
+  out.push_back(static_cast<std::uint8_t>(kind));
+  put_float(out, static_cast<float>(quantise.scale));
+  if (kind == CubemapCodeKind::kHaar) put_float(out, static_cast<float>(quantise.detail_scale));
+  put_uint(out, static_cast<std::uint32_t>(count), w);
+  for_each_kept(values, quantise,
+                [&](std::size_t k, long) { put_uint(out, static_cast<std::uint32_t>(k), w); });
+  for_each_kept(values, quantise, [&](std::size_t, long q) {
+    out.push_back(static_cast<std::uint8_t>(q & 0xff));  // uint8, or int8 two's complement
+  });
+}
+
+[[noreturn]] void bad_record(const std::string& reason) {
+  throw InputError("cubemap record: " + reason);
+}
+
+// The value of entry byte q: unsigned, or signed for a Haar detail (index in face ≠ 0).
+struct EntryValue {
+  double scale = 0, detail_scale = 0;
+  std::size_t face_mask = 0;
+  double operator()(std::size_t k, std::uint8_t q) const {
+    return (k & face_mask) != 0 ? static_cast<std::int8_t>(q) * detail_scale : q * scale;
+  }
+};
+
+EntryValue entry_value(const CubemapRecord& rec, int n) {
+  if (rec.kind == CubemapCodeKind::kHaar)
+    return {rec.scale / kPulseLevels, rec.detail_scale / kHaarLevels, std::size_t(n) * n - 1};
+  return {rec.scale / kPulseLevels, 0.0, 0};
+}
+
+// Calls visit(index, value) for each entry, checking indices are increasing and < limit.
+template <class F>
+void for_each_entry(const CubemapRecord& rec, int n, F&& visit) {
+  const std::size_t w = cubemap_code_index_bytes(n), limit = cell_count(n);
+  const EntryValue value = entry_value(rec, n);
+  std::size_t previous = 0;
+  for (std::size_t e = 0; e < rec.count; ++e) {
+    const std::size_t k = get_uint(rec.indices.data() + e * w, w);
+    if (k >= limit || (e > 0 && k <= previous)) bad_record("index out of range or not increasing");
+    previous = k;
+    visit(k, value(k, rec.values[e]));
+  }
+}
+
+// The hot loop: Σ table[k]·value(k, q) over the entries.
+template <std::size_t W>
+Rgb sparse_dot(const CubemapRecord& rec, const std::vector<Rgb>& table, const EntryValue& value) {
+  const std::uint8_t* idx = rec.indices.data();
+  const std::uint8_t* val = rec.values.data();
+  const std::size_t limit = table.size();
+  Rgb acc;
+  for (std::size_t e = 0; e < rec.count; ++e) {
+    const std::size_t k = get_uint(idx + e * W, W);
+    if (k >= limit) bad_record("index out of range");
+    acc += table[k] * value(k, val[e]);
+  }
+  return acc;
+}
+
+}  // namespace
+
+EncodedReceiver encode_receiver_cubemap(int n, std::span<const double> cells,
+                                        const CubemapEncodeOptions& options,
+                                        std::vector<std::uint8_t>& out,
+                                        CubemapEncodeScratch& scratch) {
+  check_face_size(n);
+  if (cells.size() != cell_count(n))
+    throw std::invalid_argument("cubemap encoding: " + std::to_string(cells.size()) +
+                                " cells, expected 6·N² = " + std::to_string(cell_count(n)));
+  if (!(options.threshold >= 0.0 && options.threshold <= 1.0))
+    throw std::invalid_argument("cubemap encoding: threshold outside [0, 1]");
+  double vmax = 0.0;
+  for (double v : cells) {
+    if (!(v >= 0.0 && std::isfinite(v)))
+      throw std::invalid_argument("cubemap encoding: cell value negative or not finite");
+    vmax = std::max(vmax, v);
+  }
+  EncodedReceiver result;
+  if (vmax == 0.0) {
+    out.push_back(static_cast<std::uint8_t>(CubemapCodeKind::kEmpty));
+    result.bytes = result.pulse_bytes = result.haar_bytes = 1;
+    return result;
+  }
+
+  const auto none = [](std::size_t, long) {};
+  Quantiser pulse;
+  pulse.scale = scale_at_least(vmax);
+  pulse.threshold = options.threshold;
+  const std::size_t pulse_count = for_each_kept(cells, pulse, none);
+
+  std::vector<double>& amp = scratch.coefficients;
+  amp.assign(cells.begin(), cells.end());
+  scratch.row.resize(n);
+  haar2d_forward_faces(amp, n, scratch.row);
+  to_amplitudes(amp, n);
+  Quantiser haar;
+  haar.face_mask = std::size_t(n) * n - 1;
+  haar.threshold = options.threshold;
+  double mean_max = 0.0, detail_max = 0.0;
+  for (std::size_t k = 0; k < amp.size(); ++k) {
+    if (haar.is_detail(k))
+      detail_max = std::max(detail_max, std::abs(amp[k]));
+    else
+      mean_max = std::max(mean_max, amp[k]);
+  }
+  haar.scale = scale_at_least(mean_max);
+  haar.detail_scale = scale_at_least(detail_max);
+  const std::size_t haar_count = for_each_kept(amp, haar, none);
+
+  result.pulse_bytes = cubemap_record_bytes(n, CubemapCodeKind::kPulse, pulse_count);
+  result.haar_bytes = cubemap_record_bytes(n, CubemapCodeKind::kHaar, haar_count);
+  const bool use_haar =
+      options.choice == CubemapBasisChoice::kHaar ||
+      (options.choice == CubemapBasisChoice::kSmaller && result.haar_bytes < result.pulse_bytes);
+  const std::size_t before = out.size();
+  if (use_haar) {
+    result.kind = CubemapCodeKind::kHaar;
+    result.scale = static_cast<float>(haar.scale);
+    result.detail_scale = static_cast<float>(haar.detail_scale);
+    write_record(n, result.kind, haar, amp, haar_count, out);
+  } else {
+    result.kind = CubemapCodeKind::kPulse;
+    result.scale = static_cast<float>(pulse.scale);
+    write_record(n, result.kind, pulse, cells, pulse_count, out);
+  }
+  result.bytes = out.size() - before;
+  return result;
+}
+
+EncodedReceiver encode_receiver_cubemap(int n, std::span<const double> cells,
+                                        const CubemapEncodeOptions& options,
+                                        std::vector<std::uint8_t>& out) {
+  CubemapEncodeScratch scratch;
+  return encode_receiver_cubemap(n, cells, options, out, scratch);
+}
+
+CubemapRecord parse_cubemap_record(int n, std::span<const std::uint8_t> bytes) {
+  check_face_size(n);
+  if (bytes.empty()) bad_record("truncated (no kind byte)");
+  CubemapRecord rec;
+  const std::uint8_t kind = bytes[0];
+  if (kind == static_cast<std::uint8_t>(CubemapCodeKind::kEmpty)) return rec;
+  if (kind != static_cast<std::uint8_t>(CubemapCodeKind::kPulse) &&
+      kind != static_cast<std::uint8_t>(CubemapCodeKind::kHaar))
+    bad_record("unknown kind " + std::to_string(kind));
+  rec.kind = static_cast<CubemapCodeKind>(kind);
+  const std::size_t w = cubemap_code_index_bytes(n);
+  const std::size_t scales = rec.kind == CubemapCodeKind::kHaar ? 8 : 4;
+  if (bytes.size() < 1 + scales + w) bad_record("truncated header");
+  rec.scale = std::bit_cast<float>(get_uint(bytes.data() + 1, 4));
+  if (!(rec.scale > 0.0f && std::isfinite(rec.scale))) bad_record("scale not positive and finite");
+  if (rec.kind == CubemapCodeKind::kHaar) {
+    rec.detail_scale = std::bit_cast<float>(get_uint(bytes.data() + 5, 4));
+    if (!(rec.detail_scale >= 0.0f && std::isfinite(rec.detail_scale)))
+      bad_record("detail scale negative or not finite");
+  }
+  rec.count = get_uint(bytes.data() + 1 + scales, w);
+  if (rec.count == 0 || rec.count > cell_count(n)) bad_record("entry count out of range");
+  rec.bytes = cubemap_record_bytes(n, rec.kind, rec.count);
+  if (bytes.size() < rec.bytes) bad_record("truncated entries");
+  rec.indices = bytes.subspan(1 + scales + w, rec.count * w);
+  rec.values = bytes.subspan(1 + scales + w + rec.count * w, rec.count);
+  return rec;
+}
+
+std::size_t decode_receiver_cubemap(int n, std::span<const std::uint8_t> bytes,
+                                    std::span<double> cells, std::span<double> scratch) {
+  const CubemapRecord rec = parse_cubemap_record(n, bytes);
+  if (cells.size() != cell_count(n))
+    throw std::invalid_argument("cubemap decoding: output must hold 6·N² cells");
+  std::fill(cells.begin(), cells.end(), 0.0);
+  if (rec.kind == CubemapCodeKind::kPulse) {
+    for_each_entry(rec, n, [&](std::size_t k, double t) { cells[k] = t; });
+  } else if (rec.kind == CubemapCodeKind::kHaar) {
+    const std::size_t nn = std::size_t(n) * n;
+    for_each_entry(rec, n, [&](std::size_t k, double a) {
+      const std::size_t p = k % nn;
+      cells[k] = a * haar2d_support(n, static_cast<int>(p / n), static_cast<int>(p % n));
+    });
+    haar2d_inverse_faces(cells, n, scratch);
+  }
+  return rec.bytes;
+}
+
+std::vector<double> decode_receiver_cubemap(int n, std::span<const std::uint8_t> bytes) {
+  check_face_size(n);
+  std::vector<double> cells(cell_count(n)), scratch(n);
+  decode_receiver_cubemap(n, bytes, cells, scratch);
+  return cells;
+}
+
+void prepare_shell_cubemap(int n, std::span<const Rgb> radiance, ShellCubemap& shell) {
+  check_face_size(n);
+  if (radiance.size() != cell_count(n))
+    throw std::invalid_argument("shell cubemap: radiance must hold 6·N² cells");
+  shell.n = n;
+  shell.cells.assign(radiance.begin(), radiance.end());
+  shell.haar.assign(radiance.begin(), radiance.end());
+  std::vector<Rgb> row(n);
+  haar2d_forward_faces(std::span<Rgb>(shell.haar), n, std::span<Rgb>(row));
+  const std::size_t nn = std::size_t(n) * n;
+  for (std::size_t start = 0; start < shell.haar.size(); start += nn)
+    for (int r = 0; r < n; ++r)
+      for (int c = 0; c < n; ++c) shell.haar[start + r * n + c] *= haar2d_support(n, r, c);
+}
+
+ShellCubemap prepare_shell_cubemap(int n, std::span<const Rgb> radiance) {
+  ShellCubemap shell;
+  prepare_shell_cubemap(n, radiance, shell);
+  return shell;
+}
+
+Rgb dot_receiver_cubemap(std::span<const std::uint8_t> bytes, const ShellCubemap& shell) {
+  const CubemapRecord rec = parse_cubemap_record(shell.n, bytes);
+  if (rec.kind == CubemapCodeKind::kEmpty) return {};
+  const EntryValue value = entry_value(rec, shell.n);
+  const std::vector<Rgb>& table = rec.kind == CubemapCodeKind::kPulse ? shell.cells : shell.haar;
+  return cubemap_code_index_bytes(shell.n) == 2 ? sparse_dot<2>(rec, table, value)
+                                                : sparse_dot<4>(rec, table, value);
+}
+
+void add_receiver(CubemapEncodingStats& stats, const EncodedReceiver& receiver) {
+  ++stats.receivers;
+  stats.bytes += receiver.bytes;
+  stats.all_pulse_bytes += receiver.pulse_bytes;
+  stats.all_haar_bytes += receiver.haar_bytes;
+  switch (receiver.kind) {
+    case CubemapCodeKind::kEmpty:
+      ++stats.empty;
+      break;
+    case CubemapCodeKind::kPulse:
+      ++stats.pulse;
+      stats.pulse_bytes += receiver.bytes;
+      break;
+    case CubemapCodeKind::kHaar:
+      ++stats.haar;
+      stats.haar_bytes += receiver.bytes;
+      break;
+  }
+}
+
+CubemapEncodingStats cubemap_encoding_stats(int n, std::span<const std::uint8_t> records) {
+  CubemapEncodingStats stats;
+  for (std::size_t offset = 0; offset < records.size();) {
+    const CubemapRecord rec = parse_cubemap_record(n, records.subspan(offset));
+    EncodedReceiver r;
+    r.kind = rec.kind;
+    r.bytes = rec.bytes;
+    add_receiver(stats, r);
+    offset += rec.bytes;
+  }
+  stats.all_pulse_bytes = stats.all_haar_bytes = 0;
+  return stats;
+}
+
+double bytes_per_receiver(const CubemapEncodingStats& stats) {
+  return stats.receivers == 0 ? 0.0 : static_cast<double>(stats.bytes) / stats.receivers;
+}
+
+}  // namespace relight

@@ -1,0 +1,63 @@
+// The direct component of light through a portal (Yue et al.
+// 2009 §4.1.2 and Figure 5(a)): per receiver, a cubemap of the light arriving from the
+// portal's shell through the portal, geometry only — cell c holds
+//   t_c = ∫_{ω ∈ c, through the portal, unoccluded} cos θ_r dω,
+// so that the irradiance from a shell of radiance L is E = Σ_c t_c · L_c. Per receiver:
+// points sampled on the portal (the triangle by its solid angle seen from the receiver, the
+// point uniformly on it; no rays) find the cells the portal covers, widened by their
+// neighbours; then each such cell is integrated over its own directions — about
+// `samples_per_cell` jittered sub-cells (k×k), each direction traced once through the portal
+// (it must meet this portal first) and once against opaque geometry to infinity, which checks
+// the visibility of the portal and the paper's *backward occlusion* (the continuation past
+// the portal must reach the shell) together. Cells whose four corners all see the portal are
+// inside the window's outline and need no more; cells the outline crosses are traced on a
+// 4× finer grid. So a cell inside the window carries no sampling noise from the outline — the
+// sun, which the shell puts in one cell, lights neighbouring receivers alike — and only the
+// outline is noisy, on the finer scale. Each cubemap is stored in the smaller of pulse or
+// per-face Haar, 8-bit (sources/portal/cubemap_encoding.h).
+//
+// The same directions give the response to each SH basis Y_k (l < sh_order) as direct
+// irradiance columns for the bounce solver (the indirect component, §4.1.1): where the
+// paper shoots a photon map per basis, here every basis shares these rays and the gather
+// operator's.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "engine/receivers.h"
+#include "sources/portal/cubemap_encoding.h"
+#include "sources/portal/portal_geometry.h"
+#include "trace/traced_scene.h"
+
+namespace relight {
+
+struct PortalDirectSettings {
+  int face_size = 32;
+  int sh_order = 6;
+  int samples_per_cell = 4;  // directions per cell inside the window (k×k, k = round(√·))
+  int min_samples = 64;      // points on the portal to find its cells, at least
+  std::uint64_t seed = 1;
+};
+
+struct PortalDirect {
+  int face_size = 32;
+  std::vector<std::uint8_t> records;   // one cubemap record per receiver, back to back
+  std::vector<std::uint64_t> offsets;  // receivers + 1: record r is [offsets[r], offsets[r+1])
+  CubemapEncodingStats stats;
+  Eigen::MatrixXf sh_columns;  // receivers × sh_count(order): direct E for radiance Y_k
+  Vec3 outward;                // unit: the side of the portal the light comes from
+  std::uint64_t rays = 0;
+  std::uint64_t samples = 0;
+};
+
+// `skip[r]` != 0 leaves receiver r empty (glass vertices). `ray_points` are
+// receiver_ray_points(receivers, mesh).
+PortalDirect compute_portal_direct(const Receivers& receivers, const std::vector<Vec3>& ray_points,
+                                   const std::vector<std::uint8_t>& skip, const PreparedMesh& mesh,
+                                   const TracedScene& traced, const PortalGeometry& portal,
+                                   const PortalDirectSettings& settings, bool progress);
+
+}  // namespace relight

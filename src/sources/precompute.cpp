@@ -1,0 +1,75 @@
+#include "sources/precompute.h"
+
+#include <array>
+#include <chrono>
+
+#include "engine/gather_operator.h"
+#include "trace/traced_scene.h"
+
+namespace relight {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::vector<std::uint32_t> triangle_portals(const Scene& scene, const PreparedMesh& mesh) {
+  const std::vector<int> portal_of_material = scene.portal_of_material();
+  std::vector<std::uint32_t> out;
+  out.reserve(mesh.triangle_material.size());
+  for (std::uint32_t m : mesh.triangle_material) {
+    const int p = portal_of_material.at(m);
+    std::uint32_t code = 0;  // opaque
+    if (p >= 0) {
+      code = static_cast<std::uint32_t>(p + 1);
+    } else if (scene.materials[m].portal) {
+      code = kGlassOutsidePortals;
+    }
+    out.push_back(code);
+  }
+  return out;
+}
+
+}  // namespace
+
+Precomputed precompute_transfer(const Scene& scene, const PrecomputeOptions& options) {
+  Precomputed out;
+  out.sh_order = scene.precompute.sh_order;
+  out.direct_mode = scene.precompute.direct;
+  out.portal_sh_order = scene.precompute.portal_sh_order;
+
+  const auto start = std::chrono::steady_clock::now();
+  out.mesh = prepare_scene_mesh(scene);
+  out.receivers = make_receivers(scene, out.mesh);
+  out.triangle_portal = triangle_portals(scene, out.mesh);
+  const TracedScene traced = build_traced_scene(out.mesh, scene.materials);
+  out.phases.push_back({"prepare", seconds_since(start), 0});
+
+  const GatherOperator gather =
+      build_gather_operator(out.receivers, out.mesh, traced, scene.precompute.gather_rays,
+                            scene.precompute.sensor_gather_rays, options.seed, options.progress);
+  out.phases.push_back({"gather operator", gather.seconds, gather.rays});
+
+  // The source kinds, in the order their columns are registered and their direct phases run.
+  LuminairePrecompute luminaires(scene, options.opening_samples);
+  PortalPrecompute portals(scene, options.seed);
+  NearfieldPrecompute nearfield(scene, options.seed);
+  const std::array<SourcePrecompute*, 3> sources{&luminaires, &portals, &nearfield};
+
+  const std::vector<Vec3> ray_points = receiver_ray_points(out.receivers, out.mesh);
+  const SourceContext context{out.receivers, ray_points, out.mesh, traced, options.progress};
+  BounceSettings bounce;
+  bounce.tolerance = scene.precompute.tolerance;
+  bounce.max_bounces = scene.precompute.max_bounces;
+  SourcesResult result = precompute_sources(context, gather, bounce, sources);
+  out.bounces = result.bounces;
+  for (PhaseTiming& t : result.phases) out.phases.push_back(std::move(t));
+  out.luminaires = std::move(luminaires.transfers);
+  out.portals = std::move(portals.transfers);
+  out.warnings = std::move(portals.warnings);
+  out.nearfield = std::move(nearfield.result);
+  return out;
+}
+
+}  // namespace relight

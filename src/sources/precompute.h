@@ -1,0 +1,49 @@
+// `relight precompute`: everything a static scene needs so that every later change of a
+// source's state is a weighted sum (ARCHITECTURE §1). The engine prepares the mesh, the
+// receivers and the gather operator; each source module (sources/luminaire, sources/portal,
+// sources/nearfield) computes its direct transfer and registers the columns it bounces; all
+// bounce together through one gather operator (rays traced once, ARCHITECTURE §4.3).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "engine/receivers.h"
+#include "engine/source_precompute.h"
+#include "scene/mesh_preparation.h"
+#include "scene/scene.h"
+#include "sources/luminaire/luminaire_precompute.h"
+#include "sources/nearfield/nearfield_precompute.h"
+#include "sources/portal/portal_precompute.h"
+
+namespace relight {
+
+struct PrecomputeOptions {
+  bool progress = true;
+  std::uint64_t seed = 1;
+  int opening_samples = 16;  // points on a luminous opening for fractional visibility
+};
+
+inline constexpr std::uint32_t kGlassOutsidePortals = 0xFFFFFFFFu;
+
+struct Precomputed {
+  PreparedMesh mesh;
+  // Per mesh triangle: 0 opaque, p + 1 for glass of portal p, kGlassOutsidePortals for glass
+  // of a "portal": true material that no portal lists (an opening to darkness).
+  std::vector<std::uint32_t> triangle_portal;
+  Receivers receivers;
+  int sh_order = 8;
+  std::string direct_mode = "exact";
+  int bounces = 0;
+  std::vector<LuminaireTransfer> luminaires;  // in scene order
+  int portal_sh_order = 6;
+  std::vector<PortalTransfer> portals;  // in scene order
+  NearfieldTransfer nearfield;          // sh_order 0 when the scene has no emitters
+  std::vector<PhaseTiming> phases;
+  std::vector<std::string> warnings;  // e.g. portals too large for their shells (§6)
+};
+
+Precomputed precompute_transfer(const Scene& scene, const PrecomputeOptions& options);
+
+}  // namespace relight

@@ -1,0 +1,23 @@
+// The stored transfer of every source of a scene as the run time reads it: one view per
+// source module (luminaires, portals), in scene order. Built by store/transfer_file.h from a
+// .rlt or from a precompute in memory.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "sources/luminaire/luminaire_transfer_view.h"
+#include "sources/portal/portal_transfer_view.h"
+
+namespace relight {
+
+struct TransferView {
+  std::size_t receivers = 0;
+  int sh_order = 8;
+  bool direct_sh_mode = false;
+  std::vector<LuminaireTransferView> luminaires;  // scene order
+  int portal_sh_order = 6;
+  std::vector<PortalTransferView> portals;  // scene order
+};
+
+}  // namespace relight
