@@ -1,10 +1,13 @@
-// `relight bench SCENE.rlt [--frames N] [--sky]`: times the run-time weighted sum and, in
+// `relight bench SCENE.rlt [--frames N] [--sky | --emitters]`: times the run-time weighted sum
+// and, in
 // the same run, a plain parallel streaming read of as many bytes, so the ratio
 // effective_gbps / stream_gbps speaks for itself on a shared machine. One JSON line.
 // A frame is a lighting change and the weighted sum: every dimmer toggled, or with
 // --sky only the exterior (the sun moves a minute per frame, a map turns a degree, a uniform
-// sky changes luminance), which rebuilds each portal's shell (the paper's Table 1 case);
-// only the kind of source that changed is summed again (runtime/relighter.h).
+// sky changes luminance), which rebuilds each portal's shell (the paper's Table 1 case), or with
+// --emitters only the near-field emitters (each moves 1 cm: sampling, bounce and their sum,
+// with sampling_ms and bounce_ms); only the kind of source that changed is summed again
+// (runtime/relighter.h).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -29,6 +32,7 @@ struct BenchArgs {
   std::string rlt;
   int frames = 50;
   bool sky = false;
+  bool emitters = false;
 };
 
 // The next frame's sky: a small change of the kind a designer scrubbing time makes.
@@ -80,12 +84,19 @@ int run_bench(const BenchArgs& args) {
   if (args.sky && state.portals.empty()) {
     fail_input(args.rlt, "--sky needs a scene with portals (windows)");
   }
+  if (args.emitters && state.emitters.empty()) {
+    fail_input(args.rlt, "--emitters needs a scene with near-field emitters");
+  }
+  if (args.sky && args.emitters) fail_input(args.rlt, "--sky and --emitters: one at a time");
   // A frame: a lighting change (new weights, new shells) and the full weighted sum.
   relighter.relight(irradiance);  // warm
-  std::vector<double> shell_ms;
+  std::vector<double> shell_ms, sampling_ms, bounce_ms;
   const double frame_ms = median(time_ms(args.frames, [&](int i) {
     if (args.sky) {
       for (PortalState& p : state.portals) advance_sky(p.environment, i);
+    } else if (args.emitters) {
+      // A designer dragging the emitters: 1 cm a frame, back and forth.
+      for (EmitterState& e : state.emitters) e.translate.x += (i % 2 == 0) ? 0.01 : -0.01;
     } else {
       for (LuminaireState& l : state.luminaires) l.dimmer = 0.5 + 0.5 * ((i % 2) == 0);
     }
@@ -94,6 +105,11 @@ int run_bench(const BenchArgs& args) {
     double shells = 0;
     for (std::size_t p = 0; p < state.portals.size(); ++p) shells += relighter.shell_seconds(p);
     shell_ms.push_back(shells * 1e3);
+    if (const EmitterLighting* e = relighter.emitters()) {
+      const NearfieldResult& s = e->last_sampling();
+      sampling_ms.push_back((s.sampling_seconds + s.reconstruction_seconds) * 1e3);
+      bounce_ms.push_back(e->last_bounce_seconds() * 1e3);
+    }
   }));
 
   // What a frame of this kind reads and writes: the transfer of the sources that changed
@@ -118,7 +134,7 @@ int run_bench(const BenchArgs& args) {
 
   const double effective = bytes / (frame_ms * 1e-3) / 1e9;
   const double streaming = buffer.size() * sizeof(std::uint64_t) / (stream_ms * 1e-3) / 1e9;
-  nlohmann::json line = {{"mode", args.sky ? "sky" : "luminaires"},
+  nlohmann::json line = {{"mode", args.sky ? "sky" : (args.emitters ? "emitters" : "luminaires")},
                          {"receivers", relighter.receivers()},
                          {"luminaires", relit.scene().luminaires.size()},
                          {"portals", state.portals.size()},
@@ -131,6 +147,11 @@ int run_bench(const BenchArgs& args) {
                          {"ratio", effective / streaming},
                          {"fps", 1e3 / frame_ms}};
   if (args.sky) line["shell_ms"] = median(shell_ms);
+  if (args.emitters) {
+    line["emitters"] = state.emitters.size();
+    line["sampling_ms"] = median(sampling_ms);
+    line["bounce_ms"] = median(bounce_ms);
+  }
   std::cout << line.dump() << "\n";
   return 0;
 }
@@ -143,6 +164,8 @@ void add_bench_command(CLI::App& app, Action& action) {
   cmd->add_option("scene", args->rlt, "precomputed .rlt file")->required();
   cmd->add_option("--frames", args->frames, "frames to time")->check(CLI::Range(1, 100000));
   cmd->add_flag("--sky", args->sky, "change only the sky seen through the portals each frame");
+  cmd->add_flag("--emitters", args->emitters,
+                "move only the near-field emitters each frame (sampling, bounce and sum)");
   cmd->callback([args, &action] { action = [args] { return run_bench(*args); }; });
 }
 

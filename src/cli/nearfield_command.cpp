@@ -2,7 +2,8 @@
 //   [--method adaptive|icp|truth] [--face-size K] [--scene-occlusion] [-o IMAGE] [view options]`
 // Lights a precomputed scene's receivers by its near-field emitters as the lighting state
 // places them (issue 5, Sun 2005; sources/nearfield/nearfield_lighting.h), with the
-// chosen sampling method, and compares with the truth (a sample at every receiver). Prints one
+// chosen sampling method, and compares with the truth (a sample at every receiver), on the
+// direct light the sampling decides (interreflection, when on, is the same for both). Prints one
 // JSON line: method, epsilon, max_samples, receivers, samples, evaluations, placement_s,
 // sampling_s, reconstruction_s, truth_s, rmse (cd/m², vertex radiance ρE/π, RGB) and
 // rmse_relative (rmse over the truth's RMS radiance). With -o, renders the receivers' radiance.
@@ -16,11 +17,10 @@
 #include "cli/commands.h"
 #include "cli/view_args.h"
 #include "common/input_error.h"
-#include "material/lambert.h"
 #include "math/sh.h"
 #include "render/camera.h"
 #include "render/vertex_shading.h"
-#include "runtime/lighting_state.h"
+#include "runtime/relit_scene.h"
 #include "sources/nearfield/nearfield_lighting.h"
 #include "store/transfer_file.h"
 
@@ -37,29 +37,14 @@ struct NearfieldArgs {
   ViewArgs view;
 };
 
-// Receivers: the mesh vertices, then the sensor points (the .rlt's receiver order).
-std::vector<Vec3> receiver_positions(const TransferFile& t) {
-  std::vector<Vec3> r(t.positions.begin(),
-                      t.positions.begin() + static_cast<std::ptrdiff_t>(t.vertex_count));
-  for (const SensorSet& s : t.scene.sensors) r.insert(r.end(), s.points.begin(), s.points.end());
-  return r;
-}
-
-std::vector<float> radiance_of(const TransferFile& t, const std::vector<float>& irradiance) {
-  std::vector<float> l(3 * t.vertex_count);
-  for (std::size_t i = 0; i < l.size(); ++i) {
-    l[i] = static_cast<float>(lambertian_radiance(t.vertex_albedo[i], irradiance[i]));
-  }
-  return l;
-}
-
 int run_nearfield(const NearfieldArgs& args) {
-  const TransferFile t = open_transfer_file(args.rlt);
+  RelitScene relit(args.rlt, args.state.empty() ? std::nullopt
+                                                : std::optional<std::filesystem::path>(args.state));
+  const TransferFile& t = relit.transfer();
   if (t.scene.emitters.empty()) {
     fail_input(args.rlt, "the scene has no emitters (issue 5: \"emitters\" in the scene file)");
   }
-  const LightingState state = args.state.empty() ? default_lighting_state(t.scene)
-                                                 : load_lighting_state(t.scene, args.state);
+  const LightingState& state = relit.state();
   NearfieldSettings settings;
   settings.method = parse_nearfield_method(args.method);
   settings.epsilon = args.epsilon;
@@ -67,15 +52,14 @@ int run_nearfield(const NearfieldArgs& args) {
   settings.face_size = args.face_size;
   settings.scene_occlusion = args.scene_occlusion;
 
-  std::vector<Triangle> opaque;
-  for (const std::uint32_t i : t.opaque_triangles) opaque.push_back(t.triangles[i]);
-  const NearfieldScene scene(receiver_positions(t), t.nearfield_sh_order, t.positions, opaque);
+  const NearfieldTransferView& nf = t.view.nearfield;
+  const NearfieldScene scene(nf.receiver_positions, nf.sh_order, t.positions, nf.opaque_triangles);
   const PlacedEmitters emitters = place_emitters(t.scene.emitters, state.emitters);
-  const std::size_t k = static_cast<std::size_t>(sh_count(t.nearfield_sh_order));
+  const std::size_t k = static_cast<std::size_t>(sh_count(nf.sh_order));
 
   const auto shade = [&](const NearfieldResult& r) {
     std::vector<float> e(3 * scene.receiver_count());
-    nearfield_irradiance(t.nearfield_transfer, t.nearfield_interreflected, r.sh, k, e);
+    nearfield_irradiance(nf.transfer, r.sh, k, e);
     return e;
   };
   const NearfieldResult result = scene.light(emitters, settings);
@@ -87,7 +71,8 @@ int run_nearfield(const NearfieldArgs& args) {
                                     : scene.light(emitters, truth_settings);
   const std::vector<float> reference =
       settings.method == NearfieldMethod::kTruth ? irradiance : shade(truth);
-  const std::vector<float> l = radiance_of(t, irradiance), l_truth = radiance_of(t, reference);
+  const std::vector<float> l = relit.vertex_radiance(irradiance),
+                           l_truth = relit.vertex_radiance(reference);
   const std::vector<float> zero(l.size(), 0.0f);
   const double rmse = rms_difference(l, l_truth, t.vertex_count);
   const double truth_rms = rms_difference(l_truth, zero, t.vertex_count);
@@ -98,9 +83,9 @@ int run_nearfield(const NearfieldArgs& args) {
         args.view.camera.empty() ? std::nullopt : std::optional<std::string>(args.view.camera),
         t.bounds());
     const PinholeCamera pinhole = make_pinhole_camera(camera, args.view.width, args.view.height);
-    const RayTracer tracer(t.positions, opaque, t.opaque_triangles);
     const ShadedImages images = shade_vertices(
-        pinhole, {tracer, t.positions, t.triangles, t.vertex_albedo, irradiance, {}, {}});
+        pinhole,
+        {relit.opaque_tracer(), t.positions, t.triangles, t.vertex_albedo, irradiance, {}, {}});
     const DisplayOptions display = display_options(args.view);
     const bool lux = display.false_color && display.false_color->quantity == Quantity::kIlluminance;
     write_image(args.view.output, lux ? images.illuminance : images.luminance, display);

@@ -18,7 +18,9 @@
 #include "light/luminaire_frame.h"
 #include "render/reference_tracer.h"
 #include "render/sensor_report.h"
+#include "runtime/lighting_state.h"
 #include "scene/scene_loader.h"
+#include "sources/nearfield/emitter_placement.h"
 #include "trace/traced_scene.h"
 
 namespace relight {
@@ -31,6 +33,7 @@ struct ReferenceArgs {
   std::string sensors_out;
   ViewArgs view;
   std::uint64_t seed = 1;
+  std::string state;
 };
 
 void print_rate(const char* what, const ReferenceStats& s) {
@@ -41,8 +44,20 @@ void print_rate(const char* what, const ReferenceStats& s) {
 
 }  // namespace
 
-void run_reference(const Scene& scene, const ReferenceRequest& request) {
+void run_reference(const Scene& scene_file, const ReferenceRequest& request) {
   const auto start = std::chrono::steady_clock::now();
+  const LightingState state = request.state ? load_lighting_state(scene_file, *request.state)
+                                            : default_lighting_state(scene_file);
+  const Scene scene = scene_with_state(scene_file, state);
+  for (std::size_t p = 0; p < scene.portals.size(); ++p) {
+    if (scene.portals[p].frost_deg > 0) {
+      std::printf("reference: portal \"%s\": frosted glass is not modelled (traced as clear)\n",
+                  scene.portals[p].name.c_str());
+    }
+  }
+  if (!scene.exterior.empty()) {
+    std::printf("reference: exterior objects are not modelled (the environment is unblocked)\n");
+  }
   const std::vector<PlacedLuminaire> luminaires = place_luminaires(scene);
   // The reference traces the surfaces as they are: no subdivision for receivers.
   PreparationSettings preparation;
@@ -56,7 +71,8 @@ void run_reference(const Scene& scene, const ReferenceRequest& request) {
     environments.push_back(load_environment(portal.environment));
   }
   const ReferenceScene ref =
-      make_reference_scene(scene, mesh, traced, luminaires, std::move(environments));
+      make_reference_scene(scene, mesh, traced, luminaires, std::move(environments),
+                           place_emitters(scene.emitters, state.emitters));
   ReferenceSettings settings;
   settings.spp = request.spp;
   settings.seed = request.seed;
@@ -108,6 +124,8 @@ void add_reference_command(CLI::App& app, Action& action) {
   cmd->add_option("--spp", args->request.spp, "samples per sensor and per pixel")
       ->check(CLI::Range(1, 1 << 24));
   cmd->add_option("--seed", args->seed, "random seed (results are deterministic per seed)");
+  cmd->add_option("--state", args->state,
+                  "lighting state JSON (luminaires, windows, emitters) to trace the scene under");
   cmd->add_option("--sensors-out", args->sensors_out, "write sensor illuminance CSV here");
   add_view_options(*cmd, args->view);
   cmd->add_flag("!--no-progress", args->request.progress, "no progress bar");
@@ -115,6 +133,7 @@ void add_reference_command(CLI::App& app, Action& action) {
     action = [args] {
       ReferenceRequest request = args->request;
       request.seed = args->seed;
+      if (!args->state.empty()) request.state = args->state;
       if (!args->sensors_out.empty()) request.sensors_out = args->sensors_out;
       request.width = args->view.width;
       request.height = args->view.height;

@@ -66,7 +66,7 @@ Rgb environment_sample(const ExteriorView& view, std::size_t p, Vec3 origin, Vec
   const Vec3 w = d / dist;
   const double cos_x = dot(n, w), cos_y = std::abs(dot(y.normal, w));
   if (cos_x <= 0 || cos_y <= 0) return {};
-  const Rgb radiance = portal.environment.diffuse_radiance(w);
+  const Rgb radiance = portal.tint * portal.environment.diffuse_radiance(w);
   if (max_component(radiance) <= 0) return {};
   // x sees y, y is the first portal crossing, and the exterior lies beyond y.
   ++rays;
@@ -90,7 +90,7 @@ Rgb sun_sample(const ExteriorView& view, std::size_t p, Vec3 origin, Vec3 n, Pcg
     if (escape_portal(view, {origin, w}, rays) != static_cast<std::int32_t>(p)) continue;
     e += 0.5 * sun->luminance * sun->solid_angle * cos_x;
   }
-  return {e, e, e};
+  return view.portals.portals[p].tint * Rgb{e, e, e};
 }
 
 }  // namespace
@@ -105,7 +105,8 @@ ReferencePortals make_reference_portals(const Scene& scene, const PreparedMesh& 
   ReferencePortals out;
   const std::vector<int> material_portal = scene.portal_of_material();  // −1 = kNoPortal
   for (std::size_t p = 0; p < scene.portals.size(); ++p) {
-    out.portals.push_back({scene.portals[p].name, std::move(environments[p]), {}, {}});
+    out.portals.push_back(
+        {scene.portals[p].name, std::move(environments[p]), scene.portals[p].tint, {}, {}});
   }
   out.triangle_portal.reserve(mesh.triangles.size());
   for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {

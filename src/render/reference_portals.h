@@ -41,6 +41,7 @@ namespace relight {
 struct ReferencePortal {
   std::string name;
   Environment environment;
+  Rgb tint{1, 1, 1};                     // the glass's transmittance per channel
   std::vector<std::uint32_t> triangles;  // prepared-mesh triangle ids
   std::vector<double> cumulative_area;   // running sums of the triangles' areas, m²
   double area() const { return cumulative_area.empty() ? 0.0 : cumulative_area.back(); }

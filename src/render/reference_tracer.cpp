@@ -104,6 +104,13 @@ Rgb daylight_illuminance(PathContext& ctx, Vec3 p, Vec3 n) {
   return portal_illuminance(view, offset_from_surface(p, n), n, ctx.rng, ctx.rays);
 }
 
+// Near-field emitters at a surface point (render/reference_emitters.h).
+Rgb emitters_illuminance(PathContext& ctx, Vec3 p, Vec3 n) {
+  if (ctx.ref.emitters.empty()) return {};
+  return emitter_illuminance(ctx.ref.emitters, ctx.ref.traced.opaque, offset_from_surface(p, n), n,
+                             ctx.rng, ctx.rays);
+}
+
 Vec3 cosine_direction(Vec3 n, Pcg32& rng) {
   const double u1 = rng.next_double(), u2 = rng.next_double();
   return frame_from_normal(n).to_world(sample_cosine_hemisphere(u1, u2));
@@ -119,7 +126,8 @@ Rgb incident_luminance(PathContext& ctx, Vec3 origin, Vec3 dir) {
     // L = ρ/π E_direct + ρ · L_in(next): next-event estimation (luminaires and the
     // exterior through portals), then continue; a continuation that escapes adds nothing.
     const Rgb e = direct_illuminance(ctx, s.position, s.normal) +
-                  daylight_illuminance(ctx, s.position, s.normal);
+                  daylight_illuminance(ctx, s.position, s.normal) +
+                  emitters_illuminance(ctx, s.position, s.normal);
     result += throughput * lambertian_radiance(s.albedo, e);
     throughput = throughput * s.albedo;
     const double survive = std::min(1.0, max_component(s.albedo));
@@ -141,8 +149,10 @@ Rgb indirect_sample(PathContext& ctx, Vec3 p, Vec3 n) {
 ReferenceScene make_reference_scene(const Scene& scene, const PreparedMesh& mesh,
                                     const TracedScene& traced,
                                     const std::vector<PlacedLuminaire>& luminaires,
-                                    std::vector<Environment> environments) {
-  ReferenceScene ref{mesh, traced, luminaires, {}, {}, {}};
+                                    std::vector<Environment> environments,
+                                    PlacedEmitters emitters) {
+  ReferenceScene ref{mesh, traced, luminaires, {}, {}, {}, {}};
+  ref.emitters = make_reference_emitters(std::move(emitters));
   ref.portals = make_reference_portals(scene, mesh, std::move(environments));
   for (std::size_t j = 0; j < luminaires.size(); ++j) {
     const Luminaire& l = scene.luminaires.at(j);
@@ -187,6 +197,7 @@ std::vector<Rgb> reference_sensor_illuminance(const Scene& scene, const Referenc
       for (int s = 0; s < settings.spp; ++s) {
         sampled += direct_illuminance(ctx, points[i].p, points[i].n, Sources::kOpenings) +
                    daylight_illuminance(ctx, points[i].p, points[i].n) +
+                   emitters_illuminance(ctx, points[i].p, points[i].n) +
                    indirect_sample(ctx, points[i].p, points[i].n);
       }
       result[i] = direct + sampled / settings.spp;
@@ -226,13 +237,14 @@ ReferenceImages reference_render(const PinholeCamera& camera, const ReferenceSce
             // Looking out through a portal: the environment, sun disc included.
             const std::int32_t p = escape_portal(view, ray, ctx.rays);
             if (p == kNoPortal) continue;
-            l_sum += ref.portals.portals[static_cast<std::size_t>(p)].environment.radiance(
-                ray.direction);
+            const ReferencePortal& portal = ref.portals.portals[static_cast<std::size_t>(p)];
+            l_sum += portal.tint * portal.environment.radiance(ray.direction);
             ++exterior;
             continue;
           }
           const Rgb e = direct_illuminance(ctx, hit.position, hit.normal) +
                         daylight_illuminance(ctx, hit.position, hit.normal) +
+                        emitters_illuminance(ctx, hit.position, hit.normal) +
                         indirect_sample(ctx, hit.position, hit.normal);
           e_sum += e;
           l_sum += lambertian_radiance(hit.albedo, e);

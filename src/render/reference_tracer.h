@@ -17,6 +17,8 @@
 // a sun-cone sample for a sky with a sun); continuation rays that leave through a portal
 // add nothing, so no light is counted twice. Camera rays that look out through a portal
 // see the environment (sun included) in the luminance image.
+// Near-field emitters (render/reference_emitters.h): one next-event estimate per sample
+// wherever the luminaires get one; camera rays do not see the emitters themselves.
 #pragma once
 
 #include <cstdint>
@@ -26,6 +28,7 @@
 #include "light/luminaire_frame.h"
 #include "math/rgb.h"
 #include "render/camera.h"
+#include "render/reference_emitters.h"
 #include "render/reference_portals.h"
 #include "scene/mesh_preparation.h"
 #include "scene/scene.h"
@@ -57,6 +60,7 @@ struct ReferenceScene {
   std::vector<Rgb> triangle_albedo;
   std::vector<ReferenceOpening> openings;  // one per luminaire
   ReferencePortals portals;
+  ReferenceEmitters emitters;  // near-field emitters as placed (render/reference_emitters.h)
 };
 
 // `environments`: one per scene portal, in order (see make_reference_portals); may stay
@@ -64,7 +68,8 @@ struct ReferenceScene {
 ReferenceScene make_reference_scene(const Scene& scene, const PreparedMesh& mesh,
                                     const TracedScene& traced,
                                     const std::vector<PlacedLuminaire>& luminaires,
-                                    std::vector<Environment> environments = {});
+                                    std::vector<Environment> environments = {},
+                                    PlacedEmitters emitters = {});
 
 // Rays cast (closest-hit and shadow) and wall time of one estimate.
 struct ReferenceStats {

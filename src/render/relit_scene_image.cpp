@@ -2,6 +2,7 @@
 
 #include "math/cubemap.h"
 #include "render/pixel_direct.h"
+#include "sources/nearfield/emitter_direct.h"
 
 namespace relight {
 
@@ -26,10 +27,16 @@ ShadedImages render_relit_scene(RelitScene& scene, const Camera& camera, int wid
   const std::vector<float> indirect = scene.indirect_irradiance();
   const std::vector<PixelLight> lights = pixel_lights(t.scene, lit);
   const std::vector<PixelSun> suns = pixel_suns(lit, t.scene.portals.size());
+  const EmitterLighting* emitters = lit.emitters();
   return shade_vertices(pinhole, {occluders, t.positions, t.triangles, t.vertex_albedo, indirect,
                                   [&](Vec3 p, Vec3 n) {
-                                    return exact_direct_irradiance(occluders, lights, p, n) +
-                                           sun_irradiance(occluders, windows, suns, p, n);
+                                    Rgb e = exact_direct_irradiance(occluders, lights, p, n) +
+                                            sun_irradiance(occluders, windows, suns, p, n);
+                                    if (emitters != nullptr) {
+                                      e += emitter_direct_irradiance(emitters->placed(), &occluders,
+                                                                     p, n);
+                                    }
+                                    return e;
                                   },
                                   background});
 }

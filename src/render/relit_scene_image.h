@@ -1,7 +1,8 @@
 // An image of a relit scene through a camera: per-vertex radiance interpolated over the
 // triangles (Gouraud-equivalent), or with `pixel_direct` the direct light evaluated exactly
-// at each pixel's surface point (render/pixel_direct.h) and only the interreflected light
-// interpolated. Windows show the current shell of their portal.
+// at each pixel's surface point (render/pixel_direct.h; near-field emitters as area lights,
+// sources/nearfield/emitter_direct.h) and only the interreflected light interpolated. Windows show
+// the current shell of their portal.
 #pragma once
 
 #include "render/camera.h"

@@ -1,6 +1,7 @@
 #include "runtime/lighting_state.h"
 
 #include <cmath>
+#include <stdexcept>
 
 #include "common/input_error.h"
 #include "light/color_temperature.h"
@@ -17,12 +18,7 @@ LightingState default_lighting_state(const Scene& scene) {
   for (const Portal& p : scene.portals) {
     s.portals.push_back(portal_state(p, scene.exterior.size()));
   }
-  for (const Emitter& e : scene.emitters) {
-    EmitterState state;
-    state.luminance = e.luminance;
-    state.color = e.color;
-    s.emitters.push_back(state);
-  }
+  for (const Emitter& e : scene.emitters) s.emitters.push_back(emitter_state(e));
   return s;
 }
 
@@ -189,6 +185,29 @@ LightingState load_lighting_state(const Scene& scene, const std::filesystem::pat
   apply_lighting_state(state, scene, read_json_file(file), file.string(),
                        file.has_parent_path() ? file.parent_path() : std::filesystem::path("."));
   return state;
+}
+
+Scene scene_with_state(const Scene& scene, const LightingState& state) {
+  if (state.luminaires.size() != scene.luminaires.size() ||
+      state.portals.size() != scene.portals.size()) {
+    throw std::invalid_argument("scene_with_state: the state is not of this scene");
+  }
+  Scene out = scene;
+  for (std::size_t j = 0; j < out.luminaires.size(); ++j) {
+    Luminaire& l = out.luminaires[j];
+    const LuminaireState& s = state.luminaires[j];
+    l.aim = s.aim;
+    l.c0 = s.c0;
+    l.distribution = s.distribution;
+    l.color = s.color;
+    l.dimmer = s.on ? s.dimmer : 0;
+  }
+  for (std::size_t p = 0; p < out.portals.size(); ++p) {
+    out.portals[p].environment = state.portals[p].environment;
+    out.portals[p].tint = state.portals[p].tint;
+    out.portals[p].frost_deg = state.portals[p].frost_deg;
+  }
+  return out;
 }
 
 }  // namespace relight

@@ -32,4 +32,10 @@ void apply_lighting_state(LightingState& state, const Scene& scene, const nlohma
 
 LightingState load_lighting_state(const Scene& scene, const std::filesystem::path& file);
 
+// The scene as `state` lights it, for code that reads a Scene (the reference tracer): each
+// luminaire's aim, C0, distribution, colour and dimmer (0 when off), each portal's environment,
+// tint and frost. Emitters and exterior objects keep the scene's geometry: their placements
+// are the state's (place_emitters, placed_exterior).
+Scene scene_with_state(const Scene& scene, const LightingState& state);
+
 }  // namespace relight

@@ -1,6 +1,7 @@
 #include "runtime/relighter.h"
 
 #include <algorithm>
+#include <array>
 #include <stdexcept>
 
 #include <tbb/blocked_range.h>
@@ -16,19 +17,24 @@ Relighter::Relighter(TransferView transfer, const Scene& scene, RelighterSetting
           {transfer_.luminaires, transfer_.receivers, transfer_.sh_order, transfer_.direct_sh_mode},
           scene, settings.window),
       portals_({transfer_.portals, transfer_.receivers, transfer_.portal_sh_order}, scene),
-      state_(default_lighting_state(scene)),
-      terms_{Term{&luminaires_, {}}, Term{&portals_, {}}} {
+      state_(default_lighting_state(scene)) {
+  terms_.push_back({&luminaires_, {}});
+  terms_.push_back({&portals_, {}});
+  if (!scene.emitters.empty()) {
+    emitters_.emplace(transfer_.nearfield, scene, settings.emitters);
+    terms_.push_back({&*emitters_, {}});
+  }
   for (Term& term : terms_) {
     for (PartialSum& sum : term.sums) sum.values.assign(3 * transfer_.receivers, 0.0f);
   }
 }
 
 void Relighter::set_state(const LightingState& state) {
-  const bool luminaires_changed = luminaires_.set_state(state.luminaires);
-  const bool portals_changed = portals_.set_state(state.portals);
-  for (const auto& [term, changed] :
-       {std::pair{&terms_[0], luminaires_changed}, std::pair{&terms_[1], portals_changed}}) {
-    if (changed) term->sums[0].valid = term->sums[1].valid = false;
+  const bool changed[3] = {luminaires_.set_state(state.luminaires),
+                           portals_.set_state(state.portals),
+                           emitters_ && emitters_->set_state(state.emitters)};
+  for (std::size_t t = 0; t < terms_.size(); ++t) {
+    if (changed[t]) terms_[t].sums[0].valid = terms_[t].sums[1].valid = false;
   }
   state_ = state;
 }
@@ -39,8 +45,9 @@ void Relighter::relight(std::span<float> out, bool include_direct) {
   // Each kind of source keeps its own sum (per direct mode), recomputed only after a change
   // to it: a frame in which only the sky moves reads the portals' transfer, not the
   // luminaires', and the other way round.
+  if (emitters_) emitters_->update();  // its sampling and bounce, if its state changed
   const std::size_t slot = include_direct ? 1 : 0;
-  std::array<bool, std::tuple_size_v<decltype(terms_)>> redo{};
+  std::array<bool, 3> redo{};
   for (std::size_t t = 0; t < terms_.size(); ++t) redo[t] = !terms_[t].sums[slot].valid;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, block_count(n)), [&](const auto& blocks) {
     for (std::size_t b = blocks.begin(); b != blocks.end(); ++b) {

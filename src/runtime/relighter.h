@@ -1,13 +1,13 @@
 // The run-time half of precomputed transfer (ARCHITECTURE §1, §4.6): lighting state → small
 // weight vectors → one weighted sum over the stored transfer → irradiance per receiver. Each
 // source kind is one term (engine/source_term.h) owned by its module: the luminaires
-// (sources/luminaire/luminaire_lighting.h) and the portals (sources/portal/portal_lighting.h).
+// (sources/luminaire/luminaire_lighting.h), the portals (sources/portal/portal_lighting.h) and
+// the near-field emitters (sources/nearfield/emitter_lighting.h).
 // The Relighter hands each kind its part of the state, keeps a partial sum per kind, and
 // sums a kind again only after its state changed; relight() allocates nothing and uses every
 // core.
 #pragma once
 
-#include <array>
 #include <cstddef>
 #include <optional>
 #include <span>
@@ -18,6 +18,7 @@
 #include "runtime/lighting_state.h"
 #include "scene/scene.h"
 #include "sources/luminaire/luminaire_lighting.h"
+#include "sources/nearfield/emitter_lighting.h"
 #include "sources/portal/portal_lighting.h"
 #include "sources/transfer_view.h"
 
@@ -25,6 +26,7 @@ namespace relight {
 
 struct RelighterSettings {
   ShWindow window = ShWindow::kSigma;  // applied to the SH weights of every luminaire
+  EmitterLightingSettings emitters;    // sampling of near-field emitters
 };
 
 class Relighter {
@@ -41,7 +43,8 @@ class Relighter {
   // Irradiance per receiver, RGB interleaved: out.size() == 3 · receivers. Without
   // direct light, what renderers that evaluate direct light per pixel still need: the
   // interreflected light and the portals' direct skylight, but not the luminaires' direct
-  // light nor the portals' sharp suns (see sharp_sun()).
+  // light, the portals' sharp suns (see sharp_sun()) nor the emitters' direct light (see
+  // emitters()).
   // Each kind of source keeps its partial sum between calls, and only the kinds whose state
   // changed since are summed again.
   void relight(std::span<float> out, bool include_direct = true);
@@ -53,6 +56,10 @@ class Relighter {
   const Shell& shell(std::size_t p) const { return portals_.portal(p).shell; }
   // Wall time of the last shell update of portal p, seconds.
   double shell_seconds(std::size_t p) const { return portals_.portal(p).seconds; }
+
+  // The near-field emitters' term, when the scene has emitters (their placement for exact
+  // direct light per pixel, the last sampling).
+  const EmitterLighting* emitters() const { return emitters_ ? &*emitters_ : nullptr; }
 
   // The current photometry of luminaire j (as loaded for its state).
   const Distribution& distribution(std::size_t j) const { return luminaires_.distribution(j); }
@@ -81,7 +88,8 @@ class Relighter {
   LuminaireLighting luminaires_;
   PortalSetLighting portals_;
   LightingState state_;
-  std::array<Term, 2> terms_;  // luminaires, portals
+  std::optional<EmitterLighting> emitters_;
+  std::vector<Term> terms_;  // luminaires, portals, emitters (when any)
   std::size_t last_frame_bytes_ = 0;
 };
 

@@ -46,7 +46,7 @@ Precomputed precompute_transfer(const Scene& scene, const PrecomputeOptions& opt
   const TracedScene traced = build_traced_scene(out.mesh, scene.materials);
   out.phases.push_back({"prepare", seconds_since(start), 0});
 
-  const GatherOperator gather =
+  GatherOperator gather =
       build_gather_operator(out.receivers, out.mesh, traced, scene.precompute.gather_rays,
                             scene.precompute.sensor_gather_rays, options.seed, options.progress);
   out.phases.push_back({"gather operator", gather.seconds, gather.rays});
@@ -69,6 +69,9 @@ Precomputed precompute_transfer(const Scene& scene, const PrecomputeOptions& opt
   out.portals = std::move(portals.transfers);
   out.warnings = std::move(portals.warnings);
   out.nearfield = std::move(nearfield.result);
+  if (!scene.emitters.empty() && scene.precompute.nearfield_interreflection) {
+    out.nearfield.gather = std::move(gather.matrix);  // bounced at run time
+  }
   return out;
 }
 

@@ -1,12 +1,13 @@
 // The stored transfer of every source of a scene as the run time reads it: one view per
-// source module (luminaires, portals), in scene order. Built by store/transfer_file.h from a
-// .rlt or from a precompute in memory.
+// source module (luminaires, portals, near-field emitters), in scene order. Built by
+// store/transfer_file.h from a .rlt or from a precompute in memory.
 #pragma once
 
 #include <cstddef>
 #include <vector>
 
 #include "sources/luminaire/luminaire_transfer_view.h"
+#include "sources/nearfield/nearfield_transfer_view.h"
 #include "sources/portal/portal_transfer_view.h"
 
 namespace relight {
@@ -18,6 +19,7 @@ struct TransferView {
   std::vector<LuminaireTransferView> luminaires;  // scene order
   int portal_sh_order = 6;
   std::vector<PortalTransferView> portals;  // scene order
+  NearfieldTransferView nearfield;          // sh_order 0 without emitters
 };
 
 }  // namespace relight

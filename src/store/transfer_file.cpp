@@ -1,5 +1,6 @@
 #include "store/transfer_file.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <stdexcept>
 
@@ -26,10 +27,13 @@ constexpr std::uint32_t kTriangles = rlt_fourcc("MTRI");
 constexpr std::uint32_t kPortalTriangles = rlt_fourcc("MPRT");
 constexpr std::uint32_t kTriangleMaterials = rlt_fourcc("MMAT");
 // Near-field emitters (only when the scene has some): shadowed SH transfer per receiver, and
-// its interreflected part (RGB) when the precompute bounced it.
+// with "nearfield_interreflection" the gather operator (compressed rows) that the run time
+// bounces their light through (format version 2; version 1 had NFTI, the SH transfer bounced
+// in the precompute, instead).
 constexpr std::uint32_t kNearfieldTransfer = rlt_fourcc("NFTR");
-constexpr std::uint32_t kNearfieldInterreflected =
-    rlt_fourcc("NFTI");  // optional (older files lack it)
+constexpr std::uint32_t kGatherRows = rlt_fourcc("NGRO");
+constexpr std::uint32_t kGatherColumns = rlt_fourcc("NGCO");
+constexpr std::uint32_t kGatherValues = rlt_fourcc("NGVA");
 
 // Per-luminaire sections: two type characters, then the luminaire index in the upper
 // 16 bits ("DX" + j: direction x, "DY", "DZ", "DF": direct factor, "TI": indirect SH
@@ -157,8 +161,19 @@ void write_transfer_file(const fs::path& file, const Precomputed& p, const Scene
   if (!p.nearfield.transfer.empty()) {
     w.add_f32(kNearfieldTransfer, "near-field transfer", p.nearfield.transfer);
   }
-  if (!p.nearfield.interreflected.empty()) {
-    w.add_f32(kNearfieldInterreflected, "near-field interreflected", p.nearfield.interreflected);
+  if (p.nearfield.gather.nonZeros() > 0) {
+    // The writer keeps spans into `p` until it writes: the matrix is stored as it is.
+    const Eigen::SparseMatrix<float, Eigen::RowMajor>& g = p.nearfield.gather;
+    if (!g.isCompressed())
+      throw std::invalid_argument("write_transfer_file: gather not compressed");
+    const auto index_span = [](const int* p, Eigen::Index n) {
+      return std::span(reinterpret_cast<const std::uint32_t*>(p), static_cast<std::size_t>(n));
+    };
+    w.add_u32(kGatherRows, "near-field gather rows", index_span(g.outerIndexPtr(), g.rows() + 1));
+    w.add_u32(kGatherColumns, "near-field gather columns",
+              index_span(g.innerIndexPtr(), g.nonZeros()));
+    w.add_f32(kGatherValues, "near-field gather values",
+              std::span(g.valuePtr(), static_cast<std::size_t>(g.nonZeros())));
   }
   for (std::size_t j = 0; j < p.luminaires.size(); ++j) {
     const LuminaireTransfer& l = p.luminaires[j];
@@ -204,6 +219,34 @@ TransferView in_memory_view(const Precomputed& p) {
     v.portals.push_back({t.geometry.name, t.direct.face_size, t.geometry.centre, t.direct.outward,
                          t.geometry.diameter, t.direct.records, t.direct.offsets,
                          t.indirect_blocks});
+  }
+  if (p.nearfield.sh_order > 0) {
+    NearfieldTransferView& nf = v.nearfield;
+    nf.sh_order = p.nearfield.sh_order;
+    nf.transfer = p.nearfield.transfer;
+    const auto& g = p.nearfield.gather;
+    if (g.nonZeros() > 0) {
+      if (!g.isCompressed()) throw std::invalid_argument("in_memory_view: gather not compressed");
+      nf.gather_rows = {reinterpret_cast<const std::uint32_t*>(g.outerIndexPtr()),
+                        static_cast<std::size_t>(g.rows() + 1)};
+      nf.gather_columns = {reinterpret_cast<const std::uint32_t*>(g.innerIndexPtr()),
+                           static_cast<std::size_t>(g.nonZeros())};
+      nf.gather_values = {g.valuePtr(), static_cast<std::size_t>(g.nonZeros())};
+    }
+    nf.vertex_albedo.reserve(3 * p.receivers.vertex_count);
+    for (std::size_t v = 0; v < p.receivers.vertex_count; ++v) {
+      const Rgb a = p.receivers.albedo[v];
+      nf.vertex_albedo.insert(
+          nf.vertex_albedo.end(),
+          {static_cast<float>(a.r), static_cast<float>(a.g), static_cast<float>(a.b)});
+    }
+    nf.vertex_count = p.receivers.vertex_count;
+    nf.receiver_positions = p.receivers.positions;
+    nf.receiver_normals = p.receivers.normals;
+    nf.mesh_positions = p.mesh.positions;
+    for (std::size_t i = 0; i < p.mesh.triangles.size(); ++i) {
+      if (p.triangle_portal[i] == 0) nf.opaque_triangles.push_back(p.mesh.triangles[i]);
+    }
   }
   return v;
 }
@@ -347,23 +390,44 @@ TransferFile open_transfer_file(const fs::path& file) {
     t.view.luminaires.push_back(v);
   }
   read_portal_views(t, where);
-  t.nearfield_sh_order = m.value("nearfield_sh_order", 0);
+  NearfieldTransferView& nf = t.view.nearfield;
   if (!t.scene.emitters.empty()) {
-    if (t.nearfield_sh_order < 1 || t.nearfield_sh_order > 16 ||
-        !t.file.find_info(kNearfieldTransfer)) {
+    nf.sh_order = m.value("nearfield_sh_order", 0);
+    if (nf.sh_order < 1 || nf.sh_order > 16 || !t.file.find_info(kNearfieldTransfer)) {
       fail_input(where, "the scene has emitters but the file holds no near-field transfer");
     }
-    const std::size_t kn = static_cast<std::size_t>(sh_count(t.nearfield_sh_order));
-    t.nearfield_transfer = t.file.view<float>(kNearfieldTransfer);
-    if (t.nearfield_transfer.size() != receivers * kn) {
+    const std::size_t kn = static_cast<std::size_t>(sh_count(nf.sh_order));
+    nf.transfer = t.file.view<float>(kNearfieldTransfer);
+    if (nf.transfer.size() != receivers * kn) {
       fail_input(where, "near-field transfer has an inconsistent size");
     }
-    if (t.file.find_info(kNearfieldInterreflected)) {
-      t.nearfield_interreflected = t.file.view<float>(kNearfieldInterreflected);
-      if (t.nearfield_interreflected.size() != receivers * kn * 3) {
-        fail_input(where, "near-field interreflected transfer has an inconsistent size");
+    if (t.file.find_info(kGatherRows)) {
+      nf.gather_rows = t.file.view<std::uint32_t>(kGatherRows);
+      nf.gather_columns = t.file.view<std::uint32_t>(kGatherColumns);
+      nf.gather_values = t.file.view<float>(kGatherValues);
+      if (nf.gather_rows.size() != receivers + 1 || nf.gather_rows.front() != 0 ||
+          nf.gather_rows.back() != nf.gather_columns.size() ||
+          nf.gather_values.size() != nf.gather_columns.size() ||
+          !std::is_sorted(nf.gather_rows.begin(), nf.gather_rows.end()) ||
+          std::any_of(nf.gather_columns.begin(), nf.gather_columns.end(),
+                      [&](std::uint32_t c) { return c >= t.vertex_count; })) {
+        fail_input(where, "near-field gather operator has inconsistent sizes");
       }
     }
+    nf.vertex_albedo.assign(t.vertex_albedo.begin(), t.vertex_albedo.end());
+    nf.vertex_count = t.vertex_count;
+    nf.receiver_positions = t.positions;
+    const auto normals = t.file.view<float>(kMeshNormals);
+    if (normals.size() != 3 * t.vertex_count) fail_input(where, "mesh normals: inconsistent size");
+    for (std::size_t v = 0; v < t.vertex_count; ++v) {
+      nf.receiver_normals.push_back({normals[3 * v], normals[3 * v + 1], normals[3 * v + 2]});
+    }
+    for (const SensorSet& s : t.scene.sensors) {
+      nf.receiver_positions.insert(nf.receiver_positions.end(), s.points.begin(), s.points.end());
+      nf.receiver_normals.insert(nf.receiver_normals.end(), s.points.size(), s.normal);
+    }
+    nf.mesh_positions = t.positions;
+    for (const std::uint32_t i : t.opaque_triangles) nf.opaque_triangles.push_back(t.triangles[i]);
   }
   return t;
 }

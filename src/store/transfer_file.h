@@ -40,12 +40,7 @@ struct TransferFile {
   std::vector<std::uint32_t> portal_triangles;    // indices of the portals' triangles
   std::vector<std::uint32_t> portal_of_triangle;  // for each of those: its portal
   std::vector<std::uint32_t> triangle_material;   // per triangle (empty for files before MMAT)
-  // Near-field emitters (scene.emitters non-empty): receivers × K shadowed transfer, K =
-  // nearfield_sh_order², and (when the precompute bounced it) receivers × K × RGB more.
-  int nearfield_sh_order = 0;
-  std::span<const float> nearfield_transfer;
-  std::span<const float> nearfield_interreflected;
-  std::span<const float> vertex_albedo;  // 3 per vertex
+  std::span<const float> vertex_albedo;           // 3 per vertex
   std::size_t vertex_count = 0, sensor_count = 0;
   TransferView view;
 

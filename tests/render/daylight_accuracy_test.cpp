@@ -49,8 +49,8 @@ class Daylight {
     PrecomputeOptions options;
     options.progress = false;
     precomputed_ = precompute_transfer(scene_, options);
-    relighter_ = std::make_unique<Relighter>(in_memory_view(precomputed_), scene_,
-                                             RelighterSettings{ShWindow::kSigma});
+    relighter_ =
+        std::make_unique<Relighter>(in_memory_view(precomputed_), scene_, RelighterSettings{});
     std::printf("precompute: %zu receivers (%zu sensors), %.2f s\n", precomputed_.receivers.size(),
                 precomputed_.receivers.sensor_count, seconds_since(start));
   }

@@ -43,7 +43,9 @@ Relit precompute_and_relight(const json& document, const json& state = json::obj
   PrecomputeOptions options;
   options.progress = false;
   r.precomputed = precompute_transfer(r.scene, options);
-  Relighter relighter(in_memory_view(r.precomputed), r.scene, RelighterSettings{window});
+  RelighterSettings settings;
+  settings.window = window;
+  Relighter relighter(in_memory_view(r.precomputed), r.scene, settings);
   LightingState s = default_lighting_state(r.scene);
   apply_lighting_state(s, r.scene, state, "state.json", ".");
   relighter.set_state(s);

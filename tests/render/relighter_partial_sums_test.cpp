@@ -30,7 +30,7 @@ TEST(RelighterPartialSums, AnyOrderOfChangesGivesTheFreshResult) {
   PrecomputeOptions options;
   options.progress = false;
   const Precomputed p = precompute_transfer(scene, options);
-  const RelighterSettings settings{ShWindow::kSigma};
+  const RelighterSettings settings{};  // the sigma window
 
   const auto state_of = [&](const char* text) {
     LightingState s = default_lighting_state(scene);

@@ -145,7 +145,7 @@ TEST_F(RltCorruption, OtherFilesAreNotRltFiles) {
 }
 
 TEST_F(RltCorruption, AnotherFormatVersionAsksForANewPrecompute) {
-  for (const std::uint32_t version : {0u, 2u, 17u}) {
+  for (const std::uint32_t version : {0u, kRltFormatVersion - 1, kRltFormatVersion + 1, 17u}) {
     std::vector<std::byte> bytes = bytes_;
     std::memcpy(bytes.data() + 8, &version, 4);
     // A genuine file of that version: its header checksum is right.
@@ -153,7 +153,8 @@ TEST_F(RltCorruption, AnotherFormatVersionAsksForANewPrecompute) {
     std::memcpy(bytes.data() + 56, &checksum, 8);
     const std::string message = open_error(bytes, {});
     EXPECT_EQ(message, bad_.string() + ": format version " + std::to_string(version) +
-                           ", this relight reads 1: run relight precompute again");
+                           ", this relight reads " + std::to_string(kRltFormatVersion) +
+                           ": run relight precompute again");
   }
 }
 

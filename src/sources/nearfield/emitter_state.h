@@ -3,6 +3,7 @@
 
 #include "math/placement.h"
 #include "math/rgb.h"
+#include "scene/scene.h"
 
 namespace relight {
 
@@ -15,5 +16,13 @@ struct EmitterState : Placement {
   bool on = true;
   bool operator==(const EmitterState&) const = default;
 };
+
+// An emitter as the scene sets it.
+inline EmitterState emitter_state(const Emitter& e) {
+  EmitterState s;
+  s.luminance = e.luminance;
+  s.color = e.color;
+  return s;
+}
 
 }  // namespace relight

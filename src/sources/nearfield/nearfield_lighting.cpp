@@ -168,30 +168,19 @@ bool NearfieldScene::inside_geometry(Vec3 x) const {
   return back >= 4;
 }
 
-void nearfield_irradiance(std::span<const float> transfer, std::span<const float> interreflected,
-                          std::span<const Rgb> sh, std::size_t k, std::span<float> out) {
+void nearfield_irradiance(std::span<const float> transfer, std::span<const Rgb> sh, std::size_t k,
+                          std::span<float> out) {
   const std::size_t n = out.size() / 3;
-  if (transfer.size() != n * k || sh.size() != n * k ||
-      (!interreflected.empty() && interreflected.size() != 3 * n * k)) {
+  if (transfer.size() != n * k || sh.size() != n * k) {
     throw std::invalid_argument("nearfield_irradiance: sizes disagree");
   }
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n), [&](const auto& range) {
     for (std::size_t r = range.begin(); r != range.end(); ++r) {
-      double e[3] = {0, 0, 0};
-      for (std::size_t c = 0; c < k; ++c) {
-        const Rgb l = sh[r * k + c];
-        const double t = transfer[r * k + c];
-        const double lc[3] = {l.r, l.g, l.b};
-        for (int ch = 0; ch < 3; ++ch) {
-          const double bounced =
-              interreflected.empty()
-                  ? 0
-                  : interreflected[(r * k + c) * 3 + static_cast<std::size_t>(ch)];
-          e[ch] += (t + bounced) * lc[ch];
-        }
-      }
-      for (int ch = 0; ch < 3; ++ch)
-        out[3 * r + static_cast<std::size_t>(ch)] = static_cast<float>(e[ch]);
+      Rgb e;
+      for (std::size_t c = 0; c < k; ++c) e += sh[r * k + c] * transfer[r * k + c];
+      out[3 * r] = static_cast<float>(e.r);
+      out[3 * r + 1] = static_cast<float>(e.g);
+      out[3 * r + 2] = static_cast<float>(e.b);
     }
   });
 }

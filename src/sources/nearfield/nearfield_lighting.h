@@ -1,7 +1,7 @@
 // Near-field lighting of a precomputed scene (issue 5, Sun 2005 Fig. 3.1): at run
 // time, with the emitters where the lighting state puts them, sample the incident radiance,
 // reconstruct its SH vector l_p at every receiver and shade E_p = t_p · l_p with the stored
-// transfer (plus its interreflected part when the precompute made one). Three ways to choose
+// transfer (its interreflection: sources/nearfield/emitter_lighting.h). Three ways to choose
 // the samples, in the same code so they compare fairly:
 //  * adaptive — Sun 2005: the oracle-driven BVH traversal (Alg. 3.4, Eq. 3.3) and valid-domain
 //    reconstruction through the linear octree (§3.3.5, Eq. 2.13 with b = 1);
@@ -86,10 +86,9 @@ class NearfieldScene {
   bool inside_geometry(Vec3 x) const;
 };
 
-// E per receiver, 3 floats each: Σ_k (t_k + T^ind_k) l_k. `transfer`: receivers × K;
-// `interreflected`: receivers × K × 3 or empty.
-void nearfield_irradiance(std::span<const float> transfer, std::span<const float> interreflected,
-                          std::span<const Rgb> sh, std::size_t k, std::span<float> out);
+// The direct E per receiver, 3 floats each: Σ_k t_k l_k. `transfer`: receivers × K.
+void nearfield_irradiance(std::span<const float> transfer, std::span<const Rgb> sh, std::size_t k,
+                          std::span<float> out);
 
 // Root-mean-square difference of two RGB fields (3 floats per element), over the first `count`
 // elements.

@@ -1,0 +1,92 @@
+#include "sources/nearfield/emitter_direct.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace relight {
+
+namespace {
+
+// The polygon (at most 4 corners, relative to p) of the triangle on the side n·q ≥ 0.
+struct Polygon {
+  std::array<Vec3, 4> corners;
+  int count = 0;
+};
+
+Polygon clip_to_upper_side(const std::array<Vec3, 3>& q, Vec3 n) {
+  Polygon out;
+  for (int i = 0; i < 3; ++i) {
+    const Vec3 a = q[static_cast<std::size_t>(i)], b = q[static_cast<std::size_t>((i + 1) % 3)];
+    const double da = dot(n, a), db = dot(n, b);
+    if (da >= 0) out.corners[static_cast<std::size_t>(out.count++)] = a;
+    if ((da >= 0) != (db >= 0)) {
+      out.corners[static_cast<std::size_t>(out.count++)] = a + (b - a) * (da / (da - db));
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+double triangle_irradiance_factor(Vec3 p, Vec3 n, Vec3 a, Vec3 b, Vec3 c) {
+  const Vec3 face = cross(b - a, c - a);
+  if (dot(face, p - a) <= 0) return 0;  // behind the emitting side (or in its plane)
+  const Polygon poly = clip_to_upper_side({a - p, b - p, c - p}, n);
+  if (poly.count < 3) return 0;
+  double sum = 0;
+  for (int i = 0; i < poly.count; ++i) {
+    const Vec3 u = poly.corners[static_cast<std::size_t>(i)];
+    const Vec3 v = poly.corners[static_cast<std::size_t>((i + 1) % poly.count)];
+    const double lu = length(u), lv = length(v);
+    if (lu <= 0 || lv <= 0) continue;
+    const Vec3 g = cross(u, v);
+    const double lg = length(g);
+    if (lg <= 0) continue;
+    const double theta = std::atan2(lg, dot(u, v));
+    sum += theta * dot(n, g) / lg;
+  }
+  return 0.5 * std::abs(sum);
+}
+
+Rgb emitter_direct_irradiance(const PlacedEmitters& emitters, const RayTracer* occluders, Vec3 p,
+                              Vec3 n, int visibility_samples) {
+  const int m = std::max(1, static_cast<int>(std::lround(std::sqrt(visibility_samples))));
+  const Vec3 origin = offset_from_surface(p, n);
+  Rgb e;
+  for (std::size_t t = 0; t < emitters.triangles.size(); ++t) {
+    const Rgb& radiance = emitters.triangle_radiance[t];
+    if (max_component(radiance) <= 0) continue;
+    const Triangle& tri = emitters.triangles[t];
+    const Vec3 a = emitters.positions[tri[0]], b = emitters.positions[tri[1]],
+               c = emitters.positions[tri[2]];
+    const double factor = triangle_irradiance_factor(p, n, a, b, c);
+    if (factor <= 0) continue;
+    double visible = 1;
+    if (occluders != nullptr && occluders->triangle_count() > 0) {
+      // Stratified points on the triangle (the square-root warp of an m × m grid of cell
+      // centres), weighted by their unoccluded contribution.
+      const Vec3 normal = emitters.normals[t];
+      double total = 0, seen = 0;
+      for (int i = 0; i < m; ++i) {
+        for (int j = 0; j < m; ++j) {
+          const double su = std::sqrt((i + 0.5) / m), v = (j + 0.5) / m;
+          const Vec3 y = a * (1 - su) + b * (su * (1 - v)) + c * (su * v);
+          const Vec3 d = y - p;
+          const double dist2 = dot(d, d);
+          if (dist2 <= 0) continue;
+          const Vec3 w = d / std::sqrt(dist2);
+          const double weight = std::max(0.0, dot(n, w)) * std::max(0.0, -dot(normal, w)) / dist2;
+          if (weight <= 0) continue;
+          total += weight;
+          if (!occluders->occluded({origin, y - origin, 0, 1 - 1e-4})) seen += weight;
+        }
+      }
+      visible = total > 0 ? seen / total : 1;
+    }
+    e += radiance * (factor * visible);
+  }
+  return e;
+}
+
+}  // namespace relight
