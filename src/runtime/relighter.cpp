@@ -62,10 +62,13 @@ void Relighter::relight(std::span<float> out, bool include_direct) {
           for (std::size_t c = 0; c < 3; ++c) sum[3 * (base + i) + c] = acc[c][i];
         }
       }
-      for (std::size_t i = 3 * base; i < 3 * (base + count); ++i) {
-        float total = 0;
-        for (const Term& term : terms_) total += term.sums[slot].values[i];
-        out[i] = total;
+      // out = Σ over terms of their sums, one streaming pass per term over the block.
+      const std::size_t lo = 3 * base, hi = 3 * (base + count);
+      const float* first = terms_.front().sums[slot].values.data();
+      for (std::size_t i = lo; i < hi; ++i) out[i] = first[i];
+      for (std::size_t t = 1; t < terms_.size(); ++t) {
+        const float* v = terms_[t].sums[slot].values.data();
+        for (std::size_t i = lo; i < hi; ++i) out[i] += v[i];
       }
     }
   });

@@ -43,24 +43,31 @@ std::vector<float> RelitScene::vertex_radiance(std::span<const float> irradiance
   return l;
 }
 
+namespace {
+
+// A tracer over the stored triangles `which`, hits reporting `ids` (one per triangle).
+std::unique_ptr<RayTracer> tracer_of(const TransferFile& t, std::span<const std::uint32_t> which,
+                                     const std::vector<std::uint32_t>& ids) {
+  std::vector<Triangle> triangles;
+  triangles.reserve(which.size());
+  for (const std::uint32_t i : which) triangles.push_back(t.triangles[i]);
+  return std::make_unique<RayTracer>(t.positions, triangles, ids);
+}
+
+}  // namespace
+
 const RayTracer& RelitScene::opaque_tracer() {
   if (!opaque_tracer_) {
-    const TransferFile& t = *transfer_;
-    std::vector<Triangle> opaque;
-    opaque.reserve(t.opaque_triangles.size());
-    for (std::uint32_t i : t.opaque_triangles) opaque.push_back(t.triangles[i]);
-    opaque_tracer_ = std::make_unique<RayTracer>(t.positions, opaque, t.opaque_triangles);
+    opaque_tracer_ =
+        tracer_of(*transfer_, transfer_->opaque_triangles, transfer_->opaque_triangles);
   }
   return *opaque_tracer_;
 }
 
 const RayTracer& RelitScene::portal_tracer() {
   if (!portal_tracer_) {
-    const TransferFile& t = *transfer_;
-    std::vector<Triangle> glass;
-    glass.reserve(t.portal_triangles.size());
-    for (std::uint32_t i : t.portal_triangles) glass.push_back(t.triangles[i]);
-    portal_tracer_ = std::make_unique<RayTracer>(t.positions, glass, t.portal_of_triangle);
+    portal_tracer_ =
+        tracer_of(*transfer_, transfer_->portal_triangles, transfer_->portal_of_triangle);
   }
   return *portal_tracer_;
 }

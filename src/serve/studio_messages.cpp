@@ -147,6 +147,19 @@ nlohmann::json hello_message(const TransferFile& t, const std::string& scene_fil
   for (const ExteriorGeometry& x : scene.exterior) {
     if (!x.name.empty()) exterior.push_back(x.name);
   }
+  nlohmann::json emitters = nlohmann::json::array();
+  for (const Emitter& e : scene.emitters) {
+    Vec3 lo = e.geometry.positions.front(), hi = lo;
+    for (const Vec3 p : e.geometry.positions) {
+      lo = min(lo, p);
+      hi = max(hi, p);
+    }
+    emitters.push_back({{"name", e.name},
+                        {"luminance", e.luminance},
+                        {"color", rgb_json(e.color)},
+                        {"pivot", vec3_json(e.pivot)},
+                        {"size", 0.5 * length(hi - lo)}});
+  }
   nlohmann::json cameras = nlohmann::json::array();
   for (const Camera& c : scene.cameras) {
     cameras.push_back({{"name", c.name},
@@ -175,6 +188,7 @@ nlohmann::json hello_message(const TransferFile& t, const std::string& scene_fil
           {"luminaires", luminaires},
           {"portals", portals},
           {"exterior", exterior},
+          {"emitters", emitters},
           {"cameras", cameras},
           {"sensors", sensors},
           {"sh_order", t.view.sh_order},

@@ -1,11 +1,13 @@
 // The studio's entry point: connects to `relight serve` (docs/studio-protocol.md), builds
 // the view and the panels from `hello`, the mesh from RLGE, uploads every RLFR, routes
 // state / pick / distribution / error / pong messages, handles clicks in the view (probe a
-// point, or aim a luminaire at it), keeps the status line, and exposes
-// window.relightStudio for the browser tests.
+// point, or aim a luminaire at it; a press on an emitter's marker drags the emitter,
+// emitters.js), keeps the status line, and exposes window.relightStudio for the browser
+// tests.
 import { CameraRig } from './cameras.js';
 import { Connection } from './connection.js';
 import { DistributionEditor } from './distribution_editor.js';
+import { EmitterMarkers, EmitterPanel } from './emitters.js';
 import { formatValue } from './false_color.js';
 import { LabelLayer } from './labels.js';
 import { Legend } from './legend.js';
@@ -30,6 +32,7 @@ const api = {
   clientErrors: [], // what this client could not decode or apply
   pongs: 0,
   latencies: [],
+  lastState: null, // {seq, frame} of the last `state` message: the frame that shows it
 };
 window.relightStudio = api;
 
@@ -58,6 +61,9 @@ const distributions = new Map();
 const labels = new LabelLayer($('labels'), viewer);
 const legend = new Legend($('legend'));
 const markers = new Markers(viewer, store);
+// Takes presses on its markers on #stage in the capture phase, ahead of the camera controls
+// and the click handling below.
+const emitterMarkers = new EmitterMarkers(viewer, store, $('stage'));
 const sensors = new Sensors(viewer, $('sensors'));
 const rig = new CameraRig(viewer, () => viewPanel.markFree());
 const viewPanel = new ViewPanel(viewer, rig, markers, $('labels'));
@@ -71,6 +77,7 @@ const luminairePanel = new LuminairePanel($('luminaires'), store, distributions,
 });
 const editor = new DistributionEditor($('distribution'), store, distributions, requestDistribution);
 const windowsPanel = new WindowsPanel($('windows'), store);
+const emitterPanel = new EmitterPanel($('emitters'), store);
 // The luminaire in the distribution editor is drawn larger in the view.
 editor.onSelect = (i) => {
   markers.selected = i;
@@ -95,6 +102,7 @@ function onText(msg) {
     case 'hello':
       return onHello(msg);
     case 'state': {
+      api.lastState = { seq: msg.seq ?? null, frame: msg.frame ?? null };
       const how = store.applyRemote(msg);
       if (how === 'mine') $('state-origin').textContent = `shown: this client's state (frame ${msg.frame ?? '?'})`;
       if (how === 'remote') {
@@ -152,6 +160,8 @@ function onHello(hello) {
   sensors.setScene(hello);
   luminairePanel.setScene(hello);
   windowsPanel.setScene(hello);
+  emitterMarkers.setScene(hello);
+  emitterPanel.setScene(hello);
   editor.setScene(hello);
   store.reset(hello.state || {}, hello.client ?? null);
   // Every luminaire's distribution: flux for the panels, exact C0 samples for the editor.
@@ -201,6 +211,7 @@ viewer.afterRender.push((info) => {
   labels.begin();
   sensors.drawLabels(labels);
   markers.drawLabels(labels);
+  emitterMarkers.drawLabels(labels);
   if (info.frameDrawn) {
     // A frame counts as drawn at the first animation frame after the one that drew it,
     // when the browser has composited it: latency runs from the state message's send to
@@ -401,6 +412,11 @@ function requestDistribution(name) {
   });
 }
 
+$('show-emitters').addEventListener('change', (e) => {
+  emitterMarkers.visible = e.target.checked;
+  emitterMarkers.update();
+});
+
 $('panel-toggle').addEventListener('click', () => {
   $('app').classList.toggle('collapsed');
 });
@@ -416,6 +432,12 @@ Object.assign(api, {
     return store.latestSeq;
   },
   pick: (x, y) => pickAt(x, y),
+  // Emitter i's marker on the canvas (CSS px), and any world point's.
+  emitterOnScreen: (i) => emitterMarkers.screenPosition(i),
+  project: (p) => {
+    const s = labels.project(p);
+    return s && { x: s[0], y: s[1] };
+  },
   viewer,
   store,
   editor,

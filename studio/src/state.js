@@ -22,9 +22,9 @@ export function canonical(x) {
   return JSON.stringify(x);
 }
 
-// Drops empty luminaire/portal entries and empty top-level objects.
+// Drops empty luminaire/portal/emitter entries and empty top-level objects.
 function prune(doc) {
-  for (const key of ['luminaires', 'portals', 'exterior']) {
+  for (const key of ['luminaires', 'portals', 'exterior', 'emitters']) {
     const o = doc[key];
     if (!o || typeof o !== 'object') continue;
     if (key !== 'exterior') {
@@ -78,7 +78,7 @@ export class StateStore {
     this._notify('remote');
   }
 
-  // Luminaire / portal entry of the document, created on demand.
+  // Luminaire / portal / emitter entry of the document, created on demand.
   luminaire(name) {
     this.doc.luminaires ??= {};
     return (this.doc.luminaires[name] ??= {});
@@ -86,6 +86,10 @@ export class StateStore {
   portal(name) {
     this.doc.portals ??= {};
     return (this.doc.portals[name] ??= {});
+  }
+  emitter(name) {
+    this.doc.emitters ??= {};
+    return (this.doc.emitters[name] ??= {});
   }
 
   // fn(doc) edits the document; it is then sent (throttled).

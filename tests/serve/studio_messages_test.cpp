@@ -1,5 +1,8 @@
 // serve/studio_messages.h: what a client may send (validated, errors naming the JSON path and
 // echoing a readable seq) and the hello a client gets first.
+#include <cmath>
+#include <vector>
+
 #include <gtest/gtest.h>
 
 #include "common/input_error.h"
@@ -102,6 +105,25 @@ TEST(StudioMessages, HelloDescribesTheScene) {
   }
   EXPECT_EQ(h["sh_order"], 4);
   EXPECT_EQ(h["state"], nlohmann::json::object());
+  EXPECT_EQ(h["emitters"], nlohmann::json::array());
+}
+
+TEST(StudioMessages, HelloListsTheEmitters) {
+  const testing::TinyStudioRoom lit(testing::tiny_studio_room_with_emitter_json());
+  const nlohmann::json h = hello_message(lit.transfer, "tiny.rlt", nlohmann::json::object());
+  ASSERT_EQ(h["emitters"].size(), 1u);
+  const nlohmann::json& e = h["emitters"][0];
+  EXPECT_EQ(e["name"], "panel");
+  EXPECT_DOUBLE_EQ(e["luminance"].get<double>(), 2000);
+  // The scene's chromaticity, scaled to luminance 1.
+  const std::vector<double> c = e["color"];
+  EXPECT_NEAR(0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2], 1, 1e-9);
+  EXPECT_NEAR(c[0] / c[1], 2, 1e-9);
+  const std::vector<double> pivot = e["pivot"];
+  EXPECT_NEAR(pivot[0], 1.2, 1e-12);
+  EXPECT_NEAR(pivot[1], 2, 1e-12);
+  EXPECT_NEAR(pivot[2], 1.2, 1e-12);
+  EXPECT_NEAR(e["size"].get<double>(), 0.2 * std::sqrt(2.0), 1e-12);  // half the diagonal
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // A tiny precomputed room for the studio's tests: a grey box with a south window (a portal to
 // a uniform sky), a downlight with a curve distribution and a work-plane grid, precomputed at
-// low settings into a .rlt in a temporary folder (about a second).
+// low settings into a .rlt in a temporary folder (about a second); optionally with a near-field
+// emitter.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -33,16 +34,27 @@ inline nlohmann::json tiny_studio_room_json() {
 })");
 }
 
+// The room with a downward-facing 0.4 × 0.4 m quad emitter "panel" under the ceiling
+// (corner [1, 2, 1]: pivot [1.2, 2, 1.2]).
+inline nlohmann::json tiny_studio_room_with_emitter_json() {
+  nlohmann::json document = tiny_studio_room_json();
+  document["emitters"] = nlohmann::json::parse(R"([ { "name": "panel",
+      "geometry": { "type": "quad", "corner": [1, 2, 1], "u": [0.4, 0, 0], "v": [0, 0, 0.4] },
+      "luminance": 2000, "color": [1, 0.5, 0.25] } ])");
+  document["precompute"]["nearfield_directions"] = 16;
+  return document;
+}
+
 struct TinyStudioRoom {
   TempDir dir;
   std::filesystem::path rlt = dir.path() / "tiny.rlt";
   TransferFile transfer;
 
-  TinyStudioRoom() : transfer(make()) {}
+  explicit TinyStudioRoom(const nlohmann::json& document = tiny_studio_room_json())
+      : transfer(make(document)) {}
 
  private:
-  TransferFile make() {
-    const nlohmann::json document = tiny_studio_room_json();
+  TransferFile make(const nlohmann::json& document) {
     const std::filesystem::path scene_file = dir.write("tiny.json", document.dump());
     const Scene scene = scene_from_json(document, scene_file);
     PrecomputeOptions options;

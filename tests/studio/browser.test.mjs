@@ -6,111 +6,31 @@
 // median latency from a state change to the new frame on screen is measured and printed.
 import test from 'node:test';
 import assert from 'node:assert/strict';
-import fs from 'node:fs';
-import os from 'node:os';
-import path from 'node:path';
 
-import { connect, requireStudio, startServer, stopServer } from './studio_support.mjs';
+import * as browser from './browser_support.mjs';
+import { connect, startServer, stopServer } from './studio_support.mjs';
 
-const { chromium } = requireStudio('playwright-core');
-
-// The flags a closed network needs (the machine's env notes): no background connections.
-const kChromiumArgs = ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic',
-  '--no-first-run', '--disable-background-networking', '--disable-component-update',
-  '--disable-sync'];
-
-let server, context, page, profileDir, hello;
-const problems = [];
+let server, studio, page, hello;
 
 test.before(async () => {
   server = await startServer();
   const probe = await connect(server.ws);  // the scene's names, as the page gets them
   hello = await probe.nextJson('hello');
   probe.close();
-  profileDir = fs.mkdtempSync(path.join(os.tmpdir(), 'relight-chromium-'));
-  context = await chromium.launchPersistentContext(profileDir, {
-    executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium',
-    headless: true,
-    args: kChromiumArgs,
-    viewport: { width: 1100, height: 700 },
-  });
-  page = await context.newPage();
-  page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
-  page.on('console', (m) => { if (m.type() === 'error') problems.push(`console: ${m.text()}`); });
-  await page.goto(server.url);
-  await page.evaluate(() => window.relightStudio.ready);
+  studio = await browser.openStudio(server.url);
+  page = studio.page;
 });
 
 test.after(async () => {
-  await context?.close();
-  if (profileDir) fs.rmSync(profileDir, { recursive: true, force: true });
+  await studio?.close();
   if (server) assert.equal(await stopServer(server), 0, server.stderr());
 });
 
-// Mean display value of the viewport's pixels, and the centroid of its brightest 2 %.
-async function pixels() {
-  // Two animation frames: whatever changed has been drawn (the client renders on demand).
-  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
-  return page.evaluate(() => {
-    const canvas = document.getElementById('viewport');
-    const copy = document.createElement('canvas');
-    copy.width = canvas.width;
-    copy.height = canvas.height;
-    const ctx = copy.getContext('2d');
-    ctx.drawImage(canvas, 0, 0);
-    const { data } = ctx.getImageData(0, 0, copy.width, copy.height);
-    const n = copy.width * copy.height;
-    const y = new Float32Array(n);
-    let sum = 0;
-    for (let i = 0; i < n; ++i) {
-      y[i] = 0.2126 * data[4 * i] + 0.7152 * data[4 * i + 1] + 0.0722 * data[4 * i + 2];
-      sum += y[i];
-    }
-    window.__studioTestLuminance = window.__studioTestLuminance ?? {};
-    window.__studioTestLuminance.last = y;
-    const sorted = Float32Array.from(y).sort();
-    const threshold = sorted[Math.floor(0.98 * n)];
-    let cx = 0, cy = 0, count = 0;
-    for (let i = 0; i < n; ++i) {
-      if (y[i] >= threshold && y[i] > 0) {
-        cx += i % copy.width;
-        cy += Math.floor(i / copy.width);
-        ++count;
-      }
-    }
-    return { mean: sum / n, cx: cx / count, cy: cy / count, width: copy.width,
-             height: copy.height, cssWidth: canvas.clientWidth, cssHeight: canvas.clientHeight };
-  });
-}
-
-// Keeps the last pixels() under `name`.
-const keepPixels = (name) => page.evaluate((n) => {
-  window.__studioTestLuminance[n] = window.__studioTestLuminance.last;
-}, name);
-
-// Centroid (CSS pixels) of where image `a` is more than twice as bright as image `b` (and
-// visibly so): where the light went when it moved from b to a.
-const brighterCentroid = (a, b) => page.evaluate(([a, b]) => {
-  const ya = window.__studioTestLuminance[a], yb = window.__studioTestLuminance[b];
-  const canvas = document.getElementById('viewport');
-  const w = canvas.width, scale = canvas.width / canvas.clientWidth;
-  let cx = 0, cy = 0, n = 0;
-  for (let i = 0; i < ya.length; ++i) {
-    if (ya[i] > 2 * yb[i] + 8) {
-      cx += i % w;
-      cy += Math.floor(i / w);
-      ++n;
-    }
-  }
-  return { x: cx / n / scale, y: cy / n / scale, pixels: n };
-}, [a, b]);
-
-// Runs `action` and waits until a frame newer than the current one is on screen.
-async function afterNewFrame(action) {
-  const before = await page.evaluate(() => window.relightStudio.frames);
-  await action();
-  await page.waitForFunction((n) => window.relightStudio.frames > n, before, { timeout: 30000 });
-}
+// The shared measurements (browser_support.mjs) on this page.
+const pixels = () => browser.pixels(page);
+const keepPixels = (name) => browser.keepPixels(page, name);
+const brighterCentroid = (a, b) => browser.brighterCentroid(page, a, b);
+const afterNewFrame = (action) => browser.afterNewFrame(page, action);
 
 async function setRange(testId, value) {
   await afterNewFrame(() => page.locator(`[data-testid="${testId}"]`).fill(String(value)));
@@ -227,5 +147,5 @@ test('a malformed message gets an error reply and the server still answers', asy
 });
 
 test('no page errors or console errors', () => {
-  assert.deepEqual(problems.filter((p) => !/Server: /.test(p)), []);
+  assert.deepEqual(studio.problems.filter((p) => !/Server: /.test(p)), []);
 });

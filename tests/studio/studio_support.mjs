@@ -18,10 +18,11 @@ if (!relightBinary || !studioScene) {
   throw new Error('set RELIGHT_BINARY and STUDIO_SCENE (ctest does: tests/studio/CMakeLists)');
 }
 
-// Starts `relight serve SCENE --port 0` and resolves when it prints its URL.
-export function startServer(extraArgs = []) {
+// Starts `relight serve SCENE --port 0` (SCENE: STUDIO_SCENE, the demo room, unless `scene`
+// names another .rlt) and resolves when it prints its URL.
+export function startServer(extraArgs = [], { scene = studioScene } = {}) {
   return new Promise((resolve, reject) => {
-    const proc = spawn(relightBinary, ['serve', studioScene, '--port', '0', ...extraArgs], {
+    const proc = spawn(relightBinary, ['serve', scene, '--port', '0', ...extraArgs], {
       stdio: ['ignore', 'pipe', 'pipe'],
     });
     let out = '', err = '';

@@ -1,5 +1,6 @@
 #include "sources/nearfield/adaptive_sampling.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -16,6 +17,18 @@ double oracle(double radius, const IncidentRadiance& sample) {
 bool near_emitter(const ReceiverBvhNode& node, const std::vector<EmitterBound>& emitters) {
   for (const EmitterBound& e : emitters) {
     if (length(node.sample_position - e.centre) - e.radius < node.radius) return true;
+  }
+  return false;
+}
+
+bool may_be_lit_unseen(const ReceiverBvhNode& node, const AdaptiveSamplingSettings& settings) {
+  for (const EmitterFace& f : settings.faces) {
+    if (dot(f.normal, node.sample_position - f.point) <= -2 * node.radius) continue;
+    const EmitterBound& e = settings.emitters.at(f.emitter);
+    const double d = std::max(length(node.sample_position - e.centre), e.radius);
+    const double potential =
+        node.radius * e.luminance * kPi * e.radius * e.radius / (d * d * d * d);
+    if (potential > settings.epsilon) return true;
   }
   return false;
 }
@@ -40,9 +53,11 @@ AdaptiveSampling sample_adaptively(const ReceiverBvh& bvh, std::size_t receivers
       const ReceiverBvhNode& node = bvh.nodes[frontier[f]];
       // Every node still to decide, and every child queued, ends as at least one sample.
       const std::size_t committed = out.samples.size() + (frontier.size() - f - 1) + next.size();
-      const bool refine = !node.leaf() && committed + 2 <= settings.max_samples &&
-                          (oracle(node.radius, sampled[f]) > settings.epsilon ||
-                           near_emitter(node, settings.emitters));
+      const bool refine =
+          !node.leaf() && committed + 2 <= settings.max_samples &&
+          (oracle(node.radius, sampled[f]) > settings.epsilon ||
+           near_emitter(node, settings.emitters) ||
+           (sampled[f].emitter_solid_angle <= 0 && may_be_lit_unseen(node, settings)));
       if (refine) {
         next.push_back(static_cast<std::uint32_t>(node.left));
         next.push_back(static_cast<std::uint32_t>(node.right));

@@ -9,7 +9,9 @@
 // emitter than its own radius is always refined (beyond the thesis): its one sample cannot
 // stand for it — above a one-sided panel the sample sees nothing (|l_x| = 0, e = 0) while the
 // receivers below it are lit, and the oracle's 1/H_d² model fails next to an emitter
-// (tests/sources/nearfield/adaptive_sampling_test.cpp, a panel over a table). The traversal also
+// (tests/sources/nearfield/nearfield_lighting_test.cpp, a panel over a table). Likewise a node
+// whose sample sees no emitter is refined while some of its receivers may lie in front of an
+// emitter's face (a wall whose mean point is above a downward panel). The traversal also
 // stops splitting when the samples would exceed the user's cap. Each level of the traversal
 // is sampled in parallel; the decisions are taken in breadth-first order, so the result does
 // not depend on the number of threads.
@@ -30,12 +32,24 @@ namespace relight {
 struct EmitterBound {
   Vec3 centre;
   double radius = 0;
+  double luminance = 0;  // cd/m² (Y)
+};
+
+// A lit emitter triangle's plane: it emits toward dot(normal, x − point) > 0.
+struct EmitterFace {
+  Vec3 point, normal;
+  std::size_t emitter = 0;  // its EmitterBound
 };
 
 struct AdaptiveSamplingSettings {
   double epsilon = 0.01;               // the oracle's bound (units of r·|l|/H_d²: cd/m² per m)
   std::size_t max_samples = 4096;      // cap on kept samples (≥ 1)
   std::vector<EmitterBound> emitters;  // nodes nearer than their radius are refined
+  // A node whose sample sees no emitter is refined while some of its receivers may lie in
+  // front of one of these (the sample may sit behind a one-sided emitter, or above it) and
+  // that emitter could make the oracle exceed ε (an emitter too small for the cubemap far
+  // away cannot).
+  std::vector<EmitterFace> faces;
 };
 
 struct AdaptiveSampling {
@@ -52,6 +66,11 @@ double oracle(double radius, const IncidentRadiance& sample);
 // Whether some emitter's bounding sphere comes nearer to the node's sample position than the
 // node's radius.
 bool near_emitter(const ReceiverBvhNode& node, const std::vector<EmitterBound>& emitters);
+
+// Whether some receiver of the node (within twice its radius of its sample position) may lie
+// in front of one of the faces of an emitter whose oracle there could exceed ε: r · L · Ω / d²
+// with Ω = πR²/d² of its bounding sphere (d at least R).
+bool may_be_lit_unseen(const ReceiverBvhNode& node, const AdaptiveSamplingSettings& settings);
 
 AdaptiveSampling sample_adaptively(const ReceiverBvh& bvh, std::size_t receivers,
                                    const IncidentSampler& sampler,

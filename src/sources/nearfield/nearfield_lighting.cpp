@@ -61,8 +61,13 @@ NearfieldScene::NearfieldScene(std::vector<Vec3> receivers, int order,
 
 namespace {
 
-// The bounding sphere of each lit emitter as placed.
-std::vector<EmitterBound> lit_emitter_bounds(const PlacedEmitters& emitters) {
+// The bounding sphere of each lit emitter as placed, and the planes of its triangles.
+struct LitEmitters {
+  std::vector<EmitterBound> bounds;
+  std::vector<EmitterFace> faces;
+};
+
+LitEmitters lit_emitters(const PlacedEmitters& emitters) {
   const std::size_t count = emitters.radiance.size();
   std::vector<Vec3> lo(count, Vec3{1e300, 1e300, 1e300}), hi(count, Vec3{-1e300, -1e300, -1e300});
   for (std::size_t t = 0; t < emitters.triangles.size(); ++t) {
@@ -72,10 +77,18 @@ std::vector<EmitterBound> lit_emitter_bounds(const PlacedEmitters& emitters) {
       hi[e] = max(hi[e], emitters.positions[v]);
     }
   }
-  std::vector<EmitterBound> out;
+  LitEmitters out;
+  std::vector<std::size_t> index(count, count);
   for (std::size_t e = 0; e < count; ++e) {
     if (max_component(emitters.radiance[e]) <= 0 || lo[e].x > hi[e].x) continue;
-    out.push_back({(lo[e] + hi[e]) * 0.5, 0.5 * length(hi[e] - lo[e])});
+    index[e] = out.bounds.size();
+    out.bounds.push_back(
+        {(lo[e] + hi[e]) * 0.5, 0.5 * length(hi[e] - lo[e]), luminance(emitters.radiance[e])});
+  }
+  for (std::size_t t = 0; t < emitters.triangles.size(); ++t) {
+    const std::size_t e = index[emitters.emitter_of_triangle[t]];
+    if (e == count) continue;
+    out.faces.push_back({emitters.positions[emitters.triangles[t][0]], emitters.normals[t], e});
   }
   return out;
 }
@@ -103,9 +116,10 @@ NearfieldResult NearfieldScene::light(const PlacedEmitters& emitters,
   switch (settings.method) {
     case NearfieldMethod::kAdaptive: {
       auto start = Clock::now();
-      AdaptiveSampling a =
-          sample_adaptively(bvh_, n, sample_at,
-                            {settings.epsilon, settings.max_samples, lit_emitter_bounds(emitters)});
+      LitEmitters lit = lit_emitters(emitters);
+      AdaptiveSampling a = sample_adaptively(
+          bvh_, n, sample_at,
+          {settings.epsilon, settings.max_samples, std::move(lit.bounds), std::move(lit.faces)});
       out.sampling_seconds = seconds_since(start);
       out.evaluations = a.evaluations;
       start = Clock::now();

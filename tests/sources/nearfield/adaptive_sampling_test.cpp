@@ -38,7 +38,7 @@ struct EmitterAbove {
                                return sample_incident_radiance(x, emitters, std::span(&radiance, 1),
                                                                {}, nullptr, s);
                              },
-                             {epsilon, cap, {}});
+                             {epsilon, cap, {}, {}});
   }
 };
 
