@@ -11,6 +11,7 @@ base=$1
 new=$2
 shift 2
 out=${OUT:-$(mktemp -d)}
+mkdir -p "$out"
 rounds=${ROUNDS:-5}
 frames=${FRAMES:-50}
 scenes=("$@")
@@ -29,8 +30,10 @@ for scene in "${scenes[@]}"; do
     end=$(date +%s.%N)
     echo "{\"scene\":\"$name\",\"binary\":\"$which\",\"mode\":\"precompute\",\"seconds\":$(awk "BEGIN { print $end - $start }")}" >> "$results"
   done
+  modes=(luminaires)
+  grep -q '"portals"' "$scene" && modes+=(sky)
   for _ in $(seq 1 "$rounds"); do
-    for mode in luminaires sky; do
+    for mode in "${modes[@]}"; do
       for which in base new; do
         bin=${!which}
         flag=()

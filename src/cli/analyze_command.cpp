@@ -15,7 +15,7 @@
 #include "common/atomic_file.h"
 #include "common/input_error.h"
 #include "sources/portal/sh_energy.h"
-#include "store/transfer_file.h"
+#include "sources/transfer_file.h"
 
 namespace relight {
 

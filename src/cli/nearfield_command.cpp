@@ -22,7 +22,7 @@
 #include "render/vertex_shading.h"
 #include "runtime/relit_scene.h"
 #include "sources/nearfield/nearfield_lighting.h"
-#include "store/transfer_file.h"
+#include "sources/transfer_file.h"
 
 namespace relight {
 

@@ -14,7 +14,7 @@
 #include "math/rgb.h"
 #include "runtime/lighting_state.h"
 #include "runtime/relighter.h"
-#include "store/transfer_file.h"
+#include "sources/transfer_file.h"
 #include "trace/ray_tracer.h"
 
 namespace relight {

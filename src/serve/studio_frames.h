@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "math/rgb.h"
-#include "store/transfer_file.h"
+#include "sources/transfer_file.h"
 
 namespace relight {
 

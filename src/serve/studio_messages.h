@@ -14,7 +14,7 @@
 
 #include "math/vec3.h"
 #include "sources/luminaire/distribution_profile.h"
-#include "store/transfer_file.h"
+#include "sources/transfer_file.h"
 
 namespace relight {
 

@@ -1,6 +1,6 @@
 // The stored transfer of every source of a scene as the run time reads it: one view per
 // source module (luminaires, portals, near-field emitters), in scene order. Built by
-// store/transfer_file.h from a .rlt or from a precompute in memory.
+// sources/transfer_file.h from a .rlt or from a precompute in memory.
 #pragma once
 
 #include <cstddef>

@@ -94,6 +94,19 @@ constexpr std::uint32_t rlt_fourcc(const char (&code)[5]) {
          static_cast<std::uint32_t>(static_cast<unsigned char>(code[3])) << 24;
 }
 
+// The type of one of a family of indexed sections: two characters, then the index (of a
+// luminaire, a portal, …) in the upper 16 bits ("DX" + j).
+constexpr std::uint32_t rlt_indexed(char a, char b, std::size_t index) {
+  return static_cast<std::uint32_t>(static_cast<unsigned char>(a)) |
+         static_cast<std::uint32_t>(static_cast<unsigned char>(b)) << 8 |
+         static_cast<std::uint32_t>(index) << 16;
+}
+
+// "what j": the name of section j of a family.
+inline std::string rlt_indexed_name(const char* what, std::size_t index) {
+  return std::string(what) + " " + std::to_string(index);
+}
+
 // "'META' (0x4154454d)" for a four-character type, "7 (0x00000007)" otherwise.
 std::string rlt_type_label(std::uint32_t type);
 

@@ -13,7 +13,7 @@
 #include "runtime/relighter.h"
 #include "scene/scene_loader.h"
 #include "sources/precompute.h"
-#include "store/transfer_file.h"
+#include "sources/transfer_file.h"
 #include "trace/traced_scene.h"
 
 namespace relight {

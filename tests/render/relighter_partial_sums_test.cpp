@@ -8,7 +8,7 @@
 #include "runtime/relighter.h"
 #include "scene/scene_loader.h"
 #include "sources/precompute.h"
-#include "store/transfer_file.h"
+#include "sources/transfer_file.h"
 #include "support/daylight_room.h"
 
 namespace relight {

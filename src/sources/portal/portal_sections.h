@@ -1,0 +1,35 @@
+// The portals' part of a transfer file (docs/rlt-format.md, "Sections of a transfer file"):
+// per portal p its direct cubemap records ("CR" + p, bytes), their offsets ("CO", u64,
+// receivers + 1) and its interreflected SH transfer ("PI", blocked RGB), and its entry in the
+// metadata's "portals" (name, cubemap face size, shell centre and outward normal, diameter,
+// and statistics). Written and read here; store/ holds the container.
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "scene/scene.h"
+#include "sources/portal/portal_precompute.h"
+#include "sources/portal/portal_transfer_view.h"
+#include "store/rlt_file.h"
+#include "store/rlt_writer.h"
+
+namespace relight {
+
+// The writer keeps spans into `portals` until it writes.
+void write_portal_sections(RltWriter& writer, std::span<const PortalTransfer> portals);
+nlohmann::json portal_metadata(std::span<const PortalTransfer> portals);
+
+// Views of every portal's sections, from the metadata's "portals"; InputError (naming `where`
+// and the portal) when it disagrees with the scene or a size with `receivers` and K.
+std::vector<PortalTransferView> read_portal_sections(const RltFile& file,
+                                                     const nlohmann::json& metadata,
+                                                     std::span<const Portal> portals,
+                                                     std::size_t receivers, int sh_order,
+                                                     const std::string& where);
+
+}  // namespace relight
