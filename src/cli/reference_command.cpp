@@ -21,6 +21,7 @@
 #include "runtime/lighting_state.h"
 #include "scene/scene_loader.h"
 #include "sources/nearfield/emitter_placement.h"
+#include "sources/portal/portal_lighting.h"
 #include "trace/traced_scene.h"
 
 namespace relight {
@@ -49,15 +50,6 @@ void run_reference(const Scene& scene_file, const ReferenceRequest& request) {
   const LightingState state = request.state ? load_lighting_state(scene_file, *request.state)
                                             : default_lighting_state(scene_file);
   const Scene scene = scene_with_state(scene_file, state);
-  for (std::size_t p = 0; p < scene.portals.size(); ++p) {
-    if (scene.portals[p].frost_deg > 0) {
-      std::printf("reference: portal \"%s\": frosted glass is not modelled (traced as clear)\n",
-                  scene.portals[p].name.c_str());
-    }
-  }
-  if (!scene.exterior.empty()) {
-    std::printf("reference: exterior objects are not modelled (the environment is unblocked)\n");
-  }
   const std::vector<PlacedLuminaire> luminaires = place_luminaires(scene);
   // The reference traces the surfaces as they are: no subdivision for receivers.
   PreparationSettings preparation;
@@ -65,6 +57,9 @@ void run_reference(const Scene& scene_file, const ReferenceRequest& request) {
   preparation.crease_deg = scene.precompute.crease_deg;
   const PreparedMesh mesh = prepare_mesh(scene.geometry, preparation);
   const TracedScene traced = build_traced_scene(mesh, scene.materials);
+  // The exterior objects in front of each window, as the state places them for it.
+  std::vector<std::vector<ExteriorObject>> exterior;
+  for (const PortalState& p : state.portals) exterior.push_back(placed_exterior(scene, p.exterior));
   // The exterior of each portal; map files are read here, not in the tracer.
   std::vector<Environment> environments;
   for (const Portal& portal : scene.portals) {
@@ -72,7 +67,7 @@ void run_reference(const Scene& scene_file, const ReferenceRequest& request) {
   }
   const ReferenceScene ref =
       make_reference_scene(scene, mesh, traced, luminaires, std::move(environments),
-                           place_emitters(scene.emitters, state.emitters));
+                           place_emitters(scene.emitters, state.emitters), exterior);
   ReferenceSettings settings;
   settings.spp = request.spp;
   settings.seed = request.seed;

@@ -28,8 +28,8 @@ struct ReferenceRequest {
   int width = 640, height = 480;
   std::vector<ImageOutput> images;  // all written from one rendering
   bool progress = true;
-  // A lighting state (docs/lighting-state.md) applied to the scene: luminaires, portals'
-  // environments and tint, emitters. Absent: the scene's own.
+  // A lighting state (docs/lighting-state.md) applied to the scene: luminaires, windows'
+  // environment, tint, frost and exterior objects, emitters. Absent: the scene's own.
   std::optional<std::filesystem::path> state;
 };
 

@@ -8,7 +8,9 @@
 #include <string>
 #include <utility>
 
+#include "material/lambert.h"
 #include "math/frame.h"
+#include "math/sampling.h"
 
 namespace relight {
 
@@ -17,6 +19,8 @@ namespace {
 // Keeps visibility tests off the sampled portal triangle and its neighbours: a ray from x
 // to y stops this short of y, and the continuation from y starts this far beyond it.
 constexpr double kPortalMargin = 1e-4;  // m
+
+ReferenceFrost make_frost(double frost_deg);  // below, with the other frost helpers
 
 double triangle_area(const PreparedMesh& mesh, std::uint32_t triangle) {
   const Triangle& t = mesh.triangles[triangle];
@@ -66,8 +70,6 @@ Rgb environment_sample(const ExteriorView& view, std::size_t p, Vec3 origin, Vec
   const Vec3 w = d / dist;
   const double cos_x = dot(n, w), cos_y = std::abs(dot(y.normal, w));
   if (cos_x <= 0 || cos_y <= 0) return {};
-  const Rgb radiance = portal.tint * portal.environment.diffuse_radiance(w);
-  if (max_component(radiance) <= 0) return {};
   // x sees y, y is the first portal crossing, and the exterior lies beyond y.
   ++rays;
   if (view.traced.opaque.occluded({origin, w, 0, dist})) return {};
@@ -75,6 +77,7 @@ Rgb environment_sample(const ExteriorView& view, std::size_t p, Vec3 origin, Vec
   if (view.traced.portals.occluded({origin, w, 0, dist - kPortalMargin})) return {};
   ++rays;
   if (view.traced.opaque.occluded({y.position, w, kPortalMargin})) return {};
+  const Rgb radiance = through_glass(portal, y.position, w, false, rng, rays);
   return radiance * (cos_x * cos_y / dist2 * portal.area());
 }
 
@@ -82,12 +85,14 @@ Rgb environment_sample(const ExteriorView& view, std::size_t p, Vec3 origin, Vec
 Rgb sun_sample(const ExteriorView& view, std::size_t p, Vec3 origin, Vec3 n, Pcg32& rng,
                std::uint64_t& rays) {
   const std::optional<SunDisc>& sun = view.portals.portals[p].environment.sun();
-  if (!sun) return {};
+  if (!sun || view.portals.portals[p].frost) return {};  // frosted: in the area samples
   double e = 0;
   for (const Vec3& w : sample_sun_directions(*sun, rng)) {
     const double cos_x = dot(n, w);
     if (cos_x <= 0) continue;
     if (escape_portal(view, {origin, w}, rays) != static_cast<std::int32_t>(p)) continue;
+    const ReferencePortal& portal = view.portals.portals[p];
+    if (portal.exterior && portal.exterior->tracer.occluded({origin, w})) continue;
     e += 0.5 * sun->luminance * sun->solid_angle * cos_x;
   }
   return view.portals.portals[p].tint * Rgb{e, e, e};
@@ -96,7 +101,8 @@ Rgb sun_sample(const ExteriorView& view, std::size_t p, Vec3 origin, Vec3 n, Pcg
 }  // namespace
 
 ReferencePortals make_reference_portals(const Scene& scene, const PreparedMesh& mesh,
-                                        std::vector<Environment> environments) {
+                                        std::vector<Environment> environments,
+                                        const std::vector<std::vector<ExteriorObject>>& exterior) {
   if (environments.size() != scene.portals.size()) {
     throw std::invalid_argument("make_reference_portals: " + std::to_string(environments.size()) +
                                 " environments for " + std::to_string(scene.portals.size()) +
@@ -105,8 +111,33 @@ ReferencePortals make_reference_portals(const Scene& scene, const PreparedMesh& 
   ReferencePortals out;
   const std::vector<int> material_portal = scene.portal_of_material();  // −1 = kNoPortal
   for (std::size_t p = 0; p < scene.portals.size(); ++p) {
-    out.portals.push_back(
-        {scene.portals[p].name, std::move(environments[p]), scene.portals[p].tint, {}, {}});
+    out.portals.push_back({scene.portals[p].name,
+                           std::move(environments[p]),
+                           scene.portals[p].tint,
+                           {0, 0, 1},
+                           {},
+                           {},
+                           {},
+                           {}});
+    if (scene.portals[p].frost_deg > 0) {
+      out.portals.back().frost =
+          std::make_shared<const ReferenceFrost>(make_frost(scene.portals[p].frost_deg));
+    }
+    if (p >= exterior.size() || exterior[p].empty()) continue;
+    std::vector<Vec3> positions;
+    std::vector<Triangle> triangles;
+    std::vector<Rgb> albedo;
+    for (const ExteriorObject& o : exterior[p]) {
+      const auto first = static_cast<std::uint32_t>(positions.size());
+      positions.insert(positions.end(), o.positions.begin(), o.positions.end());
+      for (const Triangle& t : o.triangles) {
+        triangles.push_back({t[0] + first, t[1] + first, t[2] + first});
+        albedo.push_back(o.albedo);
+      }
+    }
+    RayTracer tracer(positions, triangles, sequential_ids(triangles.size()));
+    out.portals.back().exterior = std::make_shared<const ReferenceExterior>(ReferenceExterior{
+        std::move(positions), std::move(triangles), std::move(albedo), std::move(tracer)});
   }
   out.triangle_portal.reserve(mesh.triangles.size());
   for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
@@ -119,7 +150,139 @@ ReferencePortals make_reference_portals(const Scene& scene, const PreparedMesh& 
     portal.triangles.push_back(t);
     portal.cumulative_area.push_back(portal.area() + area);
   }
+  // Outward: the portal's mean face normal, turned away from the mesh's centroid (a window or
+  // skylight lies on the room's boundary, the room on the centroid's side).
+  Vec3 centroid;
+  for (const Vec3& v : mesh.positions) centroid += v;
+  if (!mesh.positions.empty()) centroid = centroid / static_cast<double>(mesh.positions.size());
+  for (ReferencePortal& portal : out.portals) {
+    Vec3 normal, centre;
+    for (const std::uint32_t t : portal.triangles) {
+      const Triangle& tri = mesh.triangles[t];
+      const Vec3 a = mesh.positions[tri[0]], b = mesh.positions[tri[1]], c = mesh.positions[tri[2]];
+      normal += cross(b - a, c - a);  // twice the area, along the face normal
+      centre += (a + b + c) * (length(cross(b - a, c - a)) / 6);
+    }
+    if (portal.area() <= 0) continue;
+    centre = centre / portal.area();
+    const Vec3 away = centre - centroid;
+    if (length(normal) > 0) {
+      normal = normalize(normal);
+      portal.outward = dot(normal, away) >= 0 ? normal : normal * -1.0;
+    } else if (length(away) > 0) {
+      portal.outward = normalize(away);
+    }
+  }
   return out;
+}
+
+std::optional<Rgb> exterior_radiance(const ReferencePortal& portal, const Ray& ray, Pcg32& rng,
+                                     std::uint64_t& rays) {
+  if (!portal.exterior) return std::nullopt;
+  const ReferenceExterior& x = *portal.exterior;
+  ++rays;
+  const RayHit hit = x.tracer.intersect(ray);
+  if (!hit.hit()) return std::nullopt;
+  const Triangle& t = x.triangles[hit.triangle];
+  const Vec3 a = x.positions[t[0]], b = x.positions[t[1]], c = x.positions[t[2]];
+  Vec3 n = normalize(cross(b - a, c - a));
+  if (dot(n, ray.direction) > 0) n = -n;  // two-sided: the side the ray sees
+  const Vec3 h = a * (1 - hit.u - hit.v) + b * hit.u + c * hit.v;
+  const Vec3 from = offset_from_surface(h, n);
+  Rgb e;
+  if (const std::optional<SunDisc>& sun = portal.environment.sun()) {
+    const double cos_s = dot(n, sun->direction);
+    ++rays;
+    if (cos_s > 0 && !x.tracer.occluded({from, sun->direction})) {
+      e += Rgb{1, 1, 1} * (sun->normal_illuminance * cos_s);
+    }
+  }
+  // The continuous environment: one cosine-distributed direction, E ≈ π·L.
+  const double u1 = rng.next_double(), u2 = rng.next_double();
+  const Vec3 w = frame_from_normal(n).to_world(sample_cosine_hemisphere(u1, u2));
+  ++rays;
+  if (!x.tracer.occluded({from, w})) e += portal.environment.diffuse_radiance(w) * kPi;
+  return lambertian_radiance(x.albedo[hit.triangle], e);
+}
+
+namespace {
+
+double frost_kernel(double cos_angle, double sigma) {
+  return std::exp((cos_angle - 1) / (sigma * sigma));
+}
+
+ReferenceFrost make_frost(double frost_deg) {
+  ReferenceFrost f;
+  f.sigma = radians(frost_deg);
+  const double s2 = f.sigma * f.sigma;
+  f.normaliser = 2 * kPi * s2 * (1 - std::exp(-2 / s2));
+  // Z(c) = ∫_{θ'' < 90°} K(ω, ω'')·cos θ'' dω'' with ω at cos θ = c, by the midpoint rule.
+  constexpr int kTheta = 512, kPhi = 256;
+  for (int i = 0; i <= 256; ++i) {
+    const double c = i / 256.0, s = std::sqrt(std::max(0.0, 1 - c * c));
+    double z = 0;
+    for (int a = 0; a < kTheta; ++a) {
+      const double theta = (a + 0.5) * (kPi / 2) / kTheta;
+      const double ct = std::cos(theta), st = std::sin(theta);
+      double ring = 0;
+      for (int b = 0; b < kPhi; ++b) {
+        const double phi = (b + 0.5) * 2 * kPi / kPhi;
+        ring += frost_kernel(s * st * std::cos(phi) + c * ct, f.sigma);
+      }
+      z += ring * ct * st * (kPi / 2 / kTheta) * (2 * kPi / kPhi);
+    }
+    f.z_of_cos.push_back(z);
+  }
+  return f;
+}
+
+double frost_z(const ReferenceFrost& f, double c) {
+  const double x = std::clamp(c, 0.0, 1.0) * 256;
+  const auto i = std::min(static_cast<std::size_t>(x), std::size_t{255});
+  const double t = x - static_cast<double>(i);
+  return f.z_of_cos[i] * (1 - t) + f.z_of_cos[i + 1] * t;
+}
+
+// A direction drawn from K(·, axis): the von Mises–Fisher distribution of κ = 1/σ².
+Vec3 sample_frost_direction(Vec3 axis, double sigma, Pcg32& rng) {
+  const double kappa = 1 / (sigma * sigma);
+  const double u = rng.next_double();
+  const double c = std::clamp(1 + std::log(u + (1 - u) * std::exp(-2 * kappa)) / kappa, -1.0, 1.0);
+  const double s = std::sqrt(std::max(0.0, 1 - c * c)), phi = 2 * kPi * rng.next_double();
+  return normalize(frame_from_normal(axis).to_world({s * std::cos(phi), s * std::sin(phi), c}));
+}
+
+// What lies outside along `dir`: the first exterior object, else the environment.
+Rgb seen_outside(const ReferencePortal& portal, Vec3 from, Vec3 dir, bool with_sun, Pcg32& rng,
+                 std::uint64_t& rays) {
+  if (const std::optional<Rgb> object = exterior_radiance(portal, {from, dir, 1e-4}, rng, rays)) {
+    return *object;
+  }
+  return with_sun ? portal.environment.radiance(dir) : portal.environment.diffuse_radiance(dir);
+}
+
+}  // namespace
+
+Rgb through_glass(const ReferencePortal& portal, Vec3 from, Vec3 dir, bool with_sun, Pcg32& rng,
+                  std::uint64_t& rays) {
+  if (!portal.frost) return portal.tint * seen_outside(portal, from, dir, with_sun, rng, rays);
+  const ReferenceFrost& f = *portal.frost;
+  Rgb l;
+  const Vec3 w = sample_frost_direction(dir, f.sigma, rng);
+  const double c = dot(w, portal.outward);
+  if (c > 0) {
+    l += seen_outside(portal, from, w, false, rng, rays) * (c * f.normaliser / frost_z(f, c));
+  }
+  if (const std::optional<SunDisc>& sun = portal.environment.sun()) {
+    const double cs = dot(sun->direction, portal.outward);
+    ++rays;
+    if (cs > 0 && !(portal.exterior && portal.exterior->tracer.occluded({from, sun->direction}))) {
+      const double e = sun->integrated_luminance() * cs *
+                       frost_kernel(dot(sun->direction, dir), f.sigma) / frost_z(f, cs);
+      l += Rgb{e, e, e};
+    }
+  }
+  return portal.tint * l;
 }
 
 std::int32_t escape_portal(const ExteriorView& view, const Ray& ray, std::uint64_t& rays) {

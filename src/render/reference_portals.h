@@ -26,6 +26,8 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,16 +36,47 @@
 #include "math/sampling.h"
 #include "scene/mesh_preparation.h"
 #include "scene/scene.h"
+#include "sources/portal/shell_exterior.h"
+#include "trace/ray_tracer.h"
 #include "trace/traced_scene.h"
 
 namespace relight {
 
+// The exterior objects in front of one portal as a state places them. The reference lights
+// them as the shell's model does (sources/portal/shell_exterior.h: two-sided Lambertian,
+// direct light only) but without its approximations: at the true point the light ray meets,
+// the sun with shadows among the objects, and the environment's continuous part by one cosine
+// sample, occluded by the objects.
+struct ReferenceExterior {
+  std::vector<Vec3> positions;
+  std::vector<Triangle> triangles;
+  std::vector<Rgb> albedo;  // per triangle
+  RayTracer tracer;         // ids: triangle index
+};
+
+// Frosted glass as the reference sees it: the shell's flux-preserving von Mises–Fisher
+// scattering (sources/portal/shell_frost.h) taken continuously. Light arriving from ω in front
+// of the window (c(ω) = ω·outward > 0) leaves toward ω' with weight K(ω, ω')·c(ω')/Z(ω),
+// K = exp((ω·ω' − 1)/σ²), σ = frost_deg, Z(ω) = ∫_{c>0} K(ω, ω'')·c(ω'') dω'', so that
+//     L'(ω') = ∫_{c>0} L(ω)·c(ω)·K(ω, ω')/Z(ω) dω.
+// One sample: ω drawn from K(·, ω') (a von Mises–Fisher distribution, normaliser C), L'(ω') ≈
+// L(ω)·c(ω)·C/Z(ω); the sun's share is taken exactly, E_disc·c(s)·K(s, ω')/Z(s). Z depends
+// only on c(ω): a table of 257 values over c ∈ [0, 1].
+struct ReferenceFrost {
+  double sigma = 0;              // radians
+  std::vector<double> z_of_cos;  // Z at c = i / 256
+  double normaliser = 0;         // C = ∫_sphere K dω = 2πσ²(1 − exp(−2/σ²))
+};
+
 struct ReferencePortal {
   std::string name;
   Environment environment;
-  Rgb tint{1, 1, 1};                     // the glass's transmittance per channel
-  std::vector<std::uint32_t> triangles;  // prepared-mesh triangle ids
-  std::vector<double> cumulative_area;   // running sums of the triangles' areas, m²
+  Rgb tint{1, 1, 1};                                  // the glass's transmittance per channel
+  Vec3 outward{0, 0, 1};                              // unit, from the room toward the environment
+  std::shared_ptr<const ReferenceFrost> frost;        // null: clear glass
+  std::shared_ptr<const ReferenceExterior> exterior;  // null: none in front of it
+  std::vector<std::uint32_t> triangles;               // prepared-mesh triangle ids
+  std::vector<double> cumulative_area;                // running sums of the triangles' areas, m²
   double area() const { return cumulative_area.empty() ? 0.0 : cumulative_area.back(); }
 };
 
@@ -59,8 +92,22 @@ struct ReferencePortals {
 // reads map files, tests pass environments directly). Portal triangles of a material that
 // no portal names stay openings to a black exterior. Throws std::invalid_argument when
 // the counts differ.
-ReferencePortals make_reference_portals(const Scene& scene, const PreparedMesh& mesh,
-                                        std::vector<Environment> environments);
+// `exterior[i]`: the exterior objects placed for scene.portals[i] (empty: none).
+ReferencePortals make_reference_portals(
+    const Scene& scene, const PreparedMesh& mesh, std::vector<Environment> environments,
+    const std::vector<std::vector<ExteriorObject>>& exterior = {});
+
+// The luminance that reaches the room through the portal's glass looking along `dir` (outward):
+// the exterior object or environment seen, through frost when the glass is frosted, tinted;
+// the sun disc only when `with_sun` (area samples leave it to the sun-cone samples of clear
+// glass; frosted glass spreads it, and it is included here).
+Rgb through_glass(const ReferencePortal& portal, Vec3 from, Vec3 dir, bool with_sun, Pcg32& rng,
+                  std::uint64_t& rays);
+
+// The luminance leaving the first exterior object along `ray` (which starts outside the
+// window) back toward its origin, or nothing when the ray reaches the environment.
+std::optional<Rgb> exterior_radiance(const ReferencePortal& portal, const Ray& ray, Pcg32& rng,
+                                     std::uint64_t& rays);
 
 // What the tracer needs to look at the exterior.
 struct ExteriorView {

@@ -149,11 +149,11 @@ Rgb indirect_sample(PathContext& ctx, Vec3 p, Vec3 n) {
 ReferenceScene make_reference_scene(const Scene& scene, const PreparedMesh& mesh,
                                     const TracedScene& traced,
                                     const std::vector<PlacedLuminaire>& luminaires,
-                                    std::vector<Environment> environments,
-                                    PlacedEmitters emitters) {
+                                    std::vector<Environment> environments, PlacedEmitters emitters,
+                                    const std::vector<std::vector<ExteriorObject>>& exterior) {
   ReferenceScene ref{mesh, traced, luminaires, {}, {}, {}, {}};
   ref.emitters = make_reference_emitters(std::move(emitters));
-  ref.portals = make_reference_portals(scene, mesh, std::move(environments));
+  ref.portals = make_reference_portals(scene, mesh, std::move(environments), exterior);
   for (std::size_t j = 0; j < luminaires.size(); ++j) {
     const Luminaire& l = scene.luminaires.at(j);
     const LuminousOpening o = luminaires[j].distribution.opening();
@@ -238,7 +238,7 @@ ReferenceImages reference_render(const PinholeCamera& camera, const ReferenceSce
             const std::int32_t p = escape_portal(view, ray, ctx.rays);
             if (p == kNoPortal) continue;
             const ReferencePortal& portal = ref.portals.portals[static_cast<std::size_t>(p)];
-            l_sum += portal.tint * portal.environment.radiance(ray.direction);
+            l_sum += through_glass(portal, ray.origin, ray.direction, true, ctx.rng, ctx.rays);
             ++exterior;
             continue;
           }

@@ -69,7 +69,8 @@ ReferenceScene make_reference_scene(const Scene& scene, const PreparedMesh& mesh
                                     const TracedScene& traced,
                                     const std::vector<PlacedLuminaire>& luminaires,
                                     std::vector<Environment> environments = {},
-                                    PlacedEmitters emitters = {});
+                                    PlacedEmitters emitters = {},
+                                    const std::vector<std::vector<ExteriorObject>>& exterior = {});
 
 // Rays cast (closest-hit and shadow) and wall time of one estimate.
 struct ReferenceStats {
