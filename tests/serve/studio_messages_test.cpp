@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "common/input_error.h"
+#include "runtime/lighting_state.h"
 #include "serve/studio_messages.h"
 #include "tiny_studio_room.h"
 
@@ -124,6 +125,32 @@ TEST(StudioMessages, HelloListsTheEmitters) {
   EXPECT_NEAR(pivot[1], 2, 1e-12);
   EXPECT_NEAR(pivot[2], 1.2, 1e-12);
   EXPECT_NEAR(e["size"].get<double>(), 0.2 * std::sqrt(2.0), 1e-12);  // half the diagonal
+}
+
+// What the server does with a state message on arrival (StudioServer: apply_lighting_state,
+// whose InputError goes back to the sender as an error naming the JSON path): emitter states
+// for an unknown name or with a non-number placement are refused.
+TEST(StudioMessages, BadEmitterStatesAreRefusedWithTheirJsonPath) {
+  const testing::TinyStudioRoom lit(testing::tiny_studio_room_with_emitter_json());
+  const Scene& scene = lit.transfer.scene;
+  const auto error = [&](const char* text) -> std::string {
+    LightingState state = default_lighting_state(scene);
+    try {
+      apply_lighting_state(state, scene, nlohmann::json::parse(text), "message", ".");
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "accepted";
+  };
+  EXPECT_EQ(error(R"({"emitters":{"lamp":{"on":true}}})"),
+            "message:/emitters/lamp: no emitter named \"lamp\" in the precomputed scene");
+  EXPECT_NE(error(R"({"emitters":{"panel":{"rotate_deg":"NaN"}}})")
+                .find("message:/emitters/panel/rotate_deg: expected a number"),
+            std::string::npos);
+  EXPECT_NE(error(R"({"emitters":{"panel":{"translate":[0,"x",0]}}})")
+                .find("message:/emitters/panel/translate"),
+            std::string::npos);
+  EXPECT_EQ(error(R"({"emitters":{"panel":{"translate":[0.5,0,0],"luminance":100}}})"), "accepted");
 }
 
 }  // namespace
