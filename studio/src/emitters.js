@@ -15,6 +15,7 @@
 // server coalesces). A press on a marker is the emitter's, not the camera's or a probe.
 import * as THREE from 'three';
 import { hexToLinear, linearToHex, luminance } from './colors.js';
+import { clearGroup, sceneDiagonal } from './overlay.js';
 import { el, numberInput, onValue, row, setIfIdle, sliderNumber } from './ui.js';
 
 const round4 = (x) => Number(x.toFixed(4));
@@ -174,15 +175,9 @@ export class EmitterMarkers {
   setScene(hello) {
     this.hello = hello;
     this.drag = null;
-    this.group.traverse((o) => {
-      o.geometry?.dispose();
-      o.material?.dispose?.();
-    });
-    this.group.clear();
+    clearGroup(this.group);
     this._key = null;
-    const b = hello.bounds;
-    const diagonal = b ? Math.hypot(...b.max.map((v, i) => v - b.min[i])) : 8;
-    const small = Math.max(0.02, diagonal * 0.009);
+    const small = Math.max(0.02, sceneDiagonal(hello) * 0.009);
     this.items = (hello.emitters || []).map((em) => {
       const radius = Math.min(Math.max(small, 0.3 * em.size), 3 * small);
       const sphere = new THREE.Mesh(new THREE.SphereGeometry(radius, 20, 10), new THREE.MeshBasicMaterial({ toneMapped: false, transparent: true }));

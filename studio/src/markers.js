@@ -6,6 +6,7 @@ import * as THREE from 'three';
 import { srgbToLinear } from './colors.js';
 import { linearToHex } from './colors.js';
 import { effectiveLuminaire } from './luminaire_model.js';
+import { clearGroup, sceneDiagonal } from './overlay.js';
 
 export class Markers {
   constructor(viewer, store) {
@@ -23,15 +24,9 @@ export class Markers {
   setScene(hello) {
     this.hello = hello;
     // Free the previous scene's markers (a reconnect builds them anew).
-    this.group.traverse((o) => {
-      o.geometry?.dispose();
-      o.material?.dispose?.();
-    });
-    this.group.clear();
+    clearGroup(this.group);
     this._key = null;
-    const b = hello.bounds;
-    const size = b ? Math.hypot(...b.max.map((v, i) => v - b.min[i])) : 8;
-    this.radius = Math.max(0.02, size * 0.006);
+    this.radius = Math.max(0.02, sceneDiagonal(hello) * 0.006);
     this.items = hello.luminaires.map((lum) => {
       const sphere = new THREE.Mesh(new THREE.SphereGeometry(this.radius, 16, 8), new THREE.MeshBasicMaterial({ toneMapped: false, transparent: true }));
       sphere.position.set(...lum.position);
