@@ -53,7 +53,8 @@ int run_nearfield(const NearfieldArgs& args) {
   settings.scene_occlusion = args.scene_occlusion;
 
   const NearfieldTransferView& nf = t.view.nearfield;
-  const NearfieldScene scene(nf.receiver_positions, nf.sh_order, t.positions, nf.opaque_triangles);
+  const NearfieldScene scene(t.view.scene.receiver_positions, nf.sh_order, t.positions,
+                             t.view.scene.opaque_triangles);
   const PlacedEmitters emitters = place_emitters(t.scene.emitters, state.emitters);
   const std::size_t k = static_cast<std::size_t>(sh_count(nf.sh_order));
 

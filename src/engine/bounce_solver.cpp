@@ -132,24 +132,22 @@ ChannelSolution solve_channel(const Gather& g, const Eigen::VectorXf& albedo,
   return solution;
 }
 
-}  // namespace
-
-BounceResult solve_bounces(const GatherOperator& gather, const Receivers& receivers,
-                           const Eigen::MatrixXf& direct, const BounceSettings& settings,
-                           bool progress) {
-  const auto start = std::chrono::steady_clock::now();
+void check_sizes(const GatherOperator& gather, const Receivers& receivers,
+                 const Eigen::MatrixXf& direct) {
   const auto receiver_count = static_cast<Eigen::Index>(receivers.size());
-  const auto vertex_count = static_cast<Eigen::Index>(receivers.vertex_count);
-  if (gather.matrix.rows() != receiver_count || gather.matrix.cols() != vertex_count ||
+  if (gather.matrix.rows() != receiver_count ||
+      gather.matrix.cols() != static_cast<Eigen::Index>(receivers.vertex_count) ||
       receivers.albedo.size() != receivers.size()) {
     throw std::invalid_argument("bounce solver: gather operator and receivers disagree");
   }
   if (direct.rows() != receiver_count) {
     throw std::invalid_argument("bounce solver: direct irradiance needs one row per receiver");
   }
-  const RowMatrix direct_vertices = direct.topRows(vertex_count);
+}
 
-  BounceResult result;
+// The vertices' albedo, one vector per channel.
+std::array<Eigen::VectorXf, 3> channel_albedo(const Receivers& receivers) {
+  const auto vertex_count = static_cast<Eigen::Index>(receivers.vertex_count);
   std::array<Eigen::VectorXf, 3> albedo;
   for (int c = 0; c < 3; ++c) {
     albedo[c].resize(vertex_count);
@@ -158,6 +156,40 @@ BounceResult solve_bounces(const GatherOperator& gather, const Receivers& receiv
       albedo[c][v] = static_cast<float>(c == 0 ? a.r : (c == 1 ? a.g : a.b));
     }
   }
+  return albedo;
+}
+
+}  // namespace
+
+Eigen::MatrixXf solve_bounces_rgb(const GatherOperator& gather, const Receivers& receivers,
+                                  const Eigen::MatrixXf& direct, const BounceSettings& settings) {
+  check_sizes(gather, receivers, direct);
+  if (direct.cols() != 3) throw std::invalid_argument("bounce solver: RGB needs three columns");
+  const auto vertex_count = static_cast<Eigen::Index>(receivers.vertex_count);
+  const RowMatrix direct_vertices = direct.topRows(vertex_count);
+  const std::array<Eigen::VectorXf, 3> albedo = channel_albedo(receivers);
+  Progress quiet("interreflection", 1, false);
+  if (albedo[0] == albedo[1] && albedo[0] == albedo[2]) {
+    return solve_channel(gather.matrix, albedo[0], direct_vertices, settings, quiet).indirect;
+  }
+  Eigen::MatrixXf out(direct.rows(), 3);
+  for (int c = 0; c < 3; ++c) {
+    const RowMatrix column = direct_vertices.col(c);
+    out.col(c) = solve_channel(gather.matrix, albedo[c], column, settings, quiet).indirect.col(0);
+  }
+  return out;
+}
+
+BounceResult solve_bounces(const GatherOperator& gather, const Receivers& receivers,
+                           const Eigen::MatrixXf& direct, const BounceSettings& settings,
+                           bool progress) {
+  const auto start = std::chrono::steady_clock::now();
+  check_sizes(gather, receivers, direct);
+  const RowMatrix direct_vertices =
+      direct.topRows(static_cast<Eigen::Index>(receivers.vertex_count));
+
+  BounceResult result;
+  const std::array<Eigen::VectorXf, 3> albedo = channel_albedo(receivers);
   Progress bar("interreflection", 3 * static_cast<std::uint64_t>(std::max(settings.max_bounces, 1)),
                progress);
   for (int c = 0; c < 3; ++c) {

@@ -43,4 +43,11 @@ BounceResult solve_bounces(const GatherOperator& gather, const Receivers& receiv
                            const Eigen::MatrixXf& direct, const BounceSettings& settings,
                            bool progress);
 
+// A coloured source's light (issue 21: the run-time bounce of light computed exactly at run
+// time): `direct` is receivers × 3, column c the irradiance in channel c, which bounces with
+// the albedo's channel c only. Returns receivers × 3, the interreflected light per channel.
+// One solve of all three columns when the albedo is grey, else one column per channel.
+Eigen::MatrixXf solve_bounces_rgb(const GatherOperator& gather, const Receivers& receivers,
+                                  const Eigen::MatrixXf& direct, const BounceSettings& settings);
+
 }  // namespace relight

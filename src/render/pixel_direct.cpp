@@ -37,29 +37,4 @@ Rgb exact_direct_irradiance(const RayTracer& occluders, const std::vector<PixelL
   return e;
 }
 
-std::vector<PixelSun> pixel_suns(const Relighter& relighter, std::size_t portals) {
-  std::vector<PixelSun> suns;
-  for (std::size_t p = 0; p < portals; ++p) {
-    if (const std::optional<PortalSun>& s = relighter.sharp_sun(p)) {
-      suns.push_back({static_cast<std::uint32_t>(p), s->direction, s->illuminance});
-    }
-  }
-  return suns;
-}
-
-Rgb sun_irradiance(const RayTracer& occluders, const RayTracer& portals,
-                   const std::vector<PixelSun>& suns, Vec3 p, Vec3 n) {
-  Rgb e;
-  for (const PixelSun& s : suns) {
-    const double c = dot(n, s.direction);
-    if (c <= 0) continue;
-    const Vec3 origin = offset_from_surface(p, n);
-    const RayHit window = portals.intersect({origin, s.direction});
-    if (!window.hit() || window.triangle != s.portal) continue;
-    if (occluders.occluded({origin, s.direction})) continue;  // before or past the window
-    e += s.illuminance * c;
-  }
-  return e;
-}
-
 }  // namespace relight

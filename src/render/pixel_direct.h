@@ -33,20 +33,4 @@ std::vector<PixelLight> pixel_lights(const Scene& scene, const Relighter& religh
 Rgb exact_direct_irradiance(const RayTracer& occluders, const std::vector<PixelLight>& lights,
                             Vec3 p, Vec3 n);
 
-// A portal's sharp sun (sources/portal/portal_lighting.h) for per-pixel tracing: the direct sun
-// lands exactly where its rays pass the window, instead of within a shell cubemap cell
-// (2.8° at 32² a face) interpolated between vertices.
-struct PixelSun {
-  std::uint32_t portal = 0;  // the portal the sun shines through
-  Vec3 direction;            // unit, toward the sun
-  Rgb illuminance;           // lx normal to the sun, tint included
-};
-
-std::vector<PixelSun> pixel_suns(const Relighter& relighter, std::size_t portals);
-
-// Σ E·max(0, n·s) over the suns whose ray from p meets no opaque surface and crosses its
-// own portal first (`portals`: the portal triangles, ids = portal index).
-Rgb sun_irradiance(const RayTracer& occluders, const RayTracer& portals,
-                   const std::vector<PixelSun>& suns, Vec3 p, Vec3 n);
-
 }  // namespace relight

@@ -17,7 +17,14 @@ ShadedImages render_relit_scene(RelitScene& scene, const Camera& camera, int wid
     const RayHit hit = windows.intersect({origin, dir});
     if (!hit.hit()) return Rgb{};
     const Shell& shell = lit.shell(hit.triangle);
-    return shell.cubemap[cubemap_texel_index(shell.face_size, cubemap_texel(shell.face_size, dir))];
+    Rgb l =
+        shell.cubemap[cubemap_texel_index(shell.face_size, cubemap_texel(shell.face_size, dir))];
+    for (const PortalSun& sun : lit.suns()) {  // traced exactly, so not in the shell
+      if (sun.portal == hit.triangle && sun_disc_luminance(sun.disc, normalize(dir)) > 0) {
+        l += sun.illuminance * (sun.disc.luminance / sun.disc.normal_illuminance);
+      }
+    }
+    return l;
   };
   if (!pixel_direct) {
     return shade_vertices(
@@ -26,12 +33,12 @@ ShadedImages render_relit_scene(RelitScene& scene, const Camera& camera, int wid
   }
   const std::vector<float> indirect = scene.indirect_irradiance();
   const std::vector<PixelLight> lights = pixel_lights(t.scene, lit);
-  const std::vector<PixelSun> suns = pixel_suns(lit, t.scene.portals.size());
+  const SunGeometry sun_geometry = lit.sun_geometry();
   const EmitterLighting* emitters = lit.emitters();
   return shade_vertices(pinhole, {occluders, t.positions, t.triangles, t.vertex_albedo, indirect,
                                   [&](Vec3 p, Vec3 n) {
                                     Rgb e = exact_direct_irradiance(occluders, lights, p, n) +
-                                            sun_irradiance(occluders, windows, suns, p, n);
+                                            sun_irradiance(sun_geometry, lit.suns(), p, n);
                                     if (emitters != nullptr) {
                                       e += emitter_direct_irradiance(emitters->placed(), &occluders,
                                                                      p, n);

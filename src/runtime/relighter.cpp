@@ -11,17 +11,31 @@
 
 namespace relight {
 
+namespace {
+
+std::optional<RuntimeScene> make_runtime_scene(const TransferView& transfer, const Scene& scene) {
+  if (scene.portals.empty() && scene.emitters.empty()) return std::nullopt;
+  BounceSettings bounce;
+  bounce.tolerance = scene.precompute.tolerance;
+  bounce.max_bounces = scene.precompute.max_bounces;
+  return std::optional<RuntimeScene>(std::in_place, transfer.scene, bounce);
+}
+
+}  // namespace
+
 Relighter::Relighter(TransferView transfer, const Scene& scene, RelighterSettings settings)
     : transfer_(std::move(transfer)),
+      runtime_(make_runtime_scene(transfer_, scene)),
       luminaires_(
           {transfer_.luminaires, transfer_.receivers, transfer_.sh_order, transfer_.direct_sh_mode},
           scene, settings.window),
-      portals_({transfer_.portals, transfer_.receivers, transfer_.portal_sh_order}, scene),
+      portals_({transfer_.portals, transfer_.receivers, transfer_.portal_sh_order},
+               runtime_ ? &*runtime_ : nullptr, scene),
       state_(default_lighting_state(scene)) {
   terms_.push_back({&luminaires_, {}});
   terms_.push_back({&portals_, {}});
   if (!scene.emitters.empty()) {
-    emitters_.emplace(transfer_.nearfield, scene, settings.emitters);
+    emitters_.emplace(transfer_.nearfield, *runtime_, scene, settings.emitters);
     terms_.push_back({&*emitters_, {}});
   }
   for (Term& term : terms_) {

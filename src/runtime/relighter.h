@@ -43,15 +43,19 @@ class Relighter {
   // Irradiance per receiver, RGB interleaved: out.size() == 3 · receivers. Without
   // direct light, what renderers that evaluate direct light per pixel still need: the
   // interreflected light and the portals' direct skylight, but not the luminaires' direct
-  // light, the portals' sharp suns (see sharp_sun()) nor the emitters' direct light (see
+  // light, the portals' exact suns (see suns()) nor the emitters' direct light (see
   // emitters()).
   // Each kind of source keeps its partial sum between calls, and only the kinds whose state
   // changed since are summed again.
   void relight(std::span<float> out, bool include_direct = true);
-  // The sun of portal p when it is sharp (clear glass, unoccluded), for per-pixel tracing.
-  const std::optional<PortalSun>& sharp_sun(std::size_t p) const {
-    return portals_.portal(p).sharp_sun;
-  }
+  // The suns traced exactly (behind clear glass) and what they are traced against, for
+  // per-pixel tracing (sources/portal/portal_sun.h).
+  std::span<const PortalSun> suns() const { return portals_.suns(); }
+  SunGeometry sun_geometry() const { return portals_.sun_geometry(); }
+  const PortalSetLighting& portals() const { return portals_; }
+  // The scene's receivers, occluders and gather operator for light computed at run time;
+  // null for a scene with neither portals nor emitters.
+  const RuntimeScene* runtime_scene() const { return runtime_ ? &*runtime_ : nullptr; }
   // The current shell of portal p (for renderers showing the view out of a window).
   const Shell& shell(std::size_t p) const { return portals_.portal(p).shell; }
   // Wall time of the last shell update of portal p, seconds.
@@ -85,6 +89,7 @@ class Relighter {
   };
 
   TransferView transfer_;
+  std::optional<RuntimeScene> runtime_;  // with portals or emitters
   LuminaireLighting luminaires_;
   PortalSetLighting portals_;
   LightingState state_;

@@ -57,6 +57,7 @@ std::unique_ptr<RayTracer> tracer_of(const TransferFile& t, std::span<const std:
 }  // namespace
 
 const RayTracer& RelitScene::opaque_tracer() {
+  if (const RuntimeScene* runtime = relighter_->runtime_scene()) return runtime->occluders();
   if (!opaque_tracer_) {
     opaque_tracer_ =
         tracer_of(*transfer_, transfer_->opaque_triangles, transfer_->opaque_triangles);
@@ -65,6 +66,7 @@ const RayTracer& RelitScene::opaque_tracer() {
 }
 
 const RayTracer& RelitScene::portal_tracer() {
+  if (const RuntimeScene* runtime = relighter_->runtime_scene()) return runtime->glass();
   if (!portal_tracer_) {
     portal_tracer_ =
         tracer_of(*transfer_, transfer_->portal_triangles, transfer_->portal_of_triangle);

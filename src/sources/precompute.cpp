@@ -69,8 +69,9 @@ Precomputed precompute_transfer(const Scene& scene, const PrecomputeOptions& opt
   out.portals = std::move(portals.transfers);
   out.warnings = std::move(portals.warnings);
   out.nearfield = std::move(nearfield.result);
-  if (!scene.emitters.empty() && scene.precompute.nearfield_interreflection) {
-    out.nearfield.gather = std::move(gather.matrix);  // bounced at run time
+  if (!scene.portals.empty() ||
+      (!scene.emitters.empty() && scene.precompute.nearfield_interreflection)) {
+    out.gather = std::move(gather.matrix);  // bounced at run time
   }
   return out;
 }

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/SparseCore>
+
 #include "engine/receivers.h"
 #include "engine/source_precompute.h"
 #include "scene/mesh_preparation.h"
@@ -40,6 +42,10 @@ struct Precomputed {
   int portal_sh_order = 6;
   std::vector<PortalTransfer> portals;  // in scene order
   NearfieldTransfer nearfield;          // sh_order 0 when the scene has no emitters
+  // The gather operator (receivers × vertices), kept for what the run time bounces itself
+  // (engine/runtime_scene.h): the exact sun through portals, and near-field emitters with
+  // "nearfield_interreflection". Empty for a scene with neither.
+  Eigen::SparseMatrix<float, Eigen::RowMajor> gather;
   std::vector<PhaseTiming> phases;
   std::vector<std::string> warnings;  // e.g. portals too large for their shells (§6)
 };

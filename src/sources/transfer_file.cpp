@@ -29,6 +29,48 @@ constexpr std::uint32_t kVertexAlbedo = rlt_fourcc("MALB");
 constexpr std::uint32_t kTriangles = rlt_fourcc("MTRI");
 constexpr std::uint32_t kPortalTriangles = rlt_fourcc("MPRT");
 constexpr std::uint32_t kTriangleMaterials = rlt_fourcc("MMAT");
+constexpr std::uint32_t kGatherRows = rlt_fourcc("GROW");
+constexpr std::uint32_t kGatherColumns = rlt_fourcc("GCOL");
+constexpr std::uint32_t kGatherValues = rlt_fourcc("GVAL");
+
+std::span<const std::uint32_t> indices(const int* p, Eigen::Index n) {
+  return {reinterpret_cast<const std::uint32_t*>(p), static_cast<std::size_t>(n)};
+}
+
+// The gather operator kept for the run-time bounce (engine/runtime_scene.h), in compressed rows.
+void write_gather_sections(RltWriter& w, const Eigen::SparseMatrix<float, Eigen::RowMajor>& g) {
+  if (g.nonZeros() == 0) return;
+  if (!g.isCompressed()) throw std::invalid_argument("gather operator not compressed");
+  w.add_u32(kGatherRows, "gather rows", indices(g.outerIndexPtr(), g.rows() + 1));
+  w.add_u32(kGatherColumns, "gather columns", indices(g.innerIndexPtr(), g.nonZeros()));
+  w.add_f32(kGatherValues, "gather values",
+            std::span(g.valuePtr(), static_cast<std::size_t>(g.nonZeros())));
+}
+
+void read_gather_sections(const RltFile& file, std::size_t receivers, std::size_t vertices,
+                          RuntimeSceneView& view, const std::string& where) {
+  if (!file.find_info(kGatherRows)) return;
+  view.gather_rows = file.view<std::uint32_t>(kGatherRows);
+  view.gather_columns = file.view<std::uint32_t>(kGatherColumns);
+  view.gather_values = file.view<float>(kGatherValues);
+  if (view.gather_rows.size() != receivers + 1 || view.gather_rows.front() != 0 ||
+      view.gather_rows.back() != view.gather_columns.size() ||
+      view.gather_values.size() != view.gather_columns.size() ||
+      !std::is_sorted(view.gather_rows.begin(), view.gather_rows.end()) ||
+      std::any_of(view.gather_columns.begin(), view.gather_columns.end(),
+                  [&](std::uint32_t c) { return c >= vertices; })) {
+    fail_input(where, "gather operator has inconsistent sizes");
+  }
+}
+
+// The receivers (vertices, then every sensor set's points) with their normals.
+void add_sensor_receivers(const Scene& scene, RuntimeSceneView& view) {
+  for (const SensorSet& s : scene.sensors) {
+    view.receiver_positions.insert(view.receiver_positions.end(), s.points.begin(), s.points.end());
+    view.receiver_normals.insert(view.receiver_normals.end(), s.points.size(), s.normal);
+  }
+}
+
 }  // namespace
 
 std::string scene_digest(const nlohmann::json& scene_document) {
@@ -102,6 +144,7 @@ void write_transfer_file(const fs::path& file, const Precomputed& p, const Scene
   write_luminaire_sections(w, p.luminaires, photometry);
   write_portal_sections(w, p.portals);
   write_nearfield_sections(w, p.nearfield);
+  write_gather_sections(w, p.gather);
   try {
     w.write(file);
   } catch (const std::runtime_error& e) {
@@ -124,32 +167,34 @@ TransferView in_memory_view(const Precomputed& p) {
                          t.geometry.diameter, t.direct.records, t.direct.offsets,
                          t.indirect_blocks});
   }
-  if (p.nearfield.sh_order > 0) {
-    NearfieldTransferView& nf = v.nearfield;
-    nf.sh_order = p.nearfield.sh_order;
-    nf.transfer = p.nearfield.transfer;
-    const auto& g = p.nearfield.gather;
-    if (g.nonZeros() > 0) {
-      if (!g.isCompressed()) throw std::invalid_argument("in_memory_view: gather not compressed");
-      nf.gather_rows = {reinterpret_cast<const std::uint32_t*>(g.outerIndexPtr()),
-                        static_cast<std::size_t>(g.rows() + 1)};
-      nf.gather_columns = {reinterpret_cast<const std::uint32_t*>(g.innerIndexPtr()),
-                           static_cast<std::size_t>(g.nonZeros())};
-      nf.gather_values = {g.valuePtr(), static_cast<std::size_t>(g.nonZeros())};
-    }
-    nf.vertex_albedo.reserve(3 * p.receivers.vertex_count);
-    for (std::size_t v = 0; v < p.receivers.vertex_count; ++v) {
-      const Rgb a = p.receivers.albedo[v];
-      nf.vertex_albedo.insert(
-          nf.vertex_albedo.end(),
-          {static_cast<float>(a.r), static_cast<float>(a.g), static_cast<float>(a.b)});
-    }
-    nf.vertex_count = p.receivers.vertex_count;
-    nf.receiver_positions = p.receivers.positions;
-    nf.receiver_normals = p.receivers.normals;
-    nf.mesh_positions = p.mesh.positions;
-    for (std::size_t i = 0; i < p.mesh.triangles.size(); ++i) {
-      if (p.triangle_portal[i] == 0) nf.opaque_triangles.push_back(p.mesh.triangles[i]);
+  v.nearfield.sh_order = p.nearfield.sh_order;
+  v.nearfield.transfer = p.nearfield.transfer;
+  RuntimeSceneView& s = v.scene;
+  const auto& g = p.gather;
+  if (g.nonZeros() > 0) {
+    if (!g.isCompressed()) throw std::invalid_argument("in_memory_view: gather not compressed");
+    s.gather_rows = indices(g.outerIndexPtr(), g.rows() + 1);
+    s.gather_columns = indices(g.innerIndexPtr(), g.nonZeros());
+    s.gather_values = {g.valuePtr(), static_cast<std::size_t>(g.nonZeros())};
+  }
+  s.vertex_albedo.reserve(3 * p.receivers.vertex_count);
+  for (std::size_t i = 0; i < p.receivers.vertex_count; ++i) {
+    const Rgb a = p.receivers.albedo[i];
+    s.vertex_albedo.insert(s.vertex_albedo.end(), {static_cast<float>(a.r), static_cast<float>(a.g),
+                                                   static_cast<float>(a.b)});
+  }
+  s.vertex_count = p.receivers.vertex_count;
+  s.receiver_positions = p.receivers.positions;
+  s.receiver_normals = p.receivers.normals;
+  s.mesh_positions = p.mesh.positions;
+  for (std::size_t i = 0; i < p.mesh.triangles.size(); ++i) {
+    const std::uint32_t glass = p.triangle_portal[i];
+    if (glass == 0) {
+      s.opaque_triangles.push_back(p.mesh.triangles[i]);
+      s.opaque_ids.push_back(static_cast<std::uint32_t>(i));
+    } else if (glass != kGlassOutsidePortals) {
+      s.glass_triangles.push_back(p.mesh.triangles[i]);
+      s.glass_portal.push_back(glass - 1);
     }
   }
   return v;
@@ -246,21 +291,25 @@ TransferFile open_transfer_file(const fs::path& file) {
   NearfieldTransferView& nf = t.view.nearfield;
   if (!t.scene.emitters.empty()) {
     nf.sh_order = m.value("nearfield_sh_order", 0);
-    read_nearfield_sections(t.file, receivers, t.vertex_count, nf, where);
-    nf.vertex_albedo.assign(t.vertex_albedo.begin(), t.vertex_albedo.end());
-    nf.vertex_count = t.vertex_count;
-    nf.receiver_positions = t.positions;
-    const auto normals = t.file.view<float>(kMeshNormals);
-    if (normals.size() != 3 * t.vertex_count) fail_input(where, "mesh normals: inconsistent size");
-    for (std::size_t v = 0; v < t.vertex_count; ++v) {
-      nf.receiver_normals.push_back({normals[3 * v], normals[3 * v + 1], normals[3 * v + 2]});
-    }
-    for (const SensorSet& s : t.scene.sensors) {
-      nf.receiver_positions.insert(nf.receiver_positions.end(), s.points.begin(), s.points.end());
-      nf.receiver_normals.insert(nf.receiver_normals.end(), s.points.size(), s.normal);
-    }
-    nf.mesh_positions = t.positions;
-    for (const std::uint32_t i : t.opaque_triangles) nf.opaque_triangles.push_back(t.triangles[i]);
+    read_nearfield_sections(t.file, receivers, nf, where);
+  }
+  RuntimeSceneView& s = t.view.scene;
+  read_gather_sections(t.file, receivers, t.vertex_count, s, where);
+  s.vertex_albedo.assign(t.vertex_albedo.begin(), t.vertex_albedo.end());
+  s.vertex_count = t.vertex_count;
+  s.receiver_positions = t.positions;
+  const auto normals = t.file.view<float>(kMeshNormals);
+  if (normals.size() != 3 * t.vertex_count) fail_input(where, "mesh normals: inconsistent size");
+  for (std::size_t v = 0; v < t.vertex_count; ++v) {
+    s.receiver_normals.push_back({normals[3 * v], normals[3 * v + 1], normals[3 * v + 2]});
+  }
+  add_sensor_receivers(t.scene, s);
+  s.mesh_positions = t.positions;
+  for (const std::uint32_t i : t.opaque_triangles) s.opaque_triangles.push_back(t.triangles[i]);
+  s.opaque_ids = t.opaque_triangles;
+  for (std::size_t i = 0; i < t.portal_triangles.size(); ++i) {
+    s.glass_triangles.push_back(t.triangles[t.portal_triangles[i]]);
+    s.glass_portal.push_back(t.portal_of_triangle[i]);
   }
   return t;
 }

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "engine/runtime_scene.h"
 #include "sources/luminaire/luminaire_transfer_view.h"
 #include "sources/nearfield/nearfield_transfer_view.h"
 #include "sources/portal/portal_transfer_view.h"
@@ -20,6 +21,7 @@ struct TransferView {
   int portal_sh_order = 6;
   std::vector<PortalTransferView> portals;  // scene order
   NearfieldTransferView nearfield;          // sh_order 0 without emitters
+  RuntimeSceneView scene;                   // what the run time traces and bounces itself
 };
 
 }  // namespace relight

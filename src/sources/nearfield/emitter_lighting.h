@@ -14,9 +14,7 @@
 #include <span>
 #include <vector>
 
-#include "engine/bounce_solver.h"
-#include "engine/gather_operator.h"
-#include "engine/receivers.h"
+#include "engine/runtime_scene.h"
 #include "engine/source_term.h"
 #include "scene/scene.h"
 #include "sources/nearfield/emitter_placement.h"
@@ -33,13 +31,15 @@ struct EmitterLightingSettings {
   int face_size = 16;                 // cubemap texels per face side at each sample
   int visibility_samples = 16;        // points per emitter triangle for exact direct shadows
   int bounce_visibility_samples = 4;  // the same for the light the vertices reflect
+  int hat_subdivision = 2;            // s² points per triangle for what the vertices reflect
 };
 
 class EmitterLighting : public SourceTerm {
  public:
-  // Lit as the scene sets every emitter (after update()).
-  EmitterLighting(const NearfieldTransferView& transfer, const Scene& scene,
-                  EmitterLightingSettings settings = {});
+  // Lit as the scene sets every emitter (after update()). `runtime` is the scene's receivers,
+  // occluders and gather operator (bounced through when the precompute kept it).
+  EmitterLighting(const NearfieldTransferView& transfer, const RuntimeScene& runtime,
+                  const Scene& scene, EmitterLightingSettings settings = {});
 
   // Applies the emitters' states (scene order). Returns whether the term's sum changed; the
   // sampling and bounce wait for update().
@@ -54,7 +54,7 @@ class EmitterLighting : public SourceTerm {
   // The emitters as the current state places them, and the static scene that shadows them:
   // for exact direct light per pixel.
   const PlacedEmitters& placed() const { return placed_; }
-  const RayTracer& occluders() const { return occluders_; }
+  const RayTracer& occluders() const { return runtime_->occluders(); }
   // The last sampling (samples taken and seconds) and the wall time of its bounce.
   const NearfieldResult& last_sampling() const { return sampling_; }
   double last_bounce_seconds() const { return bounce_seconds_; }
@@ -64,23 +64,14 @@ class EmitterLighting : public SourceTerm {
   bool current_ = false;  // total_ and indirect_ are of states_
 
   const NearfieldTransferView* transfer_;
+  const RuntimeScene* runtime_;
   const Scene* scene_;
   EmitterLightingSettings settings_;
   NearfieldScene nearfield_;
-  RayTracer occluders_;
   std::vector<EmitterState> states_;
   PlacedEmitters placed_;
   NearfieldResult sampling_;
-  std::optional<GatherOperator> gather_;  // with "nearfield_interreflection"
-  Receivers receivers_;                   // albedo per receiver, for the bounce solver
-  std::vector<Vec3> ray_points_;          // where shadow rays from each receiver start
-  struct HatPoint {
-    Vec3 position, normal;
-    double weight = 0;
-  };
-  std::vector<HatPoint> hat_points_;    // quadrature of each vertex's hat function
-  std::vector<std::size_t> hat_first_;  // vertices + 1: vertex v's are [first[v], first[v+1])
-  BounceSettings bounce_;
+  bool bounces_ = false;  // with "nearfield_interreflection"
   double bounce_seconds_ = 0;
   std::vector<float> total_;     // 3 per receiver: direct + interreflected
   std::vector<float> indirect_;  // 3 per receiver: interreflected only

@@ -1,16 +1,15 @@
 // The near-field emitters' precompute (Sun 2005 §3.2.1): per receiver the shadowed SH
 // transfer t_k = ∫ V max(0, n·ω) Y_k dω (world frame, l < nearfield_sh_order). With
-// "nearfield_interreflection" the precompute also keeps the gather operator, and the run time
-// bounces the emitters' direct field through it (sources/nearfield/emitter_lighting.h):
-// bouncing the SH columns instead, as issue 5 did, assumes the same incident radiance at every
-// surface — the distant-light assumption that near-field emitters break (a ceiling above a
-// downward panel got no interreflected light at all). Nothing is stored without emitters.
+// "nearfield_interreflection" the precompute also keeps the gather operator (sources/precompute.h),
+// and the run time bounces the emitters' direct field through it
+// (sources/nearfield/emitter_lighting.h): bouncing the SH columns instead, as issue 5 did, assumes
+// the same incident radiance at every surface — the distant-light assumption that near-field
+// emitters break (a ceiling above a downward panel got no interreflected light at all). Nothing is
+// stored without emitters.
 #pragma once
 
 #include <cstdint>
 #include <vector>
-
-#include <Eigen/SparseCore>
 
 #include "engine/source_precompute.h"
 #include "scene/scene.h"
@@ -20,8 +19,6 @@ namespace relight {
 struct NearfieldTransfer {
   int sh_order = 0;             // 0: the scene has no emitters
   std::vector<float> transfer;  // receivers × K, K = sh_order²
-  // The gather operator (receivers × vertices) when the run time bounces the emitters' light.
-  Eigen::SparseMatrix<float, Eigen::RowMajor> gather;
 };
 
 class NearfieldPrecompute : public SourcePrecompute {

@@ -4,7 +4,11 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <stdexcept>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include "common/input_error.h"
 #include "light/environment_map_io.h"
@@ -39,8 +43,27 @@ std::vector<ExteriorObject> placed_exterior(const Scene& scene,
   return objects;
 }
 
-void update_portal_lighting(PortalLighting& lighting, const PortalTransferView& portal,
-                            int sh_order, const PortalState& state, const Scene& scene) {
+namespace {
+
+// The exterior objects as one ray tracer (null when there are none).
+std::shared_ptr<const RayTracer> exterior_tracer(const std::vector<ExteriorObject>& objects) {
+  std::vector<Vec3> positions;
+  std::vector<Triangle> triangles;
+  for (const ExteriorObject& o : objects) {
+    const auto base = static_cast<std::uint32_t>(positions.size());
+    positions.insert(positions.end(), o.positions.begin(), o.positions.end());
+    for (const Triangle& t : o.triangles)
+      triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+  }
+  if (triangles.empty()) return nullptr;
+  return std::make_shared<const RayTracer>(positions, triangles, sequential_ids(triangles.size()));
+}
+
+}  // namespace
+
+void update_portal_lighting(PortalLighting& lighting, std::uint32_t index,
+                            const PortalTransferView& portal, int sh_order,
+                            const PortalState& state, const Scene& scene) {
   const auto start = std::chrono::steady_clock::now();
   const Environment environment = [&] {
     try {
@@ -62,25 +85,23 @@ void update_portal_lighting(PortalLighting& lighting, const PortalTransferView& 
   // transfer (a map of high contrast through a window: floor error against the reference
   // 4.4 % mean, 16 % worst unmasked; see docs/design-notes.md).
   inputs.sh_outward_half = true;
+  // A sun in front of clear glass is traced exactly (portal_sun.h), not put into the shell.
+  const std::optional<SunDisc>& sun = environment.sun();
+  const bool exact_sun = sun && state.frost_deg == 0 && sun->normal_illuminance > 0 &&
+                         dot(sun->direction, portal.outward) > 0;
+  inputs.sun_disc = !exact_sun;
   const Shell& shell = lighting.shell;
   render_shell(inputs, {portal.centre, portal.outward}, portal.face_size, sh_order, lighting.shell,
                lighting.workspace);
   prepare_shell_cubemap(portal.face_size, shell.cubemap, lighting.cubemap);
-  lighting.sharp_sun.reset();
-  if (shell.sun_in_shell && state.frost_deg == 0) {
-    // The same shell without the sun's deposit, for renderers that trace the sun per pixel.
-    lighting.sky_cells = shell.cubemap;
-    Rgb& value = lighting.sky_cells[shell.sun_texel];
-    value = Rgb{std::max(0.0, value.r - shell.sun_radiance.r),
-                std::max(0.0, value.g - shell.sun_radiance.g),
-                std::max(0.0, value.b - shell.sun_radiance.b)};
-    prepare_shell_cubemap(portal.face_size, lighting.sky_cells, lighting.sky_cubemap);
-    const SunDisc& sun = *environment.sun();
-    lighting.sharp_sun = PortalSun{sun.direction, state.tint * sun.normal_illuminance};
+  lighting.sun.reset();
+  if (exact_sun) {
+    lighting.sun =
+        PortalSun{index, *sun, state.tint * sun->normal_illuminance, exterior_tracer(exterior)};
   }
   const auto k = static_cast<std::size_t>(sh_count(sh_order));
   lighting.weights.resize(3 * k);
-  lighting.active = false;
+  lighting.active = exact_sun && max_component(state.tint) > 0;
   for (std::size_t b = 0; b < k; ++b) {
     const Rgb c = shell.sh[b];
     lighting.weights[3 * b] = static_cast<float>(c.r);
@@ -92,17 +113,72 @@ void update_portal_lighting(PortalLighting& lighting, const PortalTransferView& 
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-PortalSetLighting::PortalSetLighting(PortalTransferSet transfer, const Scene& scene)
-    : transfer_(transfer), scene_(&scene) {
-  if (transfer_.portals.size() != scene.portals.size()) {
+PortalSetLighting::PortalSetLighting(PortalTransferSet transfer, const RuntimeScene* runtime,
+                                     const Scene& scene)
+    : transfer_(transfer), runtime_(runtime), scene_(&scene) {
+  if (transfer_.portals.size() != scene.portals.size() ||
+      (!scene.portals.empty() && (!runtime || runtime->receivers() != transfer_.receivers))) {
     throw std::invalid_argument("PortalSetLighting: transfer and scene disagree on portals");
   }
   for (const Portal& p : scene.portals) states_.push_back(portal_state(p, scene.exterior.size()));
   portals_.resize(scene.portals.size());
   for (std::size_t p = 0; p < portals_.size(); ++p) {
-    update_portal_lighting(portals_[p], transfer_.portals[p], transfer_.sh_order, states_[p],
-                           scene);
+    // The glass lies within its diameter of its centre (the largest vertex distance).
+    bounds_.push_back({transfer_.portals[p].centre, transfer_.portals[p].diameter});
+    update_portal_lighting(portals_[p], static_cast<std::uint32_t>(p), transfer_.portals[p],
+                           transfer_.sh_order, states_[p], scene);
   }
+  update_suns();
+}
+
+SunGeometry PortalSetLighting::sun_geometry() const {
+  return {runtime_->occluders(), runtime_->glass(), bounds_};
+}
+
+void PortalSetLighting::update_suns() {
+  std::vector<SunKey> keys;
+  std::vector<PortalSun> suns;
+  for (std::size_t p = 0; p < portals_.size(); ++p) {
+    if (const std::optional<PortalSun>& s = portals_[p].sun) {
+      keys.push_back({s->portal, s->disc.direction, s->illuminance, states_[p].exterior});
+      suns.push_back(*s);
+    }
+  }
+  if (keys == sun_keys_) return;
+  const auto start = std::chrono::steady_clock::now();
+  sun_keys_ = std::move(keys);
+  suns_ = std::move(suns);
+  sun_bounce_seconds_ = 0;
+  if (suns_.empty()) {
+    sun_direct_.clear();
+    sun_indirect_.clear();
+    sun_seconds_ = 0;
+    return;
+  }
+  const std::size_t n = runtime_->receivers();
+  const SunGeometry geometry = sun_geometry();
+  // The direct sun at every receiver where its shadow rays start.
+  sun_direct_.resize(3 * n);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const auto& range) {
+    for (std::size_t r = range.begin(); r != range.end(); ++r) {
+      const Rgb e = sun_irradiance(geometry, suns_, runtime_->ray_point(r), runtime_->normal(r));
+      sun_direct_[3 * r] = static_cast<float>(e.r);
+      sun_direct_[3 * r + 1] = static_cast<float>(e.g);
+      sun_direct_[3 * r + 2] = static_cast<float>(e.b);
+    }
+  });
+  // Its interreflection: what each vertex reflects is the sun's mean over its hat function
+  // (4² points a triangle: a patch edge crossing a triangle moves the flux it carries by at
+  // most 1/16 of it), bounced through the stored gather operator.
+  sun_indirect_.assign(3 * n, 0.0f);
+  if (runtime_->can_bounce()) {
+    std::vector<float> reflected(3 * n);
+    runtime_->hat_means(
+        [&](Vec3 p, Vec3 normal) { return sun_irradiance(geometry, suns_, p, normal); }, 4,
+        reflected);
+    sun_bounce_seconds_ = runtime_->bounce(reflected, sun_indirect_);
+  }
+  sun_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 bool PortalSetLighting::set_state(std::span<const PortalState> states) {
@@ -112,11 +188,12 @@ bool PortalSetLighting::set_state(std::span<const PortalState> states) {
   bool changed = false;
   for (std::size_t p = 0; p < portals_.size(); ++p) {
     if (states[p] == states_[p]) continue;
-    update_portal_lighting(portals_[p], transfer_.portals[p], transfer_.sh_order, states[p],
-                           *scene_);
     states_[p] = states[p];
+    update_portal_lighting(portals_[p], static_cast<std::uint32_t>(p), transfer_.portals[p],
+                           transfer_.sh_order, states_[p], *scene_);
     changed = true;
   }
+  if (changed) update_suns();
   return changed;
 }
 
@@ -130,16 +207,22 @@ void PortalSetLighting::add_block(std::size_t b, bool include_direct,
     const PortalLighting& l = portals_[p];
     if (!l.active) continue;
     const PortalTransferView& v = transfer_.portals[p];
-    const ShellCubemap& shell = include_direct || !l.sharp_sun ? l.cubemap : l.sky_cubemap;
     for (std::size_t i = 0; i < count; ++i) {
       const std::uint64_t at = v.offsets[base + i];
       const Rgb e =
-          dot_receiver_cubemap(v.records.subspan(at, v.offsets[base + i + 1] - at), shell);
+          dot_receiver_cubemap(v.records.subspan(at, v.offsets[base + i + 1] - at), l.cubemap);
       acc[0][i] += static_cast<float>(e.r);
       acc[1][i] += static_cast<float>(e.g);
       acc[2][i] += static_cast<float>(e.b);
     }
     add_weighted_block(v.indirect.data() + b * kp * 3 * kBlock, kp, l.weights.data(), acc);
+  }
+  if (sun_direct_.empty()) return;
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::size_t r = 3 * (base + i);
+    for (std::size_t c = 0; c < 3; ++c) {
+      acc[c][i] += sun_indirect_[r + c] + (include_direct ? sun_direct_[r + c] : 0.0f);
+    }
   }
 }
 
@@ -150,6 +233,7 @@ std::size_t PortalSetLighting::transfer_bytes() const {
     const PortalTransferView& v = transfer_.portals[p];
     bytes += v.indirect.size_bytes() + v.records.size_bytes() + v.offsets.size_bytes();
   }
+  bytes += (sun_direct_.size() + sun_indirect_.size()) * sizeof(float);
   return bytes;
 }
 

@@ -4,40 +4,37 @@
 // form for the direct component (a sparse dot product per receiver, the paper's Appendix
 // Eq. 7), and the shell's SH coefficients times colour as weights of the stored indirect
 // responses. Rebuilt only when the portal's state changes.
+//
+// Behind clear glass the sun is not in the shell (issue 21): it is traced exactly at every
+// receiver (sources/portal/portal_sun.h), and its interreflection is that exact direct light
+// bounced at run time through the stored gather operator (engine/runtime_scene.h) — a sharp
+// patch and the light it throws, where the shell's 2.8° cell and l < 6 SH smeared both.
+// Behind frosted glass the sun stays in the shell, which spreads it (shell_frost.h).
 #pragma once
 
 #include <optional>
 #include <span>
 #include <vector>
 
+#include "engine/runtime_scene.h"
 #include "engine/source_term.h"
 #include "light/environment.h"
 #include "scene/scene.h"
 #include "sources/portal/cubemap_encoding.h"
 #include "sources/portal/portal_state.h"
+#include "sources/portal/portal_sun.h"
 #include "sources/portal/portal_transfer_view.h"
 #include "sources/portal/shell.h"
 
 namespace relight {
 
-// A sun seen through clear glass: what a renderer can trace per pixel instead of taking it
-// from the shell's cubemap cell (2.8° at 32² a face) interpolated between vertices.
-struct PortalSun {
-  Vec3 direction;   // unit, toward the sun
-  Rgb illuminance;  // lx on a plane facing the sun, tint included
-};
-
 struct PortalLighting {
   Shell shell;
   ShellWorkspace workspace;
   ShellCubemap cubemap;  // the shell's cells and their per-face Haar transform
-  // The same without a sharp sun's cell deposit, valid when sharp_sun is set: direct light
-  // for renderers that add the sun per pixel.
-  ShellCubemap sky_cubemap;
-  std::vector<Rgb> sky_cells;  // scratch: its cells
-  // Set when the shell holds an unoccluded sun behind clear (unfrosted) glass; frosted
-  // glass spreads the sun over the shell and it stays in the cubemap.
-  std::optional<PortalSun> sharp_sun;
+  // Set when the sun is traced exactly (a sun in front of clear glass; the shell then holds
+  // no sun disc); frosted glass spreads the sun over the shell and it stays there.
+  std::optional<PortalSun> sun;
   std::vector<float> weights;  // K × 3: SH of the shell's outward half (indirect weights)
   bool active = false;         // any light at all
   double seconds = 0;          // wall time of the last update
@@ -48,8 +45,11 @@ struct PortalLighting {
 std::vector<ExteriorObject> placed_exterior(const Scene& scene,
                                             const std::vector<ExteriorPlacement>& placements);
 
-void update_portal_lighting(PortalLighting& lighting, const PortalTransferView& portal,
-                            int sh_order, const PortalState& state, const Scene& scene);
+// Renders portal `index`'s shell for `state` (without the sun disc when the sun is traced
+// exactly) and sets its weights and exact sun.
+void update_portal_lighting(PortalLighting& lighting, std::uint32_t index,
+                            const PortalTransferView& portal, int sh_order,
+                            const PortalState& state, const Scene& scene);
 
 struct PortalTransferSet {
   std::span<const PortalTransferView> portals;  // scene order
@@ -59,12 +59,15 @@ struct PortalTransferSet {
 
 // The portals' run-time term (Yue et al. 2009 §5, Appendix Eq. 7): per portal the sparse dot
 // product of each receiver's direct cubemap record with the shell's cubemap, plus the
-// shell's SH weights on the stored indirect responses. A portal's shell is rebuilt only when
-// its state changes.
+// shell's SH weights on the stored indirect responses; plus the exactly traced suns at every
+// receiver and their light bounced through the scene. A portal's shell is rebuilt only when
+// its state changes, the suns only when one of them changes.
 class PortalSetLighting : public SourceTerm {
  public:
-  // Lit as the scene sets every portal.
-  PortalSetLighting(PortalTransferSet transfer, const Scene& scene);
+  // Lit as the scene sets every portal. `runtime` traces the suns and bounces their light
+  // (without a stored gather operator the suns' interreflection is left out); it may be null
+  // only for a scene without portals.
+  PortalSetLighting(PortalTransferSet transfer, const RuntimeScene* runtime, const Scene& scene);
 
   // Applies the portals' states (scene order). Returns whether the term's sum changed.
   bool set_state(std::span<const PortalState> states);
@@ -73,12 +76,34 @@ class PortalSetLighting : public SourceTerm {
   std::size_t transfer_bytes() const override;
 
   const PortalLighting& portal(std::size_t p) const { return portals_.at(p); }
+  // The suns traced exactly now, and what they are traced against: for per-pixel tracing.
+  std::span<const PortalSun> suns() const { return suns_; }
+  SunGeometry sun_geometry() const;
+  // Wall time of the last suns' update: the direct light at every receiver and its bounce.
+  double sun_seconds() const { return sun_seconds_; }
+  double sun_bounce_seconds() const { return sun_bounce_seconds_; }
 
  private:
+  void update_suns();
+
   PortalTransferSet transfer_;
+  const RuntimeScene* runtime_;
   const Scene* scene_;
   std::vector<PortalState> states_;
   std::vector<PortalLighting> portals_;
+  std::vector<PortalBound> bounds_;  // per portal
+  std::vector<PortalSun> suns_;      // the portals' exact suns
+  // What suns_ was traced for: per sun its portal, disc, illuminance and exterior placement.
+  struct SunKey {
+    std::uint32_t portal;
+    Vec3 direction;
+    Rgb illuminance;
+    std::vector<ExteriorPlacement> exterior;
+    bool operator==(const SunKey&) const = default;
+  };
+  std::vector<SunKey> sun_keys_;
+  std::vector<float> sun_direct_, sun_indirect_;  // 3 per receiver (empty: no sun)
+  double sun_seconds_ = 0, sun_bounce_seconds_ = 0;
 };
 
 }  // namespace relight

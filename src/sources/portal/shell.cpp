@@ -60,7 +60,7 @@ void render_shell(const ShellInputs& inputs, const PortalFrame& portal, int face
                            sun ? &*sun : nullptr, shell.cubemap);
     if (sun) sun_seen = sun_visible(scene, portal.centre, sun->direction);
   }
-  shell.sun_in_shell = sun && sun_seen;
+  shell.sun_in_shell = sun && sun_seen && inputs.sun_disc;
   shell.sun_texel = 0;
   shell.sun_radiance = Rgb{};
   if (shell.sun_in_shell) {

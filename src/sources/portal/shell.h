@@ -49,6 +49,10 @@ struct ShellInputs {
   // rest cannot pass the portal, and in a band-limited projection a bright feature there
   // rings into directions that do (the relighter's indirect weights use this).
   bool sh_outward_half = false;
+  // Deposit the sun disc (step 1). Off when the run time traces the sun itself behind clear
+  // glass (sources/portal/portal_sun.h): the shell then holds the sky, the ground and the
+  // exterior objects (still lit by the sun), and the sun's energy is in neither representation.
+  bool sun_disc = true;
 };
 
 struct Shell {
@@ -57,7 +61,8 @@ struct Shell {
   int sh_order = 0;
   std::vector<Rgb> sh;        // sh_order² coefficients c_lm of the cubemap (math/sh.h), or
                               // of its outward half (ShellInputs::sh_outward_half)
-  bool sun_in_shell = false;  // the sun disc was deposited (a sun exists and is unoccluded)
+  bool sun_in_shell = false;  // the sun disc was deposited (a sun exists, is unoccluded and
+                              // ShellInputs::sun_disc)
   // What the sun added to cubemap[sun_texel], tint included (when sun_in_shell); frost then
   // spreads it over the texels around.
   std::size_t sun_texel = 0;

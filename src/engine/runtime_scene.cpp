@@ -1,0 +1,154 @@
+#include "engine/runtime_scene.h"
+
+#include <array>
+#include <chrono>
+#include <stdexcept>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+namespace relight {
+
+namespace {
+
+std::vector<Vec3> copy(std::span<const Vec3> s) {
+  return {s.begin(), s.end()};
+}
+
+}  // namespace
+
+RuntimeScene::RuntimeScene(const RuntimeSceneView& view, BounceSettings bounce)
+    : vertex_count_(view.vertex_count),
+      normals_(view.receiver_normals),
+      positions_(copy(view.mesh_positions)),
+      triangles_(view.opaque_triangles),
+      occluders_(positions_, view.opaque_triangles, view.opaque_ids),
+      glass_(positions_, view.glass_triangles, view.glass_portal),
+      bounce_(bounce) {
+  const std::size_t n = view.receiver_positions.size();
+  if (view.receiver_normals.size() != n || view.vertex_count > n ||
+      view.mesh_positions.size() != view.vertex_count ||
+      view.vertex_albedo.size() != 3 * view.vertex_count ||
+      view.glass_portal.size() != view.glass_triangles.size() ||
+      view.opaque_ids.size() != view.opaque_triangles.size()) {
+    throw std::invalid_argument("RuntimeScene: receivers, mesh and albedo disagree");
+  }
+  albedo_.positions = view.receiver_positions;
+  albedo_.normals = view.receiver_normals;
+  albedo_.vertex_count = view.vertex_count;
+  albedo_.sensor_count = n - view.vertex_count;
+  albedo_.albedo.assign(n, Rgb{});
+  for (std::size_t v = 0; v < view.vertex_count; ++v) {
+    albedo_.albedo[v] = {view.vertex_albedo[3 * v], view.vertex_albedo[3 * v + 1],
+                         view.vertex_albedo[3 * v + 2]};
+  }
+  PreparedMesh mesh;
+  mesh.positions = positions_;
+  mesh.triangles = triangles_;
+  ray_points_ = receiver_ray_points(albedo_, mesh);
+  if (!view.gather_rows.empty()) {
+    // The stored operator, copied once into the solver's matrix.
+    const Eigen::Map<const Eigen::SparseMatrix<float, Eigen::RowMajor>> map(
+        static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(view.vertex_count),
+        static_cast<Eigen::Index>(view.gather_values.size()),
+        reinterpret_cast<const int*>(view.gather_rows.data()),
+        reinterpret_cast<const int*>(view.gather_columns.data()), view.gather_values.data());
+    gather_.emplace();
+    gather_->matrix = map;
+  }
+  // The triangles around each vertex, and ∫ φ_v dA = Σ A_t / 3 over them.
+  std::vector<std::size_t> count(vertex_count_ + 1, 0);
+  for (const Triangle& t : triangles_) {
+    for (const std::uint32_t v : t) ++count[v + 1];
+  }
+  corner_first_.assign(vertex_count_ + 1, 0);
+  for (std::size_t v = 0; v < vertex_count_; ++v)
+    corner_first_[v + 1] = corner_first_[v] + count[v + 1];
+  corners_.resize(corner_first_.back());
+  std::vector<std::size_t> next(corner_first_.begin(), corner_first_.end() - 1);
+  hat_area_.assign(vertex_count_, 0.0);
+  for (std::size_t t = 0; t < triangles_.size(); ++t) {
+    const Triangle& tri = triangles_[t];
+    const double area = 0.5 * length(cross(positions_[tri[1]] - positions_[tri[0]],
+                                           positions_[tri[2]] - positions_[tri[0]]));
+    for (std::uint32_t k = 0; k < 3; ++k) {
+      corners_[next[tri[k]]++] = static_cast<std::uint32_t>(3 * t + k);
+      hat_area_[tri[k]] += area / 3;
+    }
+  }
+}
+
+void RuntimeScene::hat_means(const IrradianceField& irradiance, int subdivision,
+                             std::span<float> out) const {
+  const std::size_t n = receivers();
+  if (out.size() != 3 * n || subdivision < 1) {
+    throw std::invalid_argument("RuntimeScene::hat_means: bad output size or subdivision");
+  }
+  // Per triangle corner: ∫ E φ_corner over the triangle.
+  std::vector<Rgb> corner(3 * triangles_.size());
+  const int s = subdivision;
+  const double inv = 1.0 / s;
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, triangles_.size(), 64), [&](const auto& range) {
+        for (std::size_t t = range.begin(); t != range.end(); ++t) {
+          const Triangle& tri = triangles_[t];
+          const Vec3 a = positions_[tri[0]], b = positions_[tri[1]], c = positions_[tri[2]];
+          const Vec3 face = cross(b - a, c - a);
+          const double area = 0.5 * length(face);
+          if (!(area > 0)) continue;
+          const Vec3 normal = face / (2 * area);
+          const double weight = area / (s * s);
+          std::array<Rgb, 3> sum{};
+          const auto add = [&](double u, double v) {  // barycentrics toward b and c
+            const Rgb e = irradiance(a + (b - a) * u + (c - a) * v, normal) * weight;
+            sum[0] += e * (1 - u - v);
+            sum[1] += e * u;
+            sum[2] += e * v;
+          };
+          for (int i = 0; i < s; ++i) {
+            for (int j = 0; i + j < s; ++j) {
+              add((i + 1.0 / 3) * inv, (j + 1.0 / 3) * inv);  // the sub-triangle pointing up
+              if (i + j + 2 <= s) add((i + 2.0 / 3) * inv, (j + 2.0 / 3) * inv);  // and down
+            }
+          }
+          for (int k = 0; k < 3; ++k)
+            corner[3 * t + static_cast<std::size_t>(k)] = sum[static_cast<std::size_t>(k)];
+        }
+      });
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const auto& range) {
+    for (std::size_t r = range.begin(); r != range.end(); ++r) {
+      Rgb e;
+      if (r < vertex_count_ && hat_area_[r] > 0) {
+        for (std::size_t i = corner_first_[r]; i < corner_first_[r + 1]; ++i)
+          e += corner[corners_[i]];
+        e = e / hat_area_[r];
+      } else {
+        e = irradiance(ray_points_[r], normals_[r]);
+      }
+      out[3 * r] = static_cast<float>(e.r);
+      out[3 * r + 1] = static_cast<float>(e.g);
+      out[3 * r + 2] = static_cast<float>(e.b);
+    }
+  });
+}
+
+double RuntimeScene::bounce(std::span<const float> direct, std::span<float> indirect) const {
+  const std::size_t n = receivers();
+  if (!gather_ || direct.size() != 3 * n || indirect.size() != 3 * n) {
+    throw std::invalid_argument("RuntimeScene::bounce: no gather operator or bad sizes");
+  }
+  const auto start = std::chrono::steady_clock::now();
+  Eigen::MatrixXf columns(static_cast<Eigen::Index>(n), 3);
+  for (std::size_t r = 0; r < n; ++r) {
+    for (int c = 0; c < 3; ++c)
+      columns(static_cast<Eigen::Index>(r), c) = direct[3 * r + static_cast<std::size_t>(c)];
+  }
+  const Eigen::MatrixXf bounced = solve_bounces_rgb(*gather_, albedo_, columns, bounce_);
+  for (std::size_t r = 0; r < n; ++r) {
+    for (int c = 0; c < 3; ++c)
+      indirect[3 * r + static_cast<std::size_t>(c)] = bounced(static_cast<Eigen::Index>(r), c);
+  }
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace relight

@@ -1,0 +1,102 @@
+// What the run time traces and bounces its own light through (issues 11 and 21): light that
+// no stored response can hold — the exact sun through a window, near-field emitters a hand's
+// width from a surface — is computed at run time at every receiver, and its interreflection
+// bounced through the precompute's own gather operator (engine/gather_operator.h) with the
+// precompute's own solver (engine/bounce_solver.h). This is the one owner of that machinery:
+// the receivers, the static opaque mesh and its ray tracer, the portals' glass, the vertices'
+// albedo and the stored gather operator, and the quadrature of each vertex's hat function
+// that turns an exact irradiance field into what a vertex reflects.
+//
+// What bounces at a vertex is the mean of the exact irradiance over its hat function φ_v,
+//     Ē_v = ∫ E φ_v dA / ∫ φ_v dA,
+// so that the light interpolated between vertices carries the flux the surfaces receive: the
+// value at the vertex alone misses a sun patch's edge between vertices and underestimates a
+// peaked pool of light (an emitter's ceiling 2.5 % too dark at 0.25 m edges,
+// tests/cli/emitter_probe_test.cpp). The quadrature splits each triangle into s² equal
+// sub-triangles and takes E once at each one's centroid, weighted by the centroid's
+// barycentric coordinate toward each of the triangle's three vertices (exact for E linear on
+// each sub-triangle). Pinned by tests/engine/runtime_scene_test.cpp.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "engine/bounce_solver.h"
+#include "engine/gather_operator.h"
+#include "engine/receivers.h"
+#include "math/rgb.h"
+#include "math/vec3.h"
+#include "trace/ray_tracer.h"
+
+namespace relight {
+
+// The stored scene as the run time reads it (sources/transfer_file.h fills it from a .rlt or
+// from a precompute in memory).
+struct RuntimeSceneView {
+  std::size_t vertex_count = 0;
+  std::vector<Vec3> receiver_positions;  // vertices, then sensors
+  std::vector<Vec3> receiver_normals;    // vertices, then sensors; unit
+  std::span<const Vec3> mesh_positions;  // the vertices
+  std::vector<Triangle> opaque_triangles;
+  std::vector<std::uint32_t> opaque_ids;    // per opaque triangle: its index in the mesh
+  std::vector<Triangle> glass_triangles;    // the portals' glass
+  std::vector<std::uint32_t> glass_portal;  // per glass triangle: its portal (scene order)
+  std::vector<float> vertex_albedo;         // 3 per vertex
+  // The gather operator in compressed rows (receivers × vertices), empty when the precompute
+  // did not keep it: row r's entries are [rows[r], rows[r + 1]).
+  std::span<const std::uint32_t> gather_rows, gather_columns;
+  std::span<const float> gather_values;
+};
+
+// Irradiance (lx, RGB) at a point with a unit normal; called from many threads at once.
+using IrradianceField = std::function<Rgb(Vec3 point, Vec3 normal)>;
+
+class RuntimeScene {
+ public:
+  // Throws std::invalid_argument when the view's sizes disagree.
+  RuntimeScene(const RuntimeSceneView& view, BounceSettings bounce);
+
+  std::size_t receivers() const { return ray_points_.size(); }
+  const std::vector<Vec3>& receiver_positions() const { return albedo_.positions; }
+  std::size_t vertex_count() const { return vertex_count_; }
+  // Where rays from receiver r start (engine/receivers.h receiver_ray_points) and its normal.
+  Vec3 ray_point(std::size_t r) const { return ray_points_[r]; }
+  Vec3 normal(std::size_t r) const { return normals_[r]; }
+  // The static opaque scene (ids: the triangle's index in the mesh) and the portals' glass
+  // (ids: the portal's index).
+  const RayTracer& occluders() const { return occluders_; }
+  const RayTracer& glass() const { return glass_; }
+
+  // Whether the precompute kept the gather operator (bounce() is then available).
+  bool can_bounce() const { return gather_.has_value(); }
+
+  // out (3 per receiver): at vertices the mean of `irradiance` over the hat function with s²
+  // points per adjacent triangle (s = subdivision ≥ 1; a vertex with no triangle: the value
+  // at its ray point), at sensors the value at the sensor.
+  void hat_means(const IrradianceField& irradiance, int subdivision, std::span<float> out) const;
+
+  // The interreflected light (3 per receiver) of the direct irradiance `direct` (3 per
+  // receiver; its vertex rows are what the surfaces reflect): channel c bounces with the
+  // albedo's channel c. Returns the wall time, seconds. Needs can_bounce().
+  double bounce(std::span<const float> direct, std::span<float> indirect) const;
+
+ private:
+  std::size_t vertex_count_ = 0;
+  std::vector<Vec3> ray_points_, normals_;  // per receiver
+  std::vector<Vec3> positions_;
+  std::vector<Triangle> triangles_;  // opaque
+  RayTracer occluders_, glass_;
+  std::optional<GatherOperator> gather_;
+  Receivers albedo_;  // the bounce solver's receivers: albedo per receiver (0 at sensors)
+  BounceSettings bounce_;
+  // Vertex → the (triangle, corner) pairs around it, compressed: [first[v], first[v + 1]).
+  std::vector<std::size_t> corner_first_;
+  std::vector<std::uint32_t> corners_;  // 3 · triangle + corner
+  std::vector<double> hat_area_;        // ∫ φ_v dA per vertex
+};
+
+}  // namespace relight

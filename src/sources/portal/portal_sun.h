@@ -1,0 +1,63 @@
+// The sun through a window, exact at any point (issue 21). The shell (sources/portal/shell.h)
+// would put the sun's 0.53° disc into one 2.8° cubemap cell and, for the indirect light, into
+// SH of l < 6: at receivers the sun patch's edges smeared over about a quarter of a metre.
+// Behind clear glass the sun is instead traced from every point that needs it — vertices
+// and sensors when the sun moves (sources/portal/portal_lighting.h), pixels in
+// `render --direct pixel` — the way `relight reference` traces it (render/reference_portals.h):
+// a direction of the disc counts when its ray from the point leaves the room through this
+// portal (the first glass it crosses is this portal's) and meets no opaque surface on the
+// way nor past the window — the room's geometry, overhangs and neighbours in `geometry`
+// (the paper's backward occlusion, Yue et al. 2009 §4.1.2), and the exterior objects as the
+// state places them.
+//
+//     E = E_sun,n · tint · f · max(0, n · s),
+// f the fraction of the disc seen that way. Unoccluded, the mean of n·ω over the disc is n·s
+// exactly (∫_disc ω dω = s·π sin²r), so f = 1 gives the closed form. f is found in two
+// steps: 9 directions — the disc's centre and 8 points on its rim — and when they disagree
+// (the point is in a penumbra) 32 directions spread evenly over the disc's area (a Vogel
+// spiral), so f is exact to 1/32 there; a straight edge that cuts off less than the segment
+// between two neighbouring rim points (1.2 % of the disc) goes unseen. Before any ray, a
+// point from which no direction of the disc comes within the portal's bounding sphere gets
+// nothing. Pinned by tests/sources/portal/portal_sun_test.cpp (f at and across a window's edge
+// against the closed form) and tests/render/sun_accuracy_test.cpp (against the reference).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <span>
+
+#include "light/sky_model.h"
+#include "math/rgb.h"
+#include "math/vec3.h"
+#include "trace/ray_tracer.h"
+
+namespace relight {
+
+struct PortalSun {
+  std::uint32_t portal = 0;                   // the portal the sun shines through (scene order)
+  SunDisc disc;                               // direction and angular radius
+  Rgb illuminance;                            // lx on a plane facing the sun, tint included
+  std::shared_ptr<const RayTracer> exterior;  // the exterior objects as placed; null: none
+};
+
+// A sphere that holds a portal's glass.
+struct PortalBound {
+  Vec3 centre;
+  double radius = 0;
+};
+
+// What the sun's rays are traced against.
+struct SunGeometry {
+  const RayTracer& occluders;            // the static opaque scene
+  const RayTracer& glass;                // the portals' glass, ids: portal index
+  std::span<const PortalBound> portals;  // scene order
+};
+
+// The fraction of the sun's disc seen from `origin` (already off the surface) through its
+// portal, in [0, 1].
+double sun_disc_fraction(const SunGeometry& geometry, const PortalSun& sun, Vec3 origin);
+
+// Σ over `suns` of E_sun,n · f · max(0, n · s) at the surface point p of unit normal n.
+Rgb sun_irradiance(const SunGeometry& geometry, std::span<const PortalSun> suns, Vec3 p, Vec3 n);
+
+}  // namespace relight
