@@ -2,7 +2,10 @@
 // --sh-energy (the only one so far): per portal and colour channel, how much each SH order
 // of the stored indirect transfer can carry (Yue et al. 2009's Eq. 4–5 and
 // Figure 8; sources/portal/sh_energy.h), as a table on stdout and optionally a CSV
-// `portal,l,channel,energy,share,cumulative`.
+// `portal,l,channel,energy,share,cumulative,shell_energy` (with the energy per order of the
+// shell the relighter projects for the scene's state).
+#include <array>
+#include <cstdint>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -14,6 +17,7 @@
 #include "cli/commands.h"
 #include "common/atomic_file.h"
 #include "common/input_error.h"
+#include "sources/portal/portal_lighting.h"
 #include "sources/portal/sh_energy.h"
 #include "sources/transfer_file.h"
 
@@ -29,6 +33,7 @@ struct AnalyzeArgs {
 struct PortalEnergy {
   std::string name;
   std::vector<ShOrderEnergy> orders;
+  std::vector<std::array<double, 3>> shell;  // per order: Σ_m c_lm² of the scene's shell
 };
 
 constexpr const char* kChannelNames[3] = {"r", "g", "b"};
@@ -41,13 +46,14 @@ std::string csv_cell(const std::string& text) {
 }
 
 std::string sh_energy_csv(const std::vector<PortalEnergy>& portals) {
-  std::string csv = "portal,l,channel,energy,share,cumulative\n";
+  std::string csv = "portal,l,channel,energy,share,cumulative,shell_energy\n";
   for (const PortalEnergy& p : portals) {
     for (const ShOrderEnergy& o : p.orders) {
       for (std::size_t c = 0; c < 3; ++c) {
-        char line[160];
-        std::snprintf(line, sizeof line, ",%d,%s,%.9g,%.9g,%.9g\n", o.l, kChannelNames[c],
-                      o.energy[c], o.share[c], o.cumulative[c]);
+        char line[200];
+        std::snprintf(line, sizeof line, ",%d,%s,%.9g,%.9g,%.9g,%.9g\n", o.l, kChannelNames[c],
+                      o.energy[c], o.share[c], o.cumulative[c],
+                      p.shell[static_cast<std::size_t>(o.l)][c]);
         csv += csv_cell(p.name) + line;
       }
     }
@@ -72,6 +78,15 @@ void print_sh_energy(std::ostream& out, const PortalEnergy& p, std::size_t verti
                   100 * o.cumulative[2]);
     out << line;
   }
+  out << "shell of the scene's state (sky and ground; a sun behind clear glass is traced "
+      << "exactly and is not in it): sum over m of c_lm^2 per order, (cd/m2)^2\n";
+  std::snprintf(line, sizeof line, "%3s %11s %11s %11s\n", "l", "shell R", "shell G", "shell B");
+  out << line;
+  for (std::size_t l = 0; l < p.shell.size(); ++l) {
+    std::snprintf(line, sizeof line, "%3zu %11.4g %11.4g %11.4g\n", l, p.shell[l][0], p.shell[l][1],
+                  p.shell[l][2]);
+    out << line;
+  }
 }
 
 int run_analyze(const AnalyzeArgs& args) {
@@ -83,9 +98,16 @@ int run_analyze(const AnalyzeArgs& args) {
     fail_input(args.rlt, "the scene has no portals: --sh-energy analyses portal transfer");
   }
   std::vector<PortalEnergy> portals;
-  for (const PortalTransferView& view : t.view.portals) {
-    portals.push_back({view.name, portal_sh_energy(view, t.vertex_count, t.view.receivers,
-                                                   t.view.portal_sh_order)});
+  for (std::size_t p = 0; p < t.view.portals.size(); ++p) {
+    const PortalTransferView& view = t.view.portals[p];
+    // The shell as the relighter renders it for the scene's own state.
+    PortalLighting lighting;
+    update_portal_lighting(lighting, static_cast<std::uint32_t>(p), view, t.view.portal_sh_order,
+                           portal_state(t.scene.portals[p], t.scene.exterior.size()), t.scene);
+    portals.push_back(
+        {view.name,
+         portal_sh_energy(view, t.vertex_count, t.view.receivers, t.view.portal_sh_order),
+         shell_order_energy(lighting.shell.sh, t.view.portal_sh_order)});
     if (portals.size() > 1) std::cout << "\n";
     print_sh_energy(std::cout, portals.back(), t.vertex_count, t.view.portal_sh_order);
   }

@@ -89,12 +89,17 @@ TEST_F(AnalyzeCommand, ShEnergyCsvSharesSumToOne) {
 
   const auto cells = parse_csv(read_text(csv));
   ASSERT_FALSE(cells.empty());
-  EXPECT_EQ(cells[0],
-            (std::vector<std::string>{"portal", "l", "channel", "energy", "share", "cumulative"}));
+  EXPECT_EQ(cells[0], (std::vector<std::string>{"portal", "l", "channel", "energy", "share",
+                                                "cumulative", "shell_energy"}));
   ASSERT_EQ(cells.size(), 1u + 2 * kPortalShOrder * 3);
   std::map<std::pair<std::string, std::string>, std::vector<Row>> series;
   for (std::size_t i = 1; i < cells.size(); ++i) {
-    ASSERT_EQ(cells[i].size(), 6u) << "row " << i;
+    ASSERT_EQ(cells[i].size(), 7u) << "row " << i;
+    // Both windows show a uniform 1000 cd/m² sky: the outward half's c_00 is
+    // 1000 · Y_00 · 2π = 1772.5 cd/m², its energy c_00² (the cubemap's quadrature within 2 %).
+    if (cells[i][1] == "0") {
+      EXPECT_NEAR(std::stod(cells[i][6]), 1772.5 * 1772.5, 0.02 * 3.14e6) << "row " << i;
+    }
     series[{cells[i][0], cells[i][2]}].push_back({std::stoi(cells[i][1]), std::stod(cells[i][3]),
                                                   std::stod(cells[i][4]), std::stod(cells[i][5])});
   }

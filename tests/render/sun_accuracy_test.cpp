@@ -207,6 +207,38 @@ TEST(SunAccuracy, ProbeMatchesTheReferenceOnWorkPlaneFloorBackWallAndCeiling) {
   }
 }
 
+// The exterior objects shade the sun per receiver, as the state places them: a horizontal
+// louver 0.5 m in front of the window (z ∈ [5.5, 5.6], y ∈ [1.4, 1.6], 20 m wide) casts a
+// stripe across the patch. On the 1 cm line all four crossings (the patch's two edges and the
+// stripe's two) within 1 cm of the reference's; moved away, the stripe is gone.
+TEST(SunAccuracy, AnExteriorLouverCastsItsSunShadowWhereTheReferencePutsIt) {
+  json scene = sun_room(clear_sky(180, 30), true);
+  scene["materials"]["louver"] = {{"albedo", {0.3, 0.3, 0.3}}};
+  scene["exterior"] = {{{"name", "louver"},
+                        {"type", "box"},
+                        {"min", {-8, 1.4, 5.5}},
+                        {"max", {12, 1.6, 5.6}},
+                        {"normals", "outward"},
+                        {"material", "louver"}}};
+  const Daylight d(scene);
+  const std::vector<Rgb> probe = d.sensors();
+  const std::vector<Rgb> ref = reference(scene, kReferenceSpp);
+  const std::vector<double> p = half_crossings(probe, kGridSensors);
+  const std::vector<double> r = half_crossings(ref, kGridSensors);
+  std::printf("crossings on the line x = 2: probe");
+  for (double z : p) std::printf(" %.4f", z);
+  std::printf("; reference");
+  for (double z : r) std::printf(" %.4f", z);
+  std::printf("\n");
+  ASSERT_EQ(r.size(), 4u);
+  ASSERT_EQ(p.size(), 4u);
+  for (std::size_t k = 0; k < 4; ++k) EXPECT_NEAR(p[k], r[k], 0.01) << "crossing " << k;
+  const std::vector<double> away =
+      half_crossings(d.sensors({{"exterior", {{"louver", {{"translate", {0, -10, 0}}}}}}}),
+                     kGridSensors);
+  EXPECT_EQ(away.size(), 2u) << "the louver moved 10 m down leaves the patch whole";
+}
+
 // Sky frames with the sun moving through a day: each frame is one state change of the
 // relighter (the sun re-traced at every receiver and its light bounced again), and each
 // frame's patch has its edges on the 1 cm line within 1 cm of the closed form (the reference

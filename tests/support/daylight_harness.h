@@ -22,6 +22,7 @@
 #include "runtime/lighting_state.h"
 #include "runtime/relighter.h"
 #include "scene/scene_loader.h"
+#include "sources/portal/portal_lighting.h"
 #include "sources/precompute.h"
 #include "sources/transfer_file.h"
 #include "trace/traced_scene.h"
@@ -96,8 +97,16 @@ inline std::vector<Rgb> reference(const json& document, int spp) {
   settings.spp = spp;
   settings.seed = 5;
   settings.progress = false;
+  // The exterior objects where the scene puts them, in front of every portal.
+  std::vector<std::vector<ExteriorObject>> exterior;
+  for (const Portal& p : scene.portals) {
+    if (!scene.exterior.empty()) {
+      exterior.push_back(placed_exterior(scene, portal_state(p, scene.exterior.size()).exterior));
+    }
+  }
   const std::vector<Rgb> e = reference_sensor_illuminance(
-      scene, make_reference_scene(scene, mesh, traced, luminaires, std::move(environments)),
+      scene,
+      make_reference_scene(scene, mesh, traced, luminaires, std::move(environments), {}, exterior),
       settings);
   std::printf("reference: %zu sensors × %d spp, %.2f s\n", e.size(), spp, seconds_since(start));
   return e;

@@ -10,7 +10,7 @@ namespace relight {
 namespace {
 
 constexpr int kRimPoints = 8;
-constexpr int kSpiralPoints = 32;
+constexpr int kSpiralPoints = 64;
 
 // Whether the ray from `origin` along the unit `w` leaves through `sun`'s portal unoccluded.
 bool passes(const SunGeometry& g, const PortalSun& sun, Vec3 origin, Vec3 w) {

@@ -75,4 +75,21 @@ std::vector<ShOrderEnergy> portal_sh_energy(const PortalTransferView& portal,
   return orders;
 }
 
+std::vector<std::array<double, 3>> shell_order_energy(const std::vector<Rgb>& sh, int sh_order) {
+  if (sh_order < 1 || sh.size() != static_cast<std::size_t>(sh_order * sh_order)) {
+    throw std::invalid_argument("shell_order_energy: sh_order² coefficients needed");
+  }
+  std::vector<std::array<double, 3>> energy(static_cast<std::size_t>(sh_order));
+  for (int l = 0; l < sh_order; ++l) {
+    for (int k = l * l; k < (l + 1) * (l + 1); ++k) {  // the 2l + 1 coefficients of order l
+      const Rgb c = sh[static_cast<std::size_t>(k)];
+      auto& e = energy[static_cast<std::size_t>(l)];
+      e[0] += c.r * c.r;
+      e[1] += c.g * c.g;
+      e[2] += c.b * c.b;
+    }
+  }
+  return energy;
+}
+
 }  // namespace relight

@@ -20,6 +20,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "math/rgb.h"
 #include "sources/portal/portal_transfer_view.h"
 
 namespace relight {
@@ -38,5 +39,11 @@ struct ShOrderEnergy {
 std::vector<ShOrderEnergy> portal_sh_energy(const PortalTransferView& portal,
                                             std::size_t vertex_count, std::size_t receivers,
                                             int sh_order);
+
+// The other factor of the light each order brings: the shell's own energy per order,
+// Σ_m c_lm² per channel (cd²/m⁴), from its coefficients `sh` (sh_order² of them, math/sh.h
+// order). The relighter's shell holds the sky and the ground but not a sun it traces exactly
+// (sources/portal/portal_sun.h), so this is the energy the SH path actually carries.
+std::vector<std::array<double, 3>> shell_order_energy(const std::vector<Rgb>& sh, int sh_order);
 
 }  // namespace relight

@@ -107,6 +107,25 @@ TEST(Shell, BaseShellIsTheEnvironmentCubemapWithTheSunDeposited) {
             1e-12);
 }
 
+// Without the sun disc (the run time traces the sun itself behind clear glass, issue 21) the
+// shell is exactly the environment's continuous part: its cubemap and its SH hold no sun.
+TEST(Shell, WithoutTheSunDiscTheShellIsTheSkyAlone) {
+  const Environment env = clear_sky(horizontal(100, 35));
+  ShellInputs in;
+  in.environment = &env;
+  in.sun_disc = false;
+  const Shell shell = render_shell(in, kEastWindow, 16, 6);
+  EXPECT_FALSE(shell.sun_in_shell);
+  EXPECT_LT(max_rel_diff(environment_cubemap(environment_without_sun(env), 16), shell.cubemap),
+            1e-14);
+  ShellInputs sky_only = in;
+  const Environment continuous = environment_without_sun(env);
+  sky_only.environment = &continuous;
+  const Shell reference = render_shell(sky_only, kEastWindow, 16, 6);
+  for (std::size_t k = 0; k < shell.sh.size(); ++k)
+    EXPECT_EQ(shell.sh[k].g, reference.sh[k].g) << k;
+}
+
 TEST(Shell, TintScalesCubemapExactlyAndSh) {
   const Environment env = clear_sky(horizontal(120, 30));
   ShellInputs in;
