@@ -161,23 +161,87 @@ std::array<Eigen::VectorXf, 3> channel_albedo(const Receivers& receivers) {
 
 }  // namespace
 
-Eigen::MatrixXf solve_bounces_rgb(const GatherOperator& gather, const Receivers& receivers,
-                                  const Eigen::MatrixXf& direct, const BounceSettings& settings) {
-  check_sizes(gather, receivers, direct);
-  if (direct.cols() != 3) throw std::invalid_argument("bounce solver: RGB needs three columns");
-  const auto vertex_count = static_cast<Eigen::Index>(receivers.vertex_count);
-  const RowMatrix direct_vertices = direct.topRows(vertex_count);
-  const std::array<Eigen::VectorXf, 3> albedo = channel_albedo(receivers);
-  Progress quiet("interreflection", 1, false);
-  if (albedo[0] == albedo[1] && albedo[0] == albedo[2]) {
-    return solve_channel(gather.matrix, albedo[0], direct_vertices, settings, quiet).indirect;
+int solve_bounces_rgb(const GatherOperator& gather, const Receivers& receivers,
+                      std::span<const float> direct, std::span<float> indirect, bool warm,
+                      const BounceSettings& settings) {
+  const Gather& g = gather.matrix;
+  const std::size_t n = receivers.size(), vertices = receivers.vertex_count;
+  if (g.rows() != static_cast<Eigen::Index>(n) || g.cols() != static_cast<Eigen::Index>(vertices) ||
+      receivers.albedo.size() != n || direct.size() != 3 * n || indirect.size() != 3 * n) {
+    throw std::invalid_argument("bounce solver: gather operator, receivers and light disagree");
   }
-  Eigen::MatrixXf out(direct.rows(), 3);
-  for (int c = 0; c < 3; ++c) {
-    const RowMatrix column = direct_vertices.col(c);
-    out.col(c) = solve_channel(gather.matrix, albedo[c], column, settings, quiet).indirect.col(0);
+  std::vector<float> albedo(3 * vertices), reflected(3 * vertices), gathered(3 * vertices, 0.0f);
+  for (std::size_t v = 0; v < vertices; ++v) {
+    const Rgb& a = receivers.albedo[v];
+    albedo[3 * v] = static_cast<float>(a.r);
+    albedo[3 * v + 1] = static_cast<float>(a.g);
+    albedo[3 * v + 2] = static_cast<float>(a.b);
+    if (warm) std::copy_n(indirect.begin() + 3 * v, 3, gathered.begin() + 3 * v);
   }
-  return out;
+  // reflected = diag(ρ) · (E_d + gathered) on vertex rows.
+  const auto reflect = [&] {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, 3 * vertices, 1024), [&](const auto& r) {
+      for (std::size_t i = r.begin(); i != r.end(); ++i) {
+        reflected[i] = albedo[i] * (direct[i] + gathered[i]);
+      }
+    });
+  };
+  // Σ_w G_rw · reflected_w for row r, RGB.
+  const auto gather_row = [&](Eigen::Index r, float(&sum)[3]) {
+    sum[0] = sum[1] = sum[2] = 0;
+    for (Gather::InnerIterator it(g, r); it; ++it) {
+      const float* l = &reflected[3 * static_cast<std::size_t>(it.index())];
+      sum[0] += it.value() * l[0];
+      sum[1] += it.value() * l[1];
+      sum[2] += it.value() * l[2];
+    }
+  };
+  int bounces = 0;
+  if (settings.max_bounces > 0) {
+    reflect();
+    const auto rows = static_cast<Eigen::Index>(vertices);
+    while (bounces < settings.max_bounces) {
+      // Per channel: Σ (E(n+1) − E(n))² and Σ E(n+1)²; the slowest channel decides.
+      using Change = std::array<double, 6>;
+      const Change change = tbb::parallel_deterministic_reduce(
+          tbb::blocked_range<Eigen::Index>(0, rows, kRowGrain), Change{},
+          [&](const tbb::blocked_range<Eigen::Index>& range, Change c) {
+            for (Eigen::Index i = range.begin(); i != range.end(); ++i) {
+              float sum[3];
+              gather_row(i, sum);
+              for (std::size_t k = 0; k < 3; ++k) {
+                const std::size_t at = 3 * static_cast<std::size_t>(i) + k;
+                const double d = double{sum[k]} - gathered[at], e = double{direct[at]} + sum[k];
+                c[k] += d * d;
+                c[3 + k] += e * e;
+                gathered[at] = sum[k];
+              }
+            }
+            return c;
+          },
+          [](Change a, const Change& b) {
+            for (std::size_t k = 0; k < a.size(); ++k) a[k] += b[k];
+            return a;
+          });
+      double worst = 0;
+      for (std::size_t k = 0; k < 3; ++k) {
+        if (change[3 + k] > 0) worst = std::max(worst, std::sqrt(change[k] / change[3 + k]));
+      }
+      ++bounces;
+      reflect();
+      if (worst < settings.tolerance) break;
+    }
+  }
+  // The vertices' interreflected light, and the sensors' gathered once from the last light.
+  std::copy(gathered.begin(), gathered.end(), indirect.begin());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(vertices, n, 256), [&](const auto& range) {
+    for (std::size_t r = range.begin(); r != range.end(); ++r) {
+      float sum[3] = {0, 0, 0};
+      if (bounces > 0) gather_row(static_cast<Eigen::Index>(r), sum);
+      std::copy_n(sum, 3, indirect.begin() + 3 * r);
+    }
+  });
+  return bounces;
 }
 
 BounceResult solve_bounces(const GatherOperator& gather, const Receivers& receivers,

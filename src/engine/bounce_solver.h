@@ -16,6 +16,7 @@
 #pragma once
 
 #include <array>
+#include <span>
 
 #include <Eigen/Core>
 
@@ -43,11 +44,17 @@ BounceResult solve_bounces(const GatherOperator& gather, const Receivers& receiv
                            const Eigen::MatrixXf& direct, const BounceSettings& settings,
                            bool progress);
 
-// A coloured source's light (issue 21: the run-time bounce of light computed exactly at run
-// time): `direct` is receivers × 3, column c the irradiance in channel c, which bounces with
-// the albedo's channel c only. Returns receivers × 3, the interreflected light per channel.
-// One solve of all three columns when the albedo is grey, else one column per channel.
-Eigen::MatrixXf solve_bounces_rgb(const GatherOperator& gather, const Receivers& receivers,
-                                  const Eigen::MatrixXf& direct, const BounceSettings& settings);
+// One coloured source's light, bounced at run time (issues 11 and 21: light the run time
+// computes exactly, the sun behind clear glass and near-field emitters): `direct` and
+// `indirect` hold 3 floats per receiver (r, g, b), channel c bouncing with the albedo's
+// channel c. The same iteration as above, on the vertex rows only and all three channels in
+// one pass over G per bounce; the sensor rows are gathered once from the converged light.
+// With `warm`, `indirect` holds a previous solution (of a slightly different direct light: the
+// sun a minute on, an emitter a centimetre away) and the iteration starts from it, which takes
+// a few bounces instead of the ~log(tolerance)/log(ρ) from the direct light alone. Returns the
+// bounces computed. Throws std::invalid_argument when sizes disagree.
+int solve_bounces_rgb(const GatherOperator& gather, const Receivers& receivers,
+                      std::span<const float> direct, std::span<float> indirect, bool warm,
+                      const BounceSettings& settings);
 
 }  // namespace relight

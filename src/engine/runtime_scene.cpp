@@ -42,6 +42,27 @@ RuntimeScene::RuntimeScene(const RuntimeSceneView& view, BounceSettings bounce)
     albedo_.albedo[v] = {view.vertex_albedo[3 * v], view.vertex_albedo[3 * v + 1],
                          view.vertex_albedo[3 * v + 2]};
   }
+  // Per portal the box around its glass vertices, then the farthest vertex from its centre.
+  std::vector<std::pair<Vec3, Vec3>> boxes;
+  for (std::size_t t = 0; t < view.glass_triangles.size(); ++t) {
+    const std::uint32_t p = view.glass_portal[t];
+    if (p >= boxes.size())
+      boxes.resize(p + 1, {Vec3{1e300, 1e300, 1e300}, Vec3{-1e300, -1e300, -1e300}});
+    for (const std::uint32_t v : view.glass_triangles[t]) {
+      boxes[p].first = min(boxes[p].first, positions_[v]);
+      boxes[p].second = max(boxes[p].second, positions_[v]);
+    }
+  }
+  glass_bounds_.resize(boxes.size());
+  for (std::size_t p = 0; p < boxes.size(); ++p) {
+    if (boxes[p].first.x <= boxes[p].second.x)
+      glass_bounds_[p].centre = (boxes[p].first + boxes[p].second) * 0.5;
+  }
+  for (std::size_t t = 0; t < view.glass_triangles.size(); ++t) {
+    BoundingSphere& b = glass_bounds_[view.glass_portal[t]];
+    for (const std::uint32_t v : view.glass_triangles[t])
+      b.radius = std::max(b.radius, length(positions_[v] - b.centre));
+  }
   PreparedMesh mesh;
   mesh.positions = positions_;
   mesh.triangles = triangles_;
@@ -132,22 +153,11 @@ void RuntimeScene::hat_means(const IrradianceField& irradiance, int subdivision,
   });
 }
 
-double RuntimeScene::bounce(std::span<const float> direct, std::span<float> indirect) const {
-  const std::size_t n = receivers();
-  if (!gather_ || direct.size() != 3 * n || indirect.size() != 3 * n) {
-    throw std::invalid_argument("RuntimeScene::bounce: no gather operator or bad sizes");
-  }
+double RuntimeScene::bounce(std::span<const float> direct, std::span<float> indirect,
+                            bool warm) const {
+  if (!gather_) throw std::invalid_argument("RuntimeScene::bounce: no gather operator stored");
   const auto start = std::chrono::steady_clock::now();
-  Eigen::MatrixXf columns(static_cast<Eigen::Index>(n), 3);
-  for (std::size_t r = 0; r < n; ++r) {
-    for (int c = 0; c < 3; ++c)
-      columns(static_cast<Eigen::Index>(r), c) = direct[3 * r + static_cast<std::size_t>(c)];
-  }
-  const Eigen::MatrixXf bounced = solve_bounces_rgb(*gather_, albedo_, columns, bounce_);
-  for (std::size_t r = 0; r < n; ++r) {
-    for (int c = 0; c < 3; ++c)
-      indirect[3 * r + static_cast<std::size_t>(c)] = bounced(static_cast<Eigen::Index>(r), c);
-  }
+  solve_bounces_rgb(*gather_, albedo_, direct, indirect, warm, bounce_);
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 

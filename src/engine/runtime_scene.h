@@ -52,6 +52,12 @@ struct RuntimeSceneView {
   std::span<const float> gather_values;
 };
 
+// A sphere that holds a set of triangles.
+struct BoundingSphere {
+  Vec3 centre;
+  double radius = 0;
+};
+
 // Irradiance (lx, RGB) at a point with a unit normal; called from many threads at once.
 using IrradianceField = std::function<Rgb(Vec3 point, Vec3 normal)>;
 
@@ -70,6 +76,11 @@ class RuntimeScene {
   // (ids: the portal's index).
   const RayTracer& occluders() const { return occluders_; }
   const RayTracer& glass() const { return glass_; }
+  // A sphere holding portal p's glass (radius 0 for a portal with none): the centre of its
+  // vertices' bounding box, the radius to the farthest one.
+  BoundingSphere glass_bounds(std::uint32_t portal) const {
+    return portal < glass_bounds_.size() ? glass_bounds_[portal] : BoundingSphere{};
+  }
 
   // Whether the precompute kept the gather operator (bounce() is then available).
   bool can_bounce() const { return gather_.has_value(); }
@@ -81,8 +92,10 @@ class RuntimeScene {
 
   // The interreflected light (3 per receiver) of the direct irradiance `direct` (3 per
   // receiver; its vertex rows are what the surfaces reflect): channel c bounces with the
-  // albedo's channel c. Returns the wall time, seconds. Needs can_bounce().
-  double bounce(std::span<const float> direct, std::span<float> indirect) const;
+  // albedo's channel c (engine/bounce_solver.h solve_bounces_rgb). With `warm`, `indirect`
+  // holds the solution for the previous, similar light and the iteration starts from it.
+  // Returns the wall time, seconds. Needs can_bounce().
+  double bounce(std::span<const float> direct, std::span<float> indirect, bool warm) const;
 
  private:
   std::size_t vertex_count_ = 0;
@@ -90,6 +103,7 @@ class RuntimeScene {
   std::vector<Vec3> positions_;
   std::vector<Triangle> triangles_;  // opaque
   RayTracer occluders_, glass_;
+  std::vector<BoundingSphere> glass_bounds_;  // per portal
   std::optional<GatherOperator> gather_;
   Receivers albedo_;  // the bounce solver's receivers: albedo per receiver (0 at sensors)
   BounceSettings bounce_;

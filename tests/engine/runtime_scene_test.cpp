@@ -104,7 +104,7 @@ TEST(RuntimeScene, BounceNeedsAStoredGatherOperator) {
   const RuntimeScene scene(square.view(), {});
   EXPECT_FALSE(scene.can_bounce());
   std::vector<float> direct(12, 1.0f), indirect(12);
-  EXPECT_THROW(scene.bounce(direct, indirect), std::invalid_argument);
+  EXPECT_THROW(scene.bounce(direct, indirect, false), std::invalid_argument);
 }
 
 }  // namespace

@@ -72,7 +72,9 @@ void EmitterLighting::relight() {
           direct[3 * r + 2] = static_cast<float>(e.b);
         }
       });
-  indirect_.assign(3 * n, 0.0f);
+  // An emitter moved a little starts its bounce from the last solution.
+  const bool warm = indirect_.size() == 3 * n;
+  indirect_.resize(3 * n, 0.0f);
   bounce_seconds_ = 0;
   if (bounces_) {
     // What bounces is the exact direct light at the vertices too: the SH reconstruction at
@@ -86,7 +88,7 @@ void EmitterLighting::relight() {
                                            settings_.bounce_visibility_samples);
         },
         settings_.hat_subdivision, reflected);
-    bounce_seconds_ = runtime_->bounce(reflected, indirect_);
+    bounce_seconds_ = runtime_->bounce(reflected, indirect_, warm);
   }
   total_.resize(3 * n);
   for (std::size_t i = 0; i < 3 * n; ++i) total_[i] = direct[i] + indirect_[i];

@@ -96,8 +96,8 @@ void update_portal_lighting(PortalLighting& lighting, std::uint32_t index,
   prepare_shell_cubemap(portal.face_size, shell.cubemap, lighting.cubemap);
   lighting.sun.reset();
   if (exact_sun) {
-    lighting.sun =
-        PortalSun{index, *sun, state.tint * sun->normal_illuminance, exterior_tracer(exterior)};
+    lighting.sun = make_portal_sun(index, *sun, state.tint * sun->normal_illuminance,
+                                   exterior_tracer(exterior));
   }
   const auto k = static_cast<std::size_t>(sh_count(sh_order));
   lighting.weights.resize(3 * k);
@@ -123,8 +123,7 @@ PortalSetLighting::PortalSetLighting(PortalTransferSet transfer, const RuntimeSc
   for (const Portal& p : scene.portals) states_.push_back(portal_state(p, scene.exterior.size()));
   portals_.resize(scene.portals.size());
   for (std::size_t p = 0; p < portals_.size(); ++p) {
-    // The glass lies within its diameter of its centre (the largest vertex distance).
-    bounds_.push_back({transfer_.portals[p].centre, transfer_.portals[p].diameter});
+    if (runtime_) bounds_.push_back(runtime_->glass_bounds(static_cast<std::uint32_t>(p)));
     update_portal_lighting(portals_[p], static_cast<std::uint32_t>(p), transfer_.portals[p],
                            transfer_.sh_order, states_[p], scene);
   }
@@ -168,15 +167,17 @@ void PortalSetLighting::update_suns() {
     }
   });
   // Its interreflection: what each vertex reflects is the sun's mean over its hat function
-  // (4² points a triangle: a patch edge crossing a triangle moves the flux it carries by at
-  // most 1/16 of it), bounced through the stored gather operator.
-  sun_indirect_.assign(3 * n, 0.0f);
+  // (4² points a triangle, each seeing the disc's centre or not: a patch edge crossing a
+  // triangle is placed to a quarter of its width), bounced through the stored gather
+  // operator; a sun that moved a little starts from the last solution (bounce_solver.h).
+  const bool warm = sun_indirect_.size() == 3 * n;
+  sun_indirect_.resize(3 * n, 0.0f);
   if (runtime_->can_bounce()) {
     std::vector<float> reflected(3 * n);
     runtime_->hat_means(
-        [&](Vec3 p, Vec3 normal) { return sun_irradiance(geometry, suns_, p, normal); }, 4,
+        [&](Vec3 p, Vec3 normal) { return sun_irradiance(geometry, suns_, p, normal, false); }, 4,
         reflected);
-    sun_bounce_seconds_ = runtime_->bounce(reflected, sun_indirect_);
+    sun_bounce_seconds_ = runtime_->bounce(reflected, sun_indirect_, warm);
   }
   sun_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }

@@ -24,10 +24,12 @@
 // against the closed form) and tests/render/sun_accuracy_test.cpp (against the reference).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <span>
 
+#include "engine/runtime_scene.h"
 #include "light/sky_model.h"
 #include "math/rgb.h"
 #include "math/vec3.h"
@@ -35,31 +37,37 @@
 
 namespace relight {
 
+inline constexpr int kSunRimDirections = 8;
+inline constexpr int kSunPenumbraDirections = 64;
+
 struct PortalSun {
   std::uint32_t portal = 0;                   // the portal the sun shines through (scene order)
   SunDisc disc;                               // direction and angular radius
   Rgb illuminance;                            // lx on a plane facing the sun, tint included
   std::shared_ptr<const RayTracer> exterior;  // the exterior objects as placed; null: none
+  // The disc's directions: its rim, then the penumbra's spiral (make_portal_sun fills them).
+  std::array<Vec3, kSunRimDirections + kSunPenumbraDirections> directions{};
 };
 
-// A sphere that holds a portal's glass.
-struct PortalBound {
-  Vec3 centre;
-  double radius = 0;
-};
+PortalSun make_portal_sun(std::uint32_t portal, const SunDisc& disc, Rgb illuminance,
+                          std::shared_ptr<const RayTracer> exterior);
 
 // What the sun's rays are traced against.
 struct SunGeometry {
-  const RayTracer& occluders;            // the static opaque scene
-  const RayTracer& glass;                // the portals' glass, ids: portal index
-  std::span<const PortalBound> portals;  // scene order
+  const RayTracer& occluders;               // the static opaque scene
+  const RayTracer& glass;                   // the portals' glass, ids: portal index
+  std::span<const BoundingSphere> portals;  // scene order
 };
 
 // The fraction of the sun's disc seen from `origin` (already off the surface) through its
-// portal, in [0, 1].
-double sun_disc_fraction(const SunGeometry& geometry, const PortalSun& sun, Vec3 origin);
+// portal, in [0, 1]. Without `penumbra`, whether the disc's centre is seen (0 or 1): one
+// direction instead of nine, for the many quadrature points of a mean over a surface, where
+// a penumbra's partial values average out (engine/runtime_scene.h hat_means).
+double sun_disc_fraction(const SunGeometry& geometry, const PortalSun& sun, Vec3 origin,
+                         bool penumbra = true);
 
 // Σ over `suns` of E_sun,n · f · max(0, n · s) at the surface point p of unit normal n.
-Rgb sun_irradiance(const SunGeometry& geometry, std::span<const PortalSun> suns, Vec3 p, Vec3 n);
+Rgb sun_irradiance(const SunGeometry& geometry, std::span<const PortalSun> suns, Vec3 p, Vec3 n,
+                   bool penumbra = true);
 
 }  // namespace relight

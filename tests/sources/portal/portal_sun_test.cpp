@@ -19,8 +19,10 @@ struct Windows {
                               {3, -1, 0},  {5, -1, 0}, {5, 1, 0}, {3, 1, 0}};
   RayTracer glass{positions, {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}, {4, 6, 7}}, {0, 0, 1, 1}};
   RayTracer nothing{positions, {}, {}};
-  std::vector<PortalBound> bounds{{{0, 0, 0}, 2 * std::sqrt(2.0)}, {{4, 0, 0}, 2 * std::sqrt(2.0)}};
-  PortalSun sun{0, make_sun_disc({0, 0, 1}, 100000), {100000, 100000, 100000}, nullptr};
+  std::vector<BoundingSphere> bounds{{{0, 0, 0}, 2 * std::sqrt(2.0)},
+                                     {{4, 0, 0}, 2 * std::sqrt(2.0)}};
+  PortalSun sun =
+      make_portal_sun(0, make_sun_disc({0, 0, 1}, 100000), {100000, 100000, 100000}, nullptr);
   SunGeometry geometry(const RayTracer& occluders) const { return {occluders, glass, bounds}; }
 };
 
