@@ -102,13 +102,13 @@ RuntimeScene::RuntimeScene(const RuntimeSceneView& view, BounceSettings bounce)
 void RuntimeScene::hat_means(const IrradianceField& irradiance, int subdivision,
                              std::span<float> out) const {
   const std::size_t n = receivers();
-  if (out.size() != 3 * n || subdivision < 1) {
+  if (out.size() != 3 * n || subdivision < 0) {
     throw std::invalid_argument("RuntimeScene::hat_means: bad output size or subdivision");
   }
   // Per triangle corner: ∫ E φ_corner over the triangle.
   std::vector<Rgb> corner(3 * triangles_.size());
   const int s = subdivision;
-  const double inv = 1.0 / s;
+  const double inv = s > 0 ? 1.0 / s : 0.0;
   tbb::parallel_for(
       tbb::blocked_range<std::size_t>(0, triangles_.size(), 64), [&](const auto& range) {
         for (std::size_t t = range.begin(); t != range.end(); ++t) {
@@ -118,7 +118,7 @@ void RuntimeScene::hat_means(const IrradianceField& irradiance, int subdivision,
           const double area = 0.5 * length(face);
           if (!(area > 0)) continue;
           const Vec3 normal = face / (2 * area);
-          const double weight = area / (s * s);
+          const double weight = s > 0 ? area / (s * s) : 0.0;
           std::array<Rgb, 3> sum{};
           const auto add = [&](double u, double v) {  // barycentrics toward b and c
             const Rgb e = irradiance(a + (b - a) * u + (c - a) * v, normal) * weight;
@@ -126,6 +126,12 @@ void RuntimeScene::hat_means(const IrradianceField& irradiance, int subdivision,
             sum[1] += e * u;
             sum[2] += e * v;
           };
+          if (s == 0) {  // per corner its φ-weighted centroid, barycentric (½, ¼, ¼)
+            const double w = area / 3;
+            sum[0] += irradiance(a * 0.5 + (b + c) * 0.25, normal) * w;
+            sum[1] += irradiance(b * 0.5 + (a + c) * 0.25, normal) * w;
+            sum[2] += irradiance(c * 0.5 + (a + b) * 0.25, normal) * w;
+          }
           for (int i = 0; i < s; ++i) {
             for (int j = 0; i + j < s; ++j) {
               add((i + 1.0 / 3) * inv, (j + 1.0 / 3) * inv);  // the sub-triangle pointing up

@@ -14,8 +14,10 @@
 // peaked pool of light (an emitter's ceiling 2.5 % too dark at 0.25 m edges,
 // tests/cli/emitter_probe_test.cpp). The quadrature splits each triangle into s² equal
 // sub-triangles and takes E once at each one's centroid, weighted by the centroid's
-// barycentric coordinate toward each of the triangle's three vertices (exact for E linear on
-// each sub-triangle). Pinned by tests/engine/runtime_scene_test.cpp.
+// barycentric coordinate toward each of the triangle's three vertices — for sharp fields,
+// the sun's patch; or (s = 0) takes E once per corner at the corner's φ-weighted centroid,
+// barycentric (½, ¼, ¼), weight A/3 — exact for E linear on the triangle, for smooth fields
+// (an emitter's pool of light). Pinned by tests/engine/runtime_scene_test.cpp.
 #pragma once
 
 #include <cstddef>
@@ -86,8 +88,9 @@ class RuntimeScene {
   bool can_bounce() const { return gather_.has_value(); }
 
   // out (3 per receiver): at vertices the mean of `irradiance` over the hat function with s²
-  // points per adjacent triangle (s = subdivision ≥ 1; a vertex with no triangle: the value
-  // at its ray point), at sensors the value at the sensor.
+  // points per adjacent triangle (s = subdivision ≥ 1), or with the corners' φ-weighted
+  // centroids (s = 0); a vertex with no triangle: the value at its ray point; at sensors the
+  // value at the sensor.
   void hat_means(const IrradianceField& irradiance, int subdivision, std::span<float> out) const;
 
   // The interreflected light (3 per receiver) of the direct irradiance `direct` (3 per

@@ -37,7 +37,7 @@ std::vector<float> means(const RuntimeScene& scene, const IrradianceField& field
 TEST(RuntimeScene, HatMeanOfAConstantFieldIsTheConstant) {
   const Square square;
   const RuntimeScene scene(square.view(), {});
-  for (int s : {1, 2, 4}) {
+  for (int s : {0, 1, 2, 4}) {
     const std::vector<float> e = means(
         scene,
         [](Vec3, Vec3) {
@@ -65,6 +65,14 @@ TEST(RuntimeScene, HatMeanOfALinearFieldMatchesTheClosedFormToOrderOneOverSSquar
       den[v] += 0.5 / 3;
     }
   }
+  // The corners' φ-weighted centroids (s = 0) are exact for a linear field.
+  const std::vector<float> centroids = means(
+      scene,
+      [](Vec3 p, Vec3) {
+        return Rgb{p.x, p.x, p.x};
+      },
+      0);
+  for (std::size_t v = 0; v < 4; ++v) EXPECT_NEAR(centroids[3 * v], num[v] / den[v], 1e-6) << v;
   for (const int s : {4, 16}) {
     const std::vector<float> e = means(
         scene,

@@ -31,7 +31,9 @@ struct EmitterLightingSettings {
   int face_size = 16;                 // cubemap texels per face side at each sample
   int visibility_samples = 16;        // points per emitter triangle for exact direct shadows
   int bounce_visibility_samples = 4;  // the same for the light the vertices reflect
-  int hat_subdivision = 2;            // s² points per triangle for what the vertices reflect
+  // What the vertices reflect: the hat means' quadrature (engine/runtime_scene.h); 0: one
+  // point per triangle corner, exact for light linear over the triangle.
+  int hat_subdivision = 0;
 };
 
 class EmitterLighting : public SourceTerm {
