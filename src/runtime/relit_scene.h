@@ -37,7 +37,7 @@ class RelitScene {
   // Irradiance per receiver, RGB interleaved (3 per receiver: vertices, then sensors).
   std::span<const float> irradiance() const { return irradiance_; }
   // What renderers that evaluate direct light per pixel add it to: the same without the
-  // luminaires' direct light and the portals' sharp suns (Relighter::relight).
+  // luminaires' direct light and the portals' exact suns (Relighter::relight).
   std::vector<float> indirect_irradiance();
   // Sensor illuminance (lx, RGB) in scene order, sensor sets back to back.
   std::vector<Rgb> sensor_irradiance() const;
