@@ -125,6 +125,14 @@ std::vector<double> half_crossings(const std::vector<Rgb>& e, std::size_t first)
   return z;
 }
 
+void print_crossings(const std::vector<double>& probe, const std::vector<double>& reference) {
+  std::printf(" probe");
+  for (double z : probe) std::printf(" %.4f", z);
+  std::printf("; reference");
+  for (double z : reference) std::printf(" %.4f", z);
+  std::printf("\n");
+}
+
 // The patch's edges on the line x = 2 (closed form): the window's bottom and top edges
 // projected along the sun onto the floor.
 std::array<double, 2> geometric_edges(Vec3 s) {
@@ -194,11 +202,8 @@ TEST(SunAccuracy, ProbeMatchesTheReferenceOnWorkPlaneFloorBackWallAndCeiling) {
   const std::vector<double> p = half_crossings(probe, kGridSensors);
   const std::vector<double> r = half_crossings(ref, kGridSensors);
   const std::array<double, 2> g = geometric_edges(s);
-  std::printf("edges on the line x = 2: geometric %.4f, %.4f m; probe", g[0], g[1]);
-  for (double z : p) std::printf(" %.4f", z);
-  std::printf("; reference");
-  for (double z : r) std::printf(" %.4f", z);
-  std::printf("\n");
+  std::printf("edges on the line x = 2: geometric %.4f, %.4f m;", g[0], g[1]);
+  print_crossings(p, r);
   ASSERT_EQ(p.size(), 2u);
   ASSERT_EQ(r.size(), 2u);
   for (std::size_t k = 0; k < 2; ++k) {
@@ -225,17 +230,13 @@ TEST(SunAccuracy, AnExteriorLouverCastsItsSunShadowWhereTheReferencePutsIt) {
   const std::vector<Rgb> ref = reference(scene, kReferenceSpp);
   const std::vector<double> p = half_crossings(probe, kGridSensors);
   const std::vector<double> r = half_crossings(ref, kGridSensors);
-  std::printf("crossings on the line x = 2: probe");
-  for (double z : p) std::printf(" %.4f", z);
-  std::printf("; reference");
-  for (double z : r) std::printf(" %.4f", z);
-  std::printf("\n");
+  std::printf("crossings on the line x = 2:");
+  print_crossings(p, r);
   ASSERT_EQ(r.size(), 4u);
   ASSERT_EQ(p.size(), 4u);
   for (std::size_t k = 0; k < 4; ++k) EXPECT_NEAR(p[k], r[k], 0.01) << "crossing " << k;
-  const std::vector<double> away =
-      half_crossings(d.sensors({{"exterior", {{"louver", {{"translate", {0, -10, 0}}}}}}}),
-                     kGridSensors);
+  const std::vector<double> away = half_crossings(
+      d.sensors({{"exterior", {{"louver", {{"translate", {0, -10, 0}}}}}}}), kGridSensors);
   EXPECT_EQ(away.size(), 2u) << "the louver moved 10 m down leaves the patch whole";
 }
 
