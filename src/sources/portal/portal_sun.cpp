@@ -47,7 +47,7 @@ PortalSun make_portal_sun(std::uint32_t portal, const SunDisc& disc, Rgb illumin
   const double golden = kPi * (3 - std::sqrt(5.0));
   for (int i = 0; i < kSunPenumbraDirections; ++i) {
     const double radius = std::sqrt((i + 0.5) / kSunPenumbraDirections), a = golden * i;
-    sun.directions[static_cast<std::size_t>(kSunRimDirections + i)] =
+    sun.directions[static_cast<std::size_t>(kSunRimDirections) + static_cast<std::size_t>(i)] =
         direction(radius * std::cos(a), radius * std::sin(a));
   }
   return sun;
@@ -63,7 +63,8 @@ double sun_disc_fraction(const SunGeometry& g, const PortalSun& sun, Vec3 origin
     if (passes(g, sun, origin, sun.directions[static_cast<std::size_t>(i)]) != centre) {
       int seen = 0;  // the penumbra
       for (int k = 0; k < kSunPenumbraDirections; ++k) {
-        const Vec3 w = sun.directions[static_cast<std::size_t>(kSunRimDirections + k)];
+        const Vec3 w = sun.directions[static_cast<std::size_t>(kSunRimDirections) +
+                                      static_cast<std::size_t>(k)];
         seen += passes(g, sun, origin, w) ? 1 : 0;
       }
       return static_cast<double>(seen) / kSunPenumbraDirections;
