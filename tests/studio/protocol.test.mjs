@@ -5,7 +5,12 @@
 import test from 'node:test';
 import assert from 'node:assert/strict';
 
-import { connect, mean, startServer, stopServer } from './studio_support.mjs';
+import { execFileSync } from 'node:child_process';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+
+import { connect, mean, relightBinary, startServer, stopServer, studioScene } from './studio_support.mjs';
 
 const allLuminaires = (hello, settings) =>
   Object.fromEntries(hello.luminaires.map((l) => [l.name, settings]));
@@ -60,6 +65,51 @@ test('a state change relights: dimming every luminaire to 0.25 quarters the ligh
               `sensor ${k}: ${dim.sensors[k]} vs ${d.sensors[k]} + 0.25 × ${lit}`);
   }
   assert.ok(mean(Array.from(dim.illuminance)) < mean(Array.from(b.illuminance)));
+  c.close();
+});
+
+test('a sun through the window: the frame\'s sensors are relight probe\'s, patch and all', async () => {
+  // The sun behind clear glass is traced at every receiver and bounced (issue 21): the studio
+  // shows what probe reads, and the sun patch makes some sensors far brighter than the rest.
+  const c = await connect(server.ws);
+  const hello = await c.nextJson('hello');
+  await c.nextFrame();
+  const window = hello.portals[0]?.name;
+  assert.ok(window, 'the demo room has a window');
+  const state = {
+    portals: {
+      [window]: {
+        environment: {
+          type: 'cie_sky', sky_type: 12, horizontal_illuminance: 12000, ground_albedo: 0.2,
+          sun: { latitude: 48.14, longitude: 11.58, utc_offset: 1, datetime: '2026-03-21T10:00' },
+          sun_illuminance: 70000,
+        },
+      },
+    },
+  };
+  c.send({ type: 'state', seq: 900, state });
+  const frame = await c.next((m) => m.binary && m.tag === 'RLFR' && m.data.readUInt32LE(8) === 900);
+  const { decodeFrame } = await import('./studio_support.mjs');
+  const studio = decodeFrame(frame.data).sensors;
+  const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'relight-sun-'));
+  try {
+    fs.writeFileSync(path.join(dir, 'sun.json'), JSON.stringify(state));
+    execFileSync(relightBinary, ['probe', studioScene, '--state', path.join(dir, 'sun.json'),
+                                 '-o', path.join(dir, 'sensors.csv')], { stdio: 'pipe' });
+    const rows = fs.readFileSync(path.join(dir, 'sensors.csv'), 'utf8').trim().split('\n').slice(1);
+    const lux = rows.map((r) => Number(r.split(',')[8]));
+    assert.equal(lux.length, studio.length);
+    for (let k = 0; k < lux.length; ++k) {
+      assert.ok(Math.abs(studio[k] - lux[k]) <= 1e-4 * lux[k] + 1e-3, `sensor ${k}: ${studio[k]} vs probe ${lux[k]}`);
+    }
+    const sorted = [...lux].sort((a, b) => a - b);
+    const median = sorted[Math.floor(sorted.length / 2)];
+    console.log(`sun frame: ${lux.length} sensors equal probe's; median ${median.toFixed(0)} lx, ` +
+                `brightest ${sorted.at(-1).toFixed(0)} lx`);
+    assert.ok(sorted.at(-1) > 5 * median, 'a sun patch on the work plane');
+  } finally {
+    fs.rmSync(dir, { recursive: true, force: true });
+  }
   c.close();
 });
 
