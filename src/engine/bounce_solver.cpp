@@ -196,12 +196,8 @@ int solve_bounces_rgb(const GatherOperator& gather, const Receivers& receivers,
       sum[2] += it.value() * l[2];
     }
   };
-  // The change is measured over all vertices, where the brightest dominate: from a warm start
-  // the remaining error sits where the light changed, often dimmer surfaces (a ceiling lit
-  // only by interreflection), so a warm start stops at a tenth of the tolerance (a moved
-  // emitter's ceiling otherwise ended 0.1 % off the cold solution,
-  // tests/cli/emitter_outputs_test.cpp).
-  const double tolerance = warm ? 0.1 * settings.tolerance : settings.tolerance;
+  const double tolerance =
+      warm ? std::max(settings.tolerance, kWarmBounceTolerance) : settings.tolerance;
   int bounces = 0;
   if (settings.max_bounces > 0) {
     reflect();

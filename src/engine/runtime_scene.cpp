@@ -1,7 +1,9 @@
 #include "engine/runtime_scene.h"
 
+#include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 
 #include <tbb/blocked_range.h>
@@ -100,15 +102,15 @@ RuntimeScene::RuntimeScene(const RuntimeSceneView& view, BounceSettings bounce)
 }
 
 void RuntimeScene::hat_means(const IrradianceField& irradiance, int subdivision,
-                             std::span<float> out) const {
+                             std::span<float> out, const TriangleFilter& may_light,
+                             double min_edge) const {
   const std::size_t n = receivers();
   if (out.size() != 3 * n || subdivision < 0) {
     throw std::invalid_argument("RuntimeScene::hat_means: bad output size or subdivision");
   }
   // Per triangle corner: ∫ E φ_corner over the triangle.
   std::vector<Rgb> corner(3 * triangles_.size());
-  const int s = subdivision;
-  const double inv = s > 0 ? 1.0 / s : 0.0;
+
   tbb::parallel_for(
       tbb::blocked_range<std::size_t>(0, triangles_.size(), 64), [&](const auto& range) {
         for (std::size_t t = range.begin(); t != range.end(); ++t) {
@@ -118,6 +120,13 @@ void RuntimeScene::hat_means(const IrradianceField& irradiance, int subdivision,
           const double area = 0.5 * length(face);
           if (!(area > 0)) continue;
           const Vec3 normal = face / (2 * area);
+          if (may_light && !may_light(a, b, c, normal)) continue;
+          int s = subdivision;
+          if (s > 1 && min_edge > 0) {
+            const double longest = std::max({length(b - a), length(c - b), length(a - c)});
+            s = std::clamp(static_cast<int>(std::ceil(longest / min_edge)), 1, s);
+          }
+          const double inv = s > 0 ? 1.0 / s : 0.0;
           const double weight = s > 0 ? area / (s * s) : 0.0;
           std::array<Rgb, 3> sum{};
           const auto add = [&](double u, double v) {  // barycentrics toward b and c

@@ -62,6 +62,10 @@ struct BoundingSphere {
 
 // Irradiance (lx, RGB) at a point with a unit normal; called from many threads at once.
 using IrradianceField = std::function<Rgb(Vec3 point, Vec3 normal)>;
+// Whether a field may light any point of the triangle (a, b, c) of unit normal n: false lets
+// hat_means skip the triangle's quadrature points (a sun that reaches only a patch of a
+// million-triangle scene). Called from many threads at once.
+using TriangleFilter = std::function<bool(Vec3 a, Vec3 b, Vec3 c, Vec3 normal)>;
 
 class RuntimeScene {
  public:
@@ -91,7 +95,11 @@ class RuntimeScene {
   // points per adjacent triangle (s = subdivision ≥ 1), or with the corners' φ-weighted
   // centroids (s = 0); a vertex with no triangle: the value at its ray point; at sensors the
   // value at the sensor.
-  void hat_means(const IrradianceField& irradiance, int subdivision, std::span<float> out) const;
+  // With `may_light`, triangles it rejects contribute nothing. With `min_edge` > 0 (m) a
+  // triangle is split no finer than sub-triangles of that longest edge (a 4 cm triangle of a
+  // scanned model needs one point, a 30 cm one of a wall all s²).
+  void hat_means(const IrradianceField& irradiance, int subdivision, std::span<float> out,
+                 const TriangleFilter& may_light = {}, double min_edge = 0) const;
 
   // The interreflected light (3 per receiver) of the direct irradiance `direct` (3 per
   // receiver; its vertex rows are what the surfaces reflect): channel c bounces with the

@@ -167,8 +167,9 @@ void PortalSetLighting::update_suns() {
     }
   });
   // Its interreflection: what each vertex reflects is the sun's mean over its hat function
-  // (4² points a triangle, each seeing the disc's centre or not: a patch edge crossing a
-  // triangle is placed to a quarter of its width), bounced through the stored gather
+  // (up to 4² points a triangle, sub-triangles no smaller than 5 cm, each point seeing the
+  // disc's centre or not: a patch edge crossing a triangle is placed to a quarter of its
+  // width or 5 cm), over the triangles the sun may reach, bounced through the stored gather
   // operator; a sun that moved a little starts from the last solution (bounce_solver.h).
   const bool warm = sun_indirect_.size() == 3 * n;
   sun_indirect_.resize(3 * n, 0.0f);
@@ -176,7 +177,11 @@ void PortalSetLighting::update_suns() {
     std::vector<float> reflected(3 * n);
     runtime_->hat_means(
         [&](Vec3 p, Vec3 normal) { return sun_irradiance(geometry, suns_, p, normal, false); }, 4,
-        reflected);
+        reflected,
+        [&](Vec3 a, Vec3 b, Vec3 c, Vec3 normal) {
+          return sun_may_light_triangle(geometry, suns_, a, b, c, normal);
+        },
+        0.05);
     sun_bounce_seconds_ = runtime_->bounce(reflected, sun_indirect_, warm);
   }
   sun_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

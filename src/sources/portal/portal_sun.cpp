@@ -86,4 +86,17 @@ Rgb sun_irradiance(const SunGeometry& g, std::span<const PortalSun> suns, Vec3 p
   return e;
 }
 
+bool sun_may_light_triangle(const SunGeometry& g, std::span<const PortalSun> suns, Vec3 a, Vec3 b,
+                            Vec3 c, Vec3 n) {
+  const Vec3 m = (a + b + c) / 3;
+  const double r = std::max({length(a - m), length(b - m), length(c - m)});
+  for (const PortalSun& sun : suns) {
+    if (sun.portal >= g.portals.size() || dot(n, sun.disc.direction) <= 0) continue;
+    // A ray from a point within r of m is a ray from m moved by at most r.
+    const BoundingSphere& bound = g.portals[sun.portal];
+    if (may_reach({bound.centre, bound.radius + 1.01 * r}, sun.disc, m)) return true;
+  }
+  return false;
+}
+
 }  // namespace relight

@@ -70,4 +70,10 @@ double sun_disc_fraction(const SunGeometry& geometry, const PortalSun& sun, Vec3
 Rgb sun_irradiance(const SunGeometry& geometry, std::span<const PortalSun> suns, Vec3 p, Vec3 n,
                    bool penumbra = true);
 
+// Whether any of `suns` may light a point of the triangle (a, b, c) of unit normal n: it
+// faces the sun, and the sun's cone from some point of it may reach its portal's bounding
+// sphere (conservative; engine/runtime_scene.h TriangleFilter).
+bool sun_may_light_triangle(const SunGeometry& geometry, std::span<const PortalSun> suns, Vec3 a,
+                            Vec3 b, Vec3 c, Vec3 n);
+
 }  // namespace relight
