@@ -21,7 +21,6 @@ std::vector<Vec3> copy(std::span<const Vec3> s) {
 
 RuntimeScene::RuntimeScene(const RuntimeSceneView& view, BounceSettings bounce)
     : vertex_count_(view.vertex_count),
-      normals_(view.receiver_normals),
       positions_(copy(view.mesh_positions)),
       triangles_(view.opaque_triangles),
       occluders_(positions_, view.opaque_triangles, view.opaque_ids),
@@ -35,14 +34,14 @@ RuntimeScene::RuntimeScene(const RuntimeSceneView& view, BounceSettings bounce)
       view.opaque_ids.size() != view.opaque_triangles.size()) {
     throw std::invalid_argument("RuntimeScene: receivers, mesh and albedo disagree");
   }
-  albedo_.positions = view.receiver_positions;
-  albedo_.normals = view.receiver_normals;
-  albedo_.vertex_count = view.vertex_count;
-  albedo_.sensor_count = n - view.vertex_count;
-  albedo_.albedo.assign(n, Rgb{});
+  receivers_.positions = view.receiver_positions;
+  receivers_.normals = view.receiver_normals;
+  receivers_.vertex_count = view.vertex_count;
+  receivers_.sensor_count = n - view.vertex_count;
+  receivers_.albedo.assign(n, Rgb{});
   for (std::size_t v = 0; v < view.vertex_count; ++v) {
-    albedo_.albedo[v] = {view.vertex_albedo[3 * v], view.vertex_albedo[3 * v + 1],
-                         view.vertex_albedo[3 * v + 2]};
+    receivers_.albedo[v] = {view.vertex_albedo[3 * v], view.vertex_albedo[3 * v + 1],
+                            view.vertex_albedo[3 * v + 2]};
   }
   // Per portal the box around its glass vertices, then the farthest vertex from its centre.
   std::vector<std::pair<Vec3, Vec3>> boxes;
@@ -68,7 +67,7 @@ RuntimeScene::RuntimeScene(const RuntimeSceneView& view, BounceSettings bounce)
   PreparedMesh mesh;
   mesh.positions = positions_;
   mesh.triangles = triangles_;
-  ray_points_ = receiver_ray_points(albedo_, mesh);
+  ray_points_ = receiver_ray_points(receivers_, mesh);
   if (!view.gather_rows.empty()) {
     // The stored operator, copied once into the solver's matrix.
     const Eigen::Map<const Eigen::SparseMatrix<float, Eigen::RowMajor>> map(
@@ -154,12 +153,14 @@ void RuntimeScene::hat_means(const IrradianceField& irradiance, int subdivision,
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const auto& range) {
     for (std::size_t r = range.begin(); r != range.end(); ++r) {
       Rgb e;
-      if (r < vertex_count_ && hat_area_[r] > 0) {
+      if (r >= vertex_count_) {
+        // Sensors reflect nothing: the bounce reads only vertex rows.
+      } else if (hat_area_[r] > 0) {
         for (std::size_t i = corner_first_[r]; i < corner_first_[r + 1]; ++i)
           e += corner[corners_[i]];
         e = e / hat_area_[r];
       } else {
-        e = irradiance(ray_points_[r], normals_[r]);
+        e = irradiance(ray_points_[r], receivers_.normals[r]);
       }
       out[3 * r] = static_cast<float>(e.r);
       out[3 * r + 1] = static_cast<float>(e.g);
@@ -172,7 +173,7 @@ double RuntimeScene::bounce(std::span<const float> direct, std::span<float> indi
                             bool warm) const {
   if (!gather_) throw std::invalid_argument("RuntimeScene::bounce: no gather operator stored");
   const auto start = std::chrono::steady_clock::now();
-  solve_bounces_rgb(*gather_, albedo_, direct, indirect, warm, bounce_);
+  solve_bounces_rgb(*gather_, receivers_, direct, indirect, warm, bounce_);
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 

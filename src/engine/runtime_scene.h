@@ -73,11 +73,11 @@ class RuntimeScene {
   RuntimeScene(const RuntimeSceneView& view, BounceSettings bounce);
 
   std::size_t receivers() const { return ray_points_.size(); }
-  const std::vector<Vec3>& receiver_positions() const { return albedo_.positions; }
+  const std::vector<Vec3>& receiver_positions() const { return receivers_.positions; }
   std::size_t vertex_count() const { return vertex_count_; }
   // Where rays from receiver r start (engine/receivers.h receiver_ray_points) and its normal.
   Vec3 ray_point(std::size_t r) const { return ray_points_[r]; }
-  Vec3 normal(std::size_t r) const { return normals_[r]; }
+  Vec3 normal(std::size_t r) const { return receivers_.normals[r]; }
   // The static opaque scene (ids: the triangle's index in the mesh) and the portals' glass
   // (ids: the portal's index).
   const RayTracer& occluders() const { return occluders_; }
@@ -93,8 +93,8 @@ class RuntimeScene {
 
   // out (3 per receiver): at vertices the mean of `irradiance` over the hat function with s²
   // points per adjacent triangle (s = subdivision ≥ 1), or with the corners' φ-weighted
-  // centroids (s = 0); a vertex with no triangle: the value at its ray point; at sensors the
-  // value at the sensor.
+  // centroids (s = 0); a vertex with no triangle: the value at its ray point; at sensors 0
+  // (they reflect nothing, and bounce() reads only vertex rows).
   // With `may_light`, triangles it rejects contribute nothing. With `min_edge` > 0 (m) a
   // triangle is split no finer than sub-triangles of that longest edge (a 4 cm triangle of a
   // scanned model needs one point, a 30 cm one of a wall all s²).
@@ -110,13 +110,13 @@ class RuntimeScene {
 
  private:
   std::size_t vertex_count_ = 0;
-  std::vector<Vec3> ray_points_, normals_;  // per receiver
+  std::vector<Vec3> ray_points_;  // per receiver
   std::vector<Vec3> positions_;
   std::vector<Triangle> triangles_;  // opaque
   RayTracer occluders_, glass_;
   std::vector<BoundingSphere> glass_bounds_;  // per portal
   std::optional<GatherOperator> gather_;
-  Receivers albedo_;  // the bounce solver's receivers: albedo per receiver (0 at sensors)
+  Receivers receivers_;  // positions, normals, albedo per receiver (0 at sensors)
   BounceSettings bounce_;
   // Vertex → the (triangle, corner) pairs around it, compressed: [first[v], first[v + 1]).
   std::vector<std::size_t> corner_first_;

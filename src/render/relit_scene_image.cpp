@@ -1,5 +1,7 @@
 #include "render/relit_scene_image.h"
 
+#include <optional>
+
 #include "math/cubemap.h"
 #include "render/pixel_direct.h"
 #include "sources/nearfield/emitter_direct.h"
@@ -33,19 +35,21 @@ ShadedImages render_relit_scene(RelitScene& scene, const Camera& camera, int wid
   }
   const std::vector<float> indirect = scene.indirect_irradiance();
   const std::vector<PixelLight> lights = pixel_lights(t.scene, lit);
-  const SunGeometry sun_geometry = lit.sun_geometry();
+  // A scene without windows has no suns and no sun geometry.
+  const std::optional<SunGeometry> sun_geometry =
+      lit.suns().empty() ? std::nullopt : std::optional<SunGeometry>(lit.sun_geometry());
   const EmitterLighting* emitters = lit.emitters();
-  return shade_vertices(pinhole, {occluders, t.positions, t.triangles, t.vertex_albedo, indirect,
-                                  [&](Vec3 p, Vec3 n) {
-                                    Rgb e = exact_direct_irradiance(occluders, lights, p, n) +
-                                            sun_irradiance(sun_geometry, lit.suns(), p, n);
-                                    if (emitters != nullptr) {
-                                      e += emitter_direct_irradiance(emitters->placed(), &occluders,
-                                                                     p, n);
-                                    }
-                                    return e;
-                                  },
-                                  background});
+  return shade_vertices(
+      pinhole, {occluders, t.positions, t.triangles, t.vertex_albedo, indirect,
+                [&](Vec3 p, Vec3 n) {
+                  Rgb e = exact_direct_irradiance(occluders, lights, p, n) +
+                          (sun_geometry ? sun_irradiance(*sun_geometry, lit.suns(), p, n) : Rgb{});
+                  if (emitters != nullptr) {
+                    e += emitter_direct_irradiance(emitters->placed(), &occluders, p, n);
+                  }
+                  return e;
+                },
+                background});
 }
 
 }  // namespace relight

@@ -131,6 +131,7 @@ PortalSetLighting::PortalSetLighting(PortalTransferSet transfer, const RuntimeSc
 }
 
 SunGeometry PortalSetLighting::sun_geometry() const {
+  if (runtime_ == nullptr) throw std::logic_error("PortalSetLighting: no portals, no sun geometry");
   return {runtime_->occluders(), runtime_->glass(), bounds_};
 }
 

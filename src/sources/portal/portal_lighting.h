@@ -76,7 +76,8 @@ class PortalSetLighting : public SourceTerm {
   std::size_t transfer_bytes() const override;
 
   const PortalLighting& portal(std::size_t p) const { return portals_.at(p); }
-  // The suns traced exactly now, and what they are traced against: for per-pixel tracing.
+  // The suns traced exactly now, and what they are traced against (only for a scene with
+  // portals): for per-pixel tracing.
   std::span<const PortalSun> suns() const { return suns_; }
   SunGeometry sun_geometry() const;
   // Wall time of the last suns' update: the direct light at every receiver and its bounce.
