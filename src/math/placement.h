@@ -1,5 +1,5 @@
 // The one placement of a rigid object in a lighting state (docs/lighting-state.md: exterior
-// objects, near-field emitters, and the movable objects to come): turned by `rotate_deg` about
+// objects, near-field emitters and movable objects): turned by `rotate_deg` about
 // the vertical axis through the object's pivot (the centre of its bounding box as the scene
 // placed it), counter-clockwise seen from above (the right-handed turn about +y), then moved
 // by `translate` (m, from where the scene put it). Pinned by the lighting-state tests of
@@ -24,6 +24,12 @@ inline Vec3 placed_point(Vec3 p, Vec3 pivot, const Placement& placement) {
   const Vec3 d = p - pivot;
   return pivot + Vec3{c * d.x + s * d.z, d.y, -s * d.x + c * d.z} + placement.translate;
 }
+
+// A placement that may also hide the object (exterior objects, movable objects).
+struct MovablePlacement : Placement {
+  bool visible = true;
+  bool operator==(const MovablePlacement&) const = default;
+};
 
 // The same turn applied to a direction (a normal, an aim).
 inline Vec3 placed_direction(Vec3 v, const Placement& placement) {

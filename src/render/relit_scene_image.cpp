@@ -34,7 +34,7 @@ ShadedImages render_relit_scene(RelitScene& scene, const Camera& camera, int wid
         {occluders, t.positions, t.triangles, t.vertex_albedo, scene.irradiance(), {}, background});
   }
   const std::vector<float> indirect = scene.indirect_irradiance();
-  const std::vector<PixelLight> lights = pixel_lights(t.scene, lit);
+  const std::vector<LuminaireLight> lights = pixel_lights(t.scene, lit);
   // A scene without windows has no suns and no sun geometry.
   const std::optional<SunGeometry> sun_geometry =
       lit.suns().empty() ? std::nullopt : std::optional<SunGeometry>(lit.sun_geometry());
@@ -42,10 +42,11 @@ ShadedImages render_relit_scene(RelitScene& scene, const Camera& camera, int wid
   return shade_vertices(
       pinhole, {occluders, t.positions, t.triangles, t.vertex_albedo, indirect,
                 [&](Vec3 p, Vec3 n) {
-                  Rgb e = exact_direct_irradiance(occluders, lights, p, n) +
+                  Rgb e = luminaire_direct_irradiance(occluders, lights, p, n) +
                           (sun_geometry ? sun_irradiance(*sun_geometry, lit.suns(), p, n) : Rgb{});
                   if (emitters != nullptr) {
-                    e += emitter_direct_irradiance(emitters->placed(), &occluders, p, n);
+                    const Occluders room(occluders);
+                    e += emitter_direct_irradiance(emitters->placed(), &room, p, n);
                   }
                   return e;
                 },

@@ -19,6 +19,7 @@ LightingState default_lighting_state(const Scene& scene) {
     s.portals.push_back(portal_state(p, scene.exterior.size()));
   }
   for (const Emitter& e : scene.emitters) s.emitters.push_back(emitter_state(e));
+  s.objects.resize(scene.objects.size());
   return s;
 }
 
@@ -91,7 +92,7 @@ void apply_placement(Placement& p, const JsonNode& node) {
   if (const auto r = node.find("rotate_deg")) p.rotate_deg = r->number();
 }
 
-void apply_exterior_placement(ExteriorPlacement& p, const JsonNode& node) {
+void apply_movable_placement(MovablePlacement& p, const JsonNode& node) {
   node.expect_keys({"translate", "rotate_deg", "visible"});
   apply_placement(p, node);
   if (const auto v = node.find("visible")) p.visible = v->boolean();
@@ -105,7 +106,7 @@ void apply_exterior(const std::vector<PortalState*>& portals, const Scene& scene
   for (const auto& [name, unused] : node.value().items()) {
     const JsonNode entry = node.at(name);
     const std::size_t i = exterior_index(scene, entry, name);
-    for (PortalState* p : portals) apply_exterior_placement(p->exterior[i], entry);
+    for (PortalState* p : portals) apply_movable_placement(p->exterior[i], entry);
   }
 }
 
@@ -114,6 +115,13 @@ std::size_t portal_index(const Scene& scene, const JsonNode& where, const std::s
     if (scene.portals[i].name == name) return i;
   }
   where.fail("no portal named \"" + name + "\" in the precomputed scene");
+}
+
+std::size_t object_index(const Scene& scene, const JsonNode& where, const std::string& name) {
+  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+    if (scene.objects[i].name == name) return i;
+  }
+  where.fail("no movable object named \"" + name + "\" in the precomputed scene");
 }
 
 std::size_t emitter_index(const Scene& scene, const JsonNode& where, const std::string& name) {
@@ -147,7 +155,7 @@ void apply_portal(PortalState& s, const Scene& scene, const JsonNode& node,
 void apply_lighting_state(LightingState& state, const Scene& scene, const nlohmann::json& document,
                           const std::string& where, const std::filesystem::path& base_dir) {
   const JsonNode root(document, where, "/");
-  root.expect_keys({"luminaires", "portals", "exterior", "emitters"});
+  root.expect_keys({"luminaires", "portals", "exterior", "emitters", "objects"});
   if (const auto lums = root.find("luminaires")) {
     if (!lums->is_object()) lums->fail("expected an object mapping luminaire names to states");
     for (const auto& [name, unused] : lums->value().items()) {
@@ -168,6 +176,15 @@ void apply_lighting_state(LightingState& state, const Scene& scene, const nlohma
     for (const auto& [name, unused] : emitters->value().items()) {
       const JsonNode node = emitters->at(name);
       apply_emitter(state.emitters[emitter_index(scene, node, name)], node);
+    }
+  }
+  if (const auto objects = root.find("objects")) {
+    if (!objects->is_object())
+      objects->fail("expected an object mapping object names to placements");
+    for (const auto& [name, unused] : objects->value().items()) {
+      const JsonNode node = objects->at(name);
+      if (!node.is_object()) node.fail("expected a placement: translate, rotate_deg, visible");
+      apply_movable_placement(state.objects[object_index(scene, node, name)], node);
     }
   }
   if (const auto portals = root.find("portals")) {
@@ -202,6 +219,16 @@ Scene scene_with_state(const Scene& scene, const LightingState& state) {
     l.color = s.color;
     l.dimmer = s.on ? s.dimmer : 0;
   }
+  if (state.objects.size() != scene.objects.size()) {
+    throw std::invalid_argument("scene_with_state: the state is not of this scene");
+  }
+  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+    if (state.objects[i].visible) {
+      out.geometry.append(
+          placed_geometry(scene.objects[i].geometry, scene.objects[i].pivot, state.objects[i]));
+    }
+  }
+  out.objects.clear();
   for (std::size_t p = 0; p < out.portals.size(); ++p) {
     out.portals[p].environment = state.portals[p].environment;
     out.portals[p].tint = state.portals[p].tint;

@@ -21,6 +21,7 @@ struct LightingState {
   std::vector<LuminaireState> luminaires;  // scene order
   std::vector<PortalState> portals;        // scene order
   std::vector<EmitterState> emitters;      // scene order
+  std::vector<MovablePlacement> objects;   // movable objects, scene order
 };
 
 LightingState default_lighting_state(const Scene& scene);
@@ -34,8 +35,9 @@ LightingState load_lighting_state(const Scene& scene, const std::filesystem::pat
 
 // The scene as `state` lights it, for code that reads a Scene (the reference tracer): each
 // luminaire's aim, C0, distribution, colour and dimmer (0 when off), each portal's environment,
-// tint and frost. Emitters and exterior objects keep the scene's geometry: their placements
-// are the state's (place_emitters, placed_exterior).
+// tint and frost; the movable objects placed into `geometry` (hidden ones left out, the
+// scene's `objects` then empty). Emitters and exterior objects keep the scene's geometry: their
+// placements are the state's (place_emitters, placed_exterior).
 Scene scene_with_state(const Scene& scene, const LightingState& state);
 
 }  // namespace relight

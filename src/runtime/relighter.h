@@ -67,6 +67,8 @@ class Relighter {
 
   // The current photometry of luminaire j (as loaded for its state).
   const Distribution& distribution(std::size_t j) const { return luminaires_.distribution(j); }
+  // The luminaires' term (their exact direct light at any point: lights()).
+  const LuminaireLighting& luminaires() const { return luminaires_; }
 
   std::size_t receivers() const { return transfer_.receivers; }
   // How many distribution changes were one moved curve control point, updated

@@ -89,6 +89,17 @@ struct Emitter {
   Vec3 pivot;             // centre of its bounding box
 };
 
+// A movable object of the room (issue 12, Iwasaki et al. 2007): furniture that a lighting
+// state moves (translate, turn about the vertical axis through `pivot`) or hides. At its scene
+// placement it is part of the room — it occludes, reflects and receives like any surface —
+// but it is not part of the precomputed transfer: the run time adds what it changes
+// (sources/object/object_lighting.h).
+struct MovableObject {
+  std::string name;
+  TriangleSoup geometry;  // as the scene places it, each triangle with its material
+  Vec3 pivot;             // centre of its bounding box
+};
+
 struct Camera {
   std::string name;
   Vec3 eye, target, up{0, 1, 0};
@@ -139,6 +150,7 @@ struct Scene {
   std::vector<Portal> portals;
   std::vector<ExteriorGeometry> exterior;
   std::vector<Emitter> emitters;
+  std::vector<MovableObject> objects;
   PrecomputeSettings precompute;
 
   Bounds bounds() const;

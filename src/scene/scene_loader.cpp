@@ -178,6 +178,32 @@ struct Loader {
     }
   }
 
+  // Movable objects: a name (unique among objects, exterior objects and emitters, which share
+  // the lighting state's placement rule) and a non-empty list of geometry entries.
+  void load_objects(const JsonNode& node) {
+    std::set<std::string> names;
+    for (const ExteriorGeometry& x : scene.exterior) names.insert(x.name);
+    for (const Emitter& e : scene.emitters) names.insert(e.name);
+    for (const JsonNode& o : node.elements()) {
+      o.expect_keys({"name", "geometry"});
+      MovableObject object;
+      object.name = o.at("name").string();
+      if (object.name.empty()) o.at("name").fail("name must not be empty");
+      if (!names.insert(object.name).second) {
+        o.at("name").fail("the name \"" + object.name +
+                          "\" is already used by an object, exterior object or emitter");
+      }
+      const JsonNode g = o.at("geometry");
+      if (g.elements().empty()) g.fail("an object needs at least one geometry entry");
+      for (const JsonNode& entry : g.elements()) object.geometry.append(geometry_entry(entry));
+      for (std::uint32_t m : object.geometry.triangle_material) {
+        if (scene.materials[m].portal) g.fail("an object cannot be window glass");
+      }
+      object.pivot = movable_pivot(object.geometry, g, "object");
+      scene.objects.push_back(std::move(object));
+    }
+  }
+
   // The material emitter geometry gets when its entry names none (black, never in the room).
   std::string emitter_material() {
     static constexpr const char* kName = "emitter";
@@ -470,7 +496,7 @@ Scene scene_from_json(const nlohmann::json& document, const fs::path& file,
                       const EmbeddedFiles* embedded) {
   const JsonNode root(document, file.string(), "/");
   root.expect_keys({"description", "materials", "geometry", "luminaires", "sensors", "cameras",
-                    "portals", "exterior", "emitters", "precompute"});
+                    "portals", "exterior", "emitters", "objects", "precompute"});
   Loader loader;
   loader.scene.file = file;
   loader.base_dir = file.has_parent_path() ? file.parent_path() : fs::path(".");
@@ -484,6 +510,7 @@ Scene scene_from_json(const nlohmann::json& document, const fs::path& file,
   if (const auto n = root.find("portals")) loader.load_portals(*n);
   if (const auto n = root.find("exterior")) loader.load_exterior(*n);
   if (const auto n = root.find("emitters")) loader.load_emitters(*n);
+  if (const auto n = root.find("objects")) loader.load_objects(*n);
   if (const auto n = root.find("precompute")) loader.load_precompute(*n);
   for (const Vec3& p : loader.scene.geometry.positions) {
     if (!is_finite(p)) root.at("geometry").fail("geometry has a non-finite coordinate");

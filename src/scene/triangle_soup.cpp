@@ -12,4 +12,10 @@ void TriangleSoup::append(const TriangleSoup& other) {
                            other.triangle_material.end());
 }
 
+TriangleSoup placed_geometry(const TriangleSoup& soup, Vec3 pivot, const Placement& placement) {
+  TriangleSoup out = soup;
+  for (Vec3& p : out.positions) p = placed_point(p, pivot, placement);
+  return out;
+}
+
 }  // namespace relight

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "math/placement.h"
 #include "math/vec3.h"
 
 namespace relight {
@@ -22,5 +23,8 @@ struct TriangleSoup {
   // Appends `other`, offsetting its indices.
   void append(const TriangleSoup& other);
 };
+
+// The soup as a lighting state places a rigid object (math/placement.h).
+TriangleSoup placed_geometry(const TriangleSoup& soup, Vec3 pivot, const Placement& placement);
 
 }  // namespace relight

@@ -54,6 +54,28 @@ class RayTracer {
   std::vector<std::uint32_t> ids_;
 };
 
+// The tracers that block light together: the static room, and the movable objects as a
+// lighting state places them (sources/object/placed_objects.h), when any. Converts from one
+// tracer, so code that traces the room alone reads the same.
+class Occluders {
+ public:
+  Occluders(const RayTracer& room) : room_(&room) {}  // NOLINT(google-explicit-constructor)
+  Occluders(const RayTracer& room, const RayTracer* objects) : room_(&room), objects_(objects) {}
+
+  bool occluded(const Ray& ray) const {
+    return room_->occluded(ray) || (objects_ != nullptr && objects_->occluded(ray));
+  }
+  std::size_t triangle_count() const {
+    return room_->triangle_count() + (objects_ != nullptr ? objects_->triangle_count() : 0);
+  }
+  const RayTracer& room() const { return *room_; }
+  const RayTracer* objects() const { return objects_; }
+
+ private:
+  const RayTracer* room_;
+  const RayTracer* objects_ = nullptr;
+};
+
 // Ids 0 … n−1: a tracer built with them reports each hit triangle by its own index.
 std::vector<std::uint32_t> sequential_ids(std::size_t n);
 

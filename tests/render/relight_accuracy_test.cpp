@@ -388,7 +388,7 @@ TEST(RelightAccuracy, FurnishedRoomImageMatchesReference) {
   // pixel): shadows and beam edges are sharp, so every block must agree.
   std::vector<float> indirect(3 * relighter.receivers());
   relighter.relight(indirect, false);
-  const std::vector<PixelLight> lights = pixel_lights(r.scene, relighter);
+  const std::vector<LuminaireLight> lights = pixel_lights(r.scene, relighter);
   const ShadedImages pixel =
       shade_vertices(camera,
                      {tracer,
@@ -396,7 +396,7 @@ TEST(RelightAccuracy, FurnishedRoomImageMatchesReference) {
                       r.precomputed.mesh.triangles,
                       albedo,
                       indirect,
-                      [&](Vec3 q, Vec3 n) { return exact_direct_irradiance(tracer, lights, q, n); },
+                      [&](Vec3 q, Vec3 n) { return luminaire_direct_irradiance(tracer, lights, q, n); },
                       {}},
                      4);
   const Stats exact = compare_images(pixel.luminance);

@@ -63,7 +63,7 @@ LuminousOpening luminaire_opening(const Luminaire& l, const LuminousOpening& fro
           l.size.x, l.size.y, l.size.z};
 }
 
-DirectFactor direct_factor(const RayTracer& occluders, Vec3 p, Vec3 normal, Vec3 luminaire_position,
+DirectFactor direct_factor(const Occluders& occluders, Vec3 p, Vec3 normal, Vec3 luminaire_position,
                            const std::vector<Vec3>& opening_offsets, std::uint64_t& rays) {
   const Vec3 d = p - luminaire_position;
   const double dist = length(d);
@@ -85,6 +85,19 @@ DirectFactor direct_factor(const RayTracer& occluders, Vec3 p, Vec3 normal, Vec3
   const double fraction = static_cast<double>(visible) / opening_offsets.size();
   out.factor = fraction * cos_receiver / (dist * dist);
   return out;
+}
+
+Rgb luminaire_direct_irradiance(const Occluders& occluders, std::span<const LuminaireLight> lights,
+                                Vec3 p, Vec3 n) {
+  Rgb e;
+  std::uint64_t rays = 0;
+  for (const LuminaireLight& l : lights) {
+    if (max_component(l.rgb) <= 0) continue;
+    const DirectFactor f = direct_factor(occluders, p, n, l.position, l.opening, rays);
+    if (f.factor <= 0) continue;
+    e += l.rgb * (l.distribution->intensity(l.frame.to_photometric(f.direction)) * f.factor);
+  }
+  return e;
 }
 
 DirectGeometry compute_direct_geometry(const Receivers& receivers,

@@ -8,9 +8,11 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "engine/receivers.h"
+#include "light/distribution.h"
 #include "light/luminaire_frame.h"
 #include "light/photometric_web.h"
 #include "trace/traced_scene.h"
@@ -43,8 +45,23 @@ struct DirectFactor {
 // The direct geometry at one surface point p with unit normal n: what
 // compute_direct_geometry stores per receiver, and what a per-pixel renderer evaluates
 // at each hit. `rays` counts the shadow rays cast.
-DirectFactor direct_factor(const RayTracer& occluders, Vec3 p, Vec3 n, Vec3 luminaire_position,
+DirectFactor direct_factor(const Occluders& occluders, Vec3 p, Vec3 n, Vec3 luminaire_position,
                            const std::vector<Vec3>& opening_offsets, std::uint64_t& rays);
+
+// A luminaire as a lighting state sets it, for its exact direct light at any point: at each
+// pixel of an image (render/pixel_direct.h) and at the vertices of movable objects
+// (sources/object/object_lighting.h).
+struct LuminaireLight {
+  Vec3 position;
+  PhotometricFrame frame;
+  Rgb rgb;  // colour × dimmer (0 when off)
+  const Distribution* distribution = nullptr;
+  std::vector<Vec3> opening;  // sample offsets on the luminous opening
+};
+
+// Direct irradiance (lux per channel) at p with unit normal n from `lights`.
+Rgb luminaire_direct_irradiance(const Occluders& occluders, std::span<const LuminaireLight> lights,
+                                Vec3 p, Vec3 n);
 
 // `ray_points` are receiver_ray_points(receivers, mesh): the shadow rays start there.
 DirectGeometry compute_direct_geometry(const Receivers& receivers,

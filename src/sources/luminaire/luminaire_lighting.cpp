@@ -49,6 +49,27 @@ LuminaireLighting::LuminaireLighting(LuminaireTransferSet transfer, const Scene&
   for (std::size_t j = 0; j < luminaires_.size(); ++j) update(j, states_[j], true);
 }
 
+std::vector<LuminaireLight> LuminaireLighting::lights(const Scene& scene,
+                                                      int opening_samples) const {
+  if (scene.luminaires.size() != luminaires_.size()) {
+    throw std::invalid_argument("LuminaireLighting::lights: not the term's scene");
+  }
+  std::vector<LuminaireLight> out;
+  for (std::size_t j = 0; j < luminaires_.size(); ++j) {
+    const LuminaireState& s = states_[j];
+    const Distribution& d = luminaires_[j].distribution;
+    LuminaireLight l{scene.luminaires[j].position,
+                     photometric_frame(s.aim, s.c0),
+                     s.on ? s.color * s.dimmer : Rgb{},
+                     &d,
+                     {}};
+    l.opening = opening_sample_offsets(luminaire_opening(scene.luminaires[j], d.opening()), l.frame,
+                                       opening_samples);
+    out.push_back(std::move(l));
+  }
+  return out;
+}
+
 bool LuminaireLighting::set_state(std::span<const LuminaireState> states) {
   if (states.size() != luminaires_.size()) {
     throw std::invalid_argument("LuminaireLighting: one state per luminaire");

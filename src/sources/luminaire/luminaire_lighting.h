@@ -18,6 +18,7 @@
 #include "light/distribution.h"
 #include "math/sh_window.h"
 #include "scene/scene.h"
+#include "sources/luminaire/luminaire_direct.h"
 #include "sources/luminaire/luminaire_sh_curve.h"
 #include "sources/luminaire/luminaire_state.h"
 #include "sources/luminaire/luminaire_transfer_view.h"
@@ -43,6 +44,9 @@ class LuminaireLighting : public SourceTerm {
   void add_block(std::size_t block, bool include_direct, float (&acc)[3][kBlock]) const override;
   std::size_t transfer_bytes() const override;
 
+  // The luminaires as the current state sets them, for exact direct light at any point
+  // (sources/luminaire/luminaire_direct.h); `scene` is the one the term was made for.
+  std::vector<LuminaireLight> lights(const Scene& scene, int opening_samples = 16) const;
   // The current photometry of luminaire j (as loaded for its state).
   const Distribution& distribution(std::size_t j) const { return luminaires_.at(j).distribution; }
   // How many distribution changes were one moved curve control point, updated incrementally.

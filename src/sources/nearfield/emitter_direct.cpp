@@ -49,7 +49,7 @@ double triangle_irradiance_factor(Vec3 p, Vec3 n, Vec3 a, Vec3 b, Vec3 c) {
   return 0.5 * std::abs(sum);
 }
 
-Rgb emitter_direct_irradiance(const PlacedEmitters& emitters, const RayTracer* occluders, Vec3 p,
+Rgb emitter_direct_irradiance(const PlacedEmitters& emitters, const Occluders* occluders, Vec3 p,
                               Vec3 n, int visibility_samples) {
   const int m = std::max(1, static_cast<int>(std::lround(std::sqrt(visibility_samples))));
   const Vec3 origin = offset_from_surface(p, n);

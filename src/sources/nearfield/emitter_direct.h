@@ -26,7 +26,7 @@ double triangle_irradiance_factor(Vec3 p, Vec3 n, Vec3 a, Vec3 b, Vec3 c);
 // Lx (RGB) at p with unit normal n from every lit emitter; `occluders` may be null (no
 // occlusion). `visibility_samples`: points per triangle for its visible fraction (rounded to
 // a square, at least 1).
-Rgb emitter_direct_irradiance(const PlacedEmitters& emitters, const RayTracer* occluders, Vec3 p,
+Rgb emitter_direct_irradiance(const PlacedEmitters& emitters, const Occluders* occluders, Vec3 p,
                               Vec3 n, int visibility_samples = 16);
 
 }  // namespace relight

@@ -60,7 +60,8 @@ void EmitterLighting::relight() {
   // The direct light: Sun 2005's reconstruction at vertices, the exact integral at sensors.
   std::vector<float> direct(3 * n);
   nearfield_irradiance(transfer_->transfer, sampling_.sh, k, direct);
-  const RayTracer* occluders = &runtime_->occluders();
+  const Occluders room(runtime_->occluders());
+  const Occluders* occluders = &room;
   tbb::parallel_for(
       tbb::blocked_range<std::size_t>(runtime_->vertex_count(), n), [&](const auto& range) {
         for (std::size_t r = range.begin(); r != range.end(); ++r) {

@@ -14,10 +14,7 @@ namespace relight {
 // Where an exterior object is this frame: turned by `rotate_deg` about the vertical axis
 // through its pivot (counter-clockwise seen from above, the right-handed sense about +y), then
 // moved by `translate`; hidden when not visible.
-struct ExteriorPlacement : Placement {
-  bool visible = true;
-  bool operator==(const ExteriorPlacement&) const = default;
-};
+using ExteriorPlacement = MovablePlacement;
 
 // What a window shows and how its glass changes it (issue 4, Yue et al. 2009 §5).
 struct PortalState {

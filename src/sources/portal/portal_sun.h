@@ -54,7 +54,7 @@ PortalSun make_portal_sun(std::uint32_t portal, const SunDisc& disc, Rgb illumin
 
 // What the sun's rays are traced against.
 struct SunGeometry {
-  const RayTracer& occluders;               // the static opaque scene
+  Occluders occluders;                      // the opaque scene (and placed objects)
   const RayTracer& glass;                   // the portals' glass, ids: portal index
   std::span<const BoundingSphere> portals;  // scene order
 };

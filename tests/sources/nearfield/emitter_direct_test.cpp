@@ -78,8 +78,9 @@ TEST(EmitterDirect, ABlockerOverHalfTheSquareHalvesTheLight) {
   const PlacedEmitters e = square({0, 1, 0}, 0.4, 1000);
   // A large opaque quad at half height covering x < 0 (both sides occlude).
   const TriangleSoup blocker = make_quad({-5, 0.5, -5}, {5, 0, 0}, {0, 0, 10}, 0);
-  const RayTracer occluders(blocker.positions, blocker.triangles,
-                            sequential_ids(blocker.triangles.size()));
+  const RayTracer tracer(blocker.positions, blocker.triangles,
+                         sequential_ids(blocker.triangles.size()));
+  const Occluders occluders(tracer);
   const Rgb open = emitter_direct_irradiance(e, nullptr, {0, 0, 0}, {0, 1, 0}, 64);
   const Rgb half = emitter_direct_irradiance(e, &occluders, {0, 0, 0}, {0, 1, 0}, 64);
   EXPECT_NEAR(half.g / open.g, 0.5, 0.05);
