@@ -12,6 +12,7 @@
 #include "cli/precompute_run.h"
 #include "common/input_error.h"
 #include "scene/scene_loader.h"
+#include "sources/object/object_sections.h"
 #include "sources/precompute.h"
 #include "sources/transfer_file.h"
 
@@ -70,6 +71,13 @@ void run_precompute(const nlohmann::json& document, const std::filesystem::path&
         s.haar ? double(s.haar_bytes) / double(s.haar) : 0.0, double(s.all_pulse_bytes) / n,
         double(s.all_haar_bytes) / n, double(t.direct.samples) / n, p.portal_sh_order,
         double(t.indirect_blocks.size() * sizeof(float)) / n);
+  }
+  for (std::size_t i = 0; i < p.objects.size(); ++i) {
+    const ObjectMesh& o = p.objects[i];
+    std::printf("  object \"%s\": %zu vertices, %zu triangles, %.1f kB stored, %.3f s\n",
+                o.name.c_str(), o.positions.size(), o.triangles.size(),
+                object_section_bytes(o) / 1e3, p.object_seconds[i]);
+    seconds += p.object_seconds[i];
   }
   std::printf("  total %.2f s, %.3g rays, %.2f Mrays/s\n", seconds, double(rays),
               rays * 1e-6 / std::max(seconds, 1e-9));

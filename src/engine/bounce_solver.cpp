@@ -27,6 +27,21 @@ using Gather = Eigen::SparseMatrix<float, Eigen::RowMajor>;
 
 constexpr Eigen::Index kRowGrain = 64;
 
+}  // namespace
+
+void gather_rgb_row(const Eigen::SparseMatrix<float, Eigen::RowMajor>& gather, Eigen::Index row,
+                    std::span<const float> reflected, float (&sum)[3]) {
+  sum[0] = sum[1] = sum[2] = 0;
+  for (Gather::InnerIterator it(gather, row); it; ++it) {
+    const float* l = &reflected[3 * static_cast<std::size_t>(it.index())];
+    sum[0] += it.value() * l[0];
+    sum[1] += it.value() * l[1];
+    sum[2] += it.value() * l[2];
+  }
+}
+
+namespace {
+
 // Per column, over vertex rows: Σ (E(n+1) − E(n))² and Σ E(n+1)².
 struct ColumnChange {
   std::vector<double> difference, norm;
@@ -167,52 +182,56 @@ int solve_bounces_rgb(const GatherOperator& gather, const Receivers& receivers,
   const Gather& g = gather.matrix;
   const std::size_t n = receivers.size(), vertices = receivers.vertex_count;
   if (g.rows() != static_cast<Eigen::Index>(n) || g.cols() != static_cast<Eigen::Index>(vertices) ||
-      receivers.albedo.size() != n || direct.size() != 3 * n || indirect.size() != 3 * n) {
+      receivers.albedo.size() != n) {
     throw std::invalid_argument("bounce solver: gather operator, receivers and light disagree");
   }
-  std::vector<float> albedo(3 * vertices), reflected(3 * vertices), gathered(3 * vertices, 0.0f);
+  std::vector<float> albedo(3 * vertices);
   for (std::size_t v = 0; v < vertices; ++v) {
     const Rgb& a = receivers.albedo[v];
     albedo[3 * v] = static_cast<float>(a.r);
     albedo[3 * v + 1] = static_cast<float>(a.g);
     albedo[3 * v + 2] = static_cast<float>(a.b);
-    if (warm) std::copy_n(indirect.begin() + 3 * v, 3, gathered.begin() + 3 * v);
   }
-  // reflected = diag(ρ) · (E_d + gathered) on vertex rows.
+  const RgbGather op{vertices, n, albedo,
+                     [&](std::size_t r, std::span<const float> reflected, float(&sum)[3]) {
+                       gather_rgb_row(g, static_cast<Eigen::Index>(r), reflected, sum);
+                     }};
+  return solve_bounces_rgb(op, direct, indirect, warm, settings);
+}
+
+int solve_bounces_rgb(const RgbGather& op, std::span<const float> direct, std::span<float> indirect,
+                      bool warm, const BounceSettings& settings) {
+  const std::size_t n = op.rows, vertices = op.reflecting;
+  if (vertices > n || op.albedo.size() != 3 * vertices || direct.size() != 3 * n ||
+      indirect.size() != 3 * n) {
+    throw std::invalid_argument("bounce solver: operator, albedo and light disagree");
+  }
+  std::vector<float> reflected(3 * vertices), gathered(3 * vertices, 0.0f);
+  if (warm) std::copy_n(indirect.begin(), 3 * vertices, gathered.begin());
+  // reflected = diag(ρ) · (E_d + gathered) on the reflecting rows.
   const auto reflect = [&] {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, 3 * vertices, 1024), [&](const auto& r) {
       for (std::size_t i = r.begin(); i != r.end(); ++i) {
-        reflected[i] = albedo[i] * (direct[i] + gathered[i]);
+        reflected[i] = op.albedo[i] * (direct[i] + gathered[i]);
       }
     });
-  };
-  // Σ_w G_rw · reflected_w for row r, RGB.
-  const auto gather_row = [&](Eigen::Index r, float(&sum)[3]) {
-    sum[0] = sum[1] = sum[2] = 0;
-    for (Gather::InnerIterator it(g, r); it; ++it) {
-      const float* l = &reflected[3 * static_cast<std::size_t>(it.index())];
-      sum[0] += it.value() * l[0];
-      sum[1] += it.value() * l[1];
-      sum[2] += it.value() * l[2];
-    }
   };
   const double tolerance =
       warm ? std::max(settings.tolerance, kWarmBounceTolerance) : settings.tolerance;
   int bounces = 0;
   if (settings.max_bounces > 0) {
     reflect();
-    const auto rows = static_cast<Eigen::Index>(vertices);
     while (bounces < settings.max_bounces) {
       // Per channel: Σ (E(n+1) − E(n))² and Σ E(n+1)²; the slowest channel decides.
       using Change = std::array<double, 6>;
       const Change change = tbb::parallel_deterministic_reduce(
-          tbb::blocked_range<Eigen::Index>(0, rows, kRowGrain), Change{},
-          [&](const tbb::blocked_range<Eigen::Index>& range, Change c) {
-            for (Eigen::Index i = range.begin(); i != range.end(); ++i) {
+          tbb::blocked_range<std::size_t>(0, vertices, kRowGrain), Change{},
+          [&](const tbb::blocked_range<std::size_t>& range, Change c) {
+            for (std::size_t i = range.begin(); i != range.end(); ++i) {
               float sum[3];
-              gather_row(i, sum);
+              op.gather_row(i, reflected, sum);
               for (std::size_t k = 0; k < 3; ++k) {
-                const std::size_t at = 3 * static_cast<std::size_t>(i) + k;
+                const std::size_t at = 3 * i + k;
                 const double d = double{sum[k]} - gathered[at], e = double{direct[at]} + sum[k];
                 c[k] += d * d;
                 c[3 + k] += e * e;
@@ -234,12 +253,12 @@ int solve_bounces_rgb(const GatherOperator& gather, const Receivers& receivers,
       if (worst < tolerance) break;
     }
   }
-  // The vertices' interreflected light, and the sensors' gathered once from the last light.
+  // The reflecting rows' interreflected light, and the rest gathered once from the last light.
   std::copy(gathered.begin(), gathered.end(), indirect.begin());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(vertices, n, 256), [&](const auto& range) {
     for (std::size_t r = range.begin(); r != range.end(); ++r) {
       float sum[3] = {0, 0, 0};
-      if (bounces > 0) gather_row(static_cast<Eigen::Index>(r), sum);
+      if (bounces > 0) op.gather_row(r, reflected, sum);
       std::copy_n(sum, 3, indirect.begin() + 3 * r);
     }
   });

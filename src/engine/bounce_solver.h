@@ -16,6 +16,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <span>
 
 #include <Eigen/Core>
@@ -63,5 +64,27 @@ inline constexpr double kWarmBounceTolerance = 1e-3;
 int solve_bounces_rgb(const GatherOperator& gather, const Receivers& receivers,
                       std::span<const float> direct, std::span<float> indirect, bool warm,
                       const BounceSettings& settings);
+
+// A gather operator given row by row, for light the run time bounces through more than the
+// stored G (the room's rows extended by movable objects', sources/object/object_transfer.h):
+// rows [0, reflecting) reflect with `albedo` (3 per row) and are solved for; rows
+// [reflecting, rows) (sensors) are gathered once from the converged light. gather_row(i,
+// reflected, sum) sets sum to Σ_j A_ij · reflected[3j … 3j+2] (RGB), j < reflecting; it is
+// called from many threads at once.
+struct RgbGather {
+  std::size_t reflecting = 0, rows = 0;
+  std::span<const float> albedo;
+  std::function<void(std::size_t row, std::span<const float> reflected, float (&sum)[3])>
+      gather_row;
+};
+
+// The iteration of the solve_bounces_rgb above over such an operator: `direct` and
+// `indirect` hold 3 floats per row. Throws std::invalid_argument when sizes disagree.
+int solve_bounces_rgb(const RgbGather& op, std::span<const float> direct, std::span<float> indirect,
+                      bool warm, const BounceSettings& settings);
+
+// Σ_j G_rj · reflected[3j … 3j+2] of one row of a stored gather operator.
+void gather_rgb_row(const Eigen::SparseMatrix<float, Eigen::RowMajor>& gather, Eigen::Index row,
+                    std::span<const float> reflected, float (&sum)[3]);
 
 }  // namespace relight

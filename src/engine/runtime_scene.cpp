@@ -34,6 +34,11 @@ RuntimeScene::RuntimeScene(const RuntimeSceneView& view, BounceSettings bounce)
       view.opaque_ids.size() != view.opaque_triangles.size()) {
     throw std::invalid_argument("RuntimeScene: receivers, mesh and albedo disagree");
   }
+  for (std::size_t t = 0; t < view.opaque_ids.size(); ++t) {
+    const std::uint32_t id = view.opaque_ids[t];
+    if (id >= opaque_slot_.size()) opaque_slot_.resize(std::size_t{id} + 1, 0);
+    opaque_slot_[id] = static_cast<std::uint32_t>(t);
+  }
   receivers_.positions = view.receiver_positions;
   receivers_.normals = view.receiver_normals;
   receivers_.vertex_count = view.vertex_count;

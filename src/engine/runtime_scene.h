@@ -90,6 +90,13 @@ class RuntimeScene {
 
   // Whether the precompute kept the gather operator (bounce() is then available).
   bool can_bounce() const { return gather_.has_value(); }
+  // The stored gather operator (needs can_bounce()) and the receivers it gathers for.
+  const GatherOperator& gather() const { return gather_.value(); }
+  const Receivers& receiver_set() const { return receivers_; }
+  // The opaque triangle an occluders() hit reports (by its id, the mesh index) and the
+  // mesh's vertex positions.
+  const Triangle& opaque_triangle(std::uint32_t id) const { return triangles_[opaque_slot_[id]]; }
+  const std::vector<Vec3>& mesh_positions() const { return positions_; }
 
   // out (3 per receiver): at vertices the mean of `irradiance` over the hat function with s²
   // points per adjacent triangle (s = subdivision ≥ 1), or with the corners' φ-weighted
@@ -112,7 +119,8 @@ class RuntimeScene {
   std::size_t vertex_count_ = 0;
   std::vector<Vec3> ray_points_;  // per receiver
   std::vector<Vec3> positions_;
-  std::vector<Triangle> triangles_;  // opaque
+  std::vector<Triangle> triangles_;         // opaque
+  std::vector<std::uint32_t> opaque_slot_;  // mesh triangle index → index into triangles_
   RayTracer occluders_, glass_;
   std::vector<BoundingSphere> glass_bounds_;  // per portal
   std::optional<GatherOperator> gather_;

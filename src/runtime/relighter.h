@@ -19,6 +19,7 @@
 #include "scene/scene.h"
 #include "sources/luminaire/luminaire_lighting.h"
 #include "sources/nearfield/emitter_lighting.h"
+#include "sources/object/object_lighting.h"
 #include "sources/portal/portal_lighting.h"
 #include "sources/transfer_view.h"
 
@@ -54,12 +55,16 @@ class Relighter {
   SunGeometry sun_geometry() const { return portals_.sun_geometry(); }
   const PortalSetLighting& portals() const { return portals_; }
   // The scene's receivers, occluders and gather operator for light computed at run time;
-  // null for a scene with neither portals nor emitters.
+  // null for a scene with no portals, emitters or movable objects.
   const RuntimeScene* runtime_scene() const { return runtime_ ? &*runtime_ : nullptr; }
   // The current shell of portal p (for renderers showing the view out of a window).
   const Shell& shell(std::size_t p) const { return portals_.portal(p).shell; }
   // Wall time of the last shell update of portal p, seconds.
   double shell_seconds(std::size_t p) const { return portals_.portal(p).seconds; }
+
+  // The movable objects' term, when the scene has objects (their placed meshes, their
+  // vertices' light, the occluders with them in place, the last frame's timings).
+  const ObjectLighting* objects() const { return objects_ ? &*objects_ : nullptr; }
 
   // The near-field emitters' term, when the scene has emitters (their placement for exact
   // direct light per pixel, the last sampling).
@@ -90,13 +95,22 @@ class Relighter {
     PartialSum sums[2];  // [include_direct]
   };
 
+  // out = Σ over terms of their sums for `slot` ([include_direct]), each term summed again
+  // when its state changed; returns whether any was.
+  bool sum_terms(std::size_t slot, std::span<float> out);
+  void update_objects();
+
   TransferView transfer_;
-  std::optional<RuntimeScene> runtime_;  // with portals or emitters
+  std::vector<Luminaire> luminaire_specs_;  // the scene's (positions, openings)
+  std::optional<RuntimeScene> runtime_;     // with portals, emitters or objects
   LuminaireLighting luminaires_;
   PortalSetLighting portals_;
   LightingState state_;
   std::optional<EmitterLighting> emitters_;
   std::vector<Term> terms_;  // luminaires, portals, emitters (when any)
+  std::optional<ObjectLighting> objects_;
+  std::vector<float> room_light_;  // with objects: every term's light, direct included (E0)
+  bool objects_dirty_ = true;      // placements or E0 changed since the objects' last update
   std::size_t last_frame_bytes_ = 0;
 };
 

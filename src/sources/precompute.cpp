@@ -4,6 +4,7 @@
 #include <chrono>
 
 #include "engine/gather_operator.h"
+#include "sources/object/object_mesh.h"
 #include "trace/traced_scene.h"
 
 namespace relight {
@@ -69,7 +70,13 @@ Precomputed precompute_transfer(const Scene& scene, const PrecomputeOptions& opt
   out.portals = std::move(portals.transfers);
   out.warnings = std::move(portals.warnings);
   out.nearfield = std::move(nearfield.result);
-  if (!scene.portals.empty() ||
+  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+    const auto start = std::chrono::steady_clock::now();
+    out.objects.push_back(prepare_object(scene, scene.objects[i]));
+    out.object_seconds.push_back(
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+  if (!scene.portals.empty() || !scene.objects.empty() ||
       (!scene.emitters.empty() && scene.precompute.nearfield_interreflection)) {
     out.gather = std::move(gather.matrix);  // bounced at run time
   }

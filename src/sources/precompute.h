@@ -17,6 +17,7 @@
 #include "scene/scene.h"
 #include "sources/luminaire/luminaire_precompute.h"
 #include "sources/nearfield/nearfield_precompute.h"
+#include "sources/object/object_mesh.h"
 #include "sources/portal/portal_precompute.h"
 
 namespace relight {
@@ -44,8 +45,12 @@ struct Precomputed {
   NearfieldTransfer nearfield;          // sh_order 0 when the scene has no emitters
   // The gather operator (receivers × vertices), kept for what the run time bounces itself
   // (engine/runtime_scene.h): the exact sun through portals, and near-field emitters with
-  // "nearfield_interreflection". Empty for a scene with neither.
+  // "nearfield_interreflection", and movable objects. Empty for a scene with none of these.
   Eigen::SparseMatrix<float, Eigen::RowMajor> gather;
+  // The movable objects' prepared meshes (scene order) and the seconds each took; all the rest
+  // of an object's light is traced at run time (sources/object/object_lighting.h).
+  std::vector<ObjectMesh> objects;
+  std::vector<double> object_seconds;
   std::vector<PhaseTiming> phases;
   std::vector<std::string> warnings;  // e.g. portals too large for their shells (§6)
 };

@@ -12,6 +12,7 @@
 #include "scene/scene_loader.h"
 #include "sources/luminaire/luminaire_sections.h"
 #include "sources/nearfield/nearfield_sections.h"
+#include "sources/object/object_sections.h"
 #include "sources/portal/portal_sections.h"
 #include "store/rlt_writer.h"
 #include "store/xxh64.h"
@@ -145,6 +146,8 @@ void write_transfer_file(const fs::path& file, const Precomputed& p, const Scene
   write_portal_sections(w, p.portals);
   write_nearfield_sections(w, p.nearfield);
   write_gather_sections(w, p.gather);
+  ObjectSectionData objects;
+  write_object_sections(w, p.objects, objects);
   try {
     w.write(file);
   } catch (const std::runtime_error& e) {
@@ -167,6 +170,7 @@ TransferView in_memory_view(const Precomputed& p) {
                          t.geometry.diameter, t.direct.records, t.direct.offsets,
                          t.indirect_blocks});
   }
+  v.objects = p.objects;
   v.nearfield.sh_order = p.nearfield.sh_order;
   v.nearfield.transfer = p.nearfield.transfer;
   RuntimeSceneView& s = v.scene;
@@ -293,6 +297,7 @@ TransferFile open_transfer_file(const fs::path& file) {
     nf.sh_order = m.value("nearfield_sh_order", 0);
     read_nearfield_sections(t.file, receivers, nf, where);
   }
+  t.view.objects = read_object_sections(t.file, t.scene, where);
   RuntimeSceneView& s = t.view.scene;
   read_gather_sections(t.file, receivers, t.vertex_count, s, where);
   s.vertex_albedo.assign(t.vertex_albedo.begin(), t.vertex_albedo.end());

@@ -1,6 +1,6 @@
 // The stored transfer of every source of a scene as the run time reads it: one view per
-// source module (luminaires, portals, near-field emitters), in scene order. Built by
-// sources/transfer_file.h from a .rlt or from a precompute in memory.
+// source module (luminaires, portals, near-field emitters, movable objects), in scene order. Built
+// by sources/transfer_file.h from a .rlt or from a precompute in memory.
 #pragma once
 
 #include <cstddef>
@@ -9,6 +9,7 @@
 #include "engine/runtime_scene.h"
 #include "sources/luminaire/luminaire_transfer_view.h"
 #include "sources/nearfield/nearfield_transfer_view.h"
+#include "sources/object/object_mesh.h"
 #include "sources/portal/portal_transfer_view.h"
 
 namespace relight {
@@ -22,6 +23,7 @@ struct TransferView {
   std::vector<PortalTransferView> portals;  // scene order
   NearfieldTransferView nearfield;          // sh_order 0 without emitters
   RuntimeSceneView scene;                   // what the run time traces and bounces itself
+  std::vector<ObjectMesh> objects;          // the movable objects' prepared meshes, scene order
 };
 
 }  // namespace relight

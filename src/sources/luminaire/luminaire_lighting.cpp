@@ -49,21 +49,21 @@ LuminaireLighting::LuminaireLighting(LuminaireTransferSet transfer, const Scene&
   for (std::size_t j = 0; j < luminaires_.size(); ++j) update(j, states_[j], true);
 }
 
-std::vector<LuminaireLight> LuminaireLighting::lights(const Scene& scene,
+std::vector<LuminaireLight> LuminaireLighting::lights(std::span<const Luminaire> luminaires,
                                                       int opening_samples) const {
-  if (scene.luminaires.size() != luminaires_.size()) {
+  if (luminaires.size() != luminaires_.size()) {
     throw std::invalid_argument("LuminaireLighting::lights: not the term's scene");
   }
   std::vector<LuminaireLight> out;
   for (std::size_t j = 0; j < luminaires_.size(); ++j) {
     const LuminaireState& s = states_[j];
     const Distribution& d = luminaires_[j].distribution;
-    LuminaireLight l{scene.luminaires[j].position,
+    LuminaireLight l{luminaires[j].position,
                      photometric_frame(s.aim, s.c0),
                      s.on ? s.color * s.dimmer : Rgb{},
                      &d,
                      {}};
-    l.opening = opening_sample_offsets(luminaire_opening(scene.luminaires[j], d.opening()), l.frame,
+    l.opening = opening_sample_offsets(luminaire_opening(luminaires[j], d.opening()), l.frame,
                                        opening_samples);
     out.push_back(std::move(l));
   }

@@ -45,8 +45,9 @@ class LuminaireLighting : public SourceTerm {
   std::size_t transfer_bytes() const override;
 
   // The luminaires as the current state sets them, for exact direct light at any point
-  // (sources/luminaire/luminaire_direct.h); `scene` is the one the term was made for.
-  std::vector<LuminaireLight> lights(const Scene& scene, int opening_samples = 16) const;
+  // (sources/luminaire/luminaire_direct.h); `luminaires` are the scene's, the term's.
+  std::vector<LuminaireLight> lights(std::span<const Luminaire> luminaires,
+                                     int opening_samples = 16) const;
   // The current photometry of luminaire j (as loaded for its state).
   const Distribution& distribution(std::size_t j) const { return luminaires_.at(j).distribution; }
   // How many distribution changes were one moved curve control point, updated incrementally.

@@ -75,6 +75,7 @@ class PortalSetLighting : public SourceTerm {
   void add_block(std::size_t block, bool include_direct, float (&acc)[3][kBlock]) const override;
   std::size_t transfer_bytes() const override;
 
+  std::size_t size() const { return portals_.size(); }
   const PortalLighting& portal(std::size_t p) const { return portals_.at(p); }
   // The suns traced exactly now, and what they are traced against (only for a scene with
   // portals): for per-pixel tracing.

@@ -1,0 +1,247 @@
+#include "sources/object/object_lighting.h"
+
+#include <algorithm>
+#include <chrono>
+#include <stdexcept>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+namespace relight {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Whether a sphere comes within `margin` of the segment from a to b.
+bool segment_near_sphere(Vec3 a, Vec3 b, const BoundingSphere& s, double margin) {
+  const Vec3 ab = b - a;
+  const double len2 = dot(ab, ab);
+  const double t = len2 > 0 ? std::clamp(dot(s.centre - a, ab) / len2, 0.0, 1.0) : 0.0;
+  return length(a + ab * t - s.centre) <= s.radius + margin;
+}
+
+// Whether a sphere comes within `margin` of the ray from a along unit d.
+bool ray_near_sphere(Vec3 a, Vec3 d, const BoundingSphere& s, double margin) {
+  const double t = std::max(0.0, dot(s.centre - a, d));
+  return length(a + d * t - s.centre) <= s.radius + margin;
+}
+
+void put(std::vector<float>& v, std::size_t row, Rgb e) {
+  v[3 * row] = static_cast<float>(e.r);
+  v[3 * row + 1] = static_cast<float>(e.g);
+  v[3 * row + 2] = static_cast<float>(e.b);
+}
+
+}  // namespace
+
+ObjectLighting::ObjectLighting(const RuntimeScene& room, std::vector<ObjectMesh> meshes,
+                               ObjectTransferSettings settings)
+    : room_(&room),
+      settings_(settings),
+      meshes_(std::move(meshes)),
+      placements_(meshes_.size()),
+      placed_(place_objects(meshes_, placements_)) {
+  if (!room.can_bounce()) {
+    throw std::invalid_argument("ObjectLighting: the precompute kept no gather operator");
+  }
+  const std::size_t vertices = room.vertex_count();
+  const std::vector<Rgb>& albedo = room.receiver_set().albedo;
+  for (std::size_t v = 0; v < vertices; ++v) {
+    albedo_.insert(albedo_.end(), {static_cast<float>(albedo[v].r), static_cast<float>(albedo[v].g),
+                                   static_cast<float>(albedo[v].b)});
+  }
+  albedo_.insert(albedo_.end(), placed_.albedo.begin(), placed_.albedo.end());
+  const std::size_t rows = room.receivers() + placed_.vertex_count();
+  direct_.assign(3 * rows, 0.0f);
+  source_.assign(3 * rows, 0.0f);
+  indirect_.assign(3 * rows, 0.0f);
+  room_delta_.assign(3 * room.receivers(), 0.0f);
+  room_delta_direct_.assign(3 * room.receivers(), 0.0f);
+  object_total_.assign(3 * placed_.vertex_count(), 0.0f);
+  object_indirect_.assign(3 * placed_.vertex_count(), 0.0f);
+}
+
+bool ObjectLighting::set_state(std::span<const MovablePlacement> placements) {
+  if (placements.size() != placements_.size()) {
+    throw std::invalid_argument("ObjectLighting: one placement per object expected");
+  }
+  if (std::equal(placements.begin(), placements.end(), placements_.begin())) return false;
+  placements_.assign(placements.begin(), placements.end());
+  placed_ = place_objects(meshes_, placements_);
+  transfer_valid_ = false;
+  return true;
+}
+
+void ObjectLighting::trace_direct(const ObjectLightInputs& in) {
+  const RuntimeScene& room = *room_;
+  const std::size_t vertices = room.vertex_count(), objects = placed_.vertex_count();
+  const Occluders with = occluders(), without(room.occluders());
+  std::optional<SunGeometry> sun_with;
+  if (in.sun_geometry)
+    sun_with.emplace(SunGeometry{with, in.sun_geometry->glass, in.sun_geometry->portals});
+  const bool suns = in.sun_geometry.has_value() && !in.suns.empty();
+  // How far each luminaire's opening reaches from its centre.
+  std::vector<double> reach;
+  for (const LuminaireLight& l : in.luminaires) {
+    double r = 0;
+    for (const Vec3& o : l.opening) r = std::max(r, length(o));
+    reach.push_back(r);
+  }
+  const auto direct_at = [&](const Occluders& occluders, const std::optional<SunGeometry>& sun,
+                             Vec3 p, Vec3 n) {
+    Rgb e = luminaire_direct_irradiance(occluders, in.luminaires, p, n);
+    if (suns) e += sun_irradiance(*sun, in.suns, p, n);
+    return e;
+  };
+  // Room receivers: the light the objects' shadows take away, where a shadow ray may pass an
+  // object.
+  std::fill(direct_.begin(), direct_.end(), 0.0f);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, room.receivers(), 256), [&](const auto& rr) {
+    for (std::size_t r = rr.begin(); r != rr.end(); ++r) {
+      const Vec3 x = room.ray_point(r), n = room.normal(r);
+      bool shadowed = false;
+      for (std::size_t k = 0; k < placed_.object_count() && !shadowed; ++k) {
+        if (!placed_.visible(k)) continue;
+        for (std::size_t j = 0; j < in.luminaires.size() && !shadowed; ++j) {
+          shadowed = max_component(in.luminaires[j].rgb) > 0 &&
+                     segment_near_sphere(x, in.luminaires[j].position, placed_.bounds[k], reach[j]);
+        }
+        for (std::size_t s = 0; suns && s < in.suns.size() && !shadowed; ++s) {
+          shadowed = ray_near_sphere(x, in.suns[s].disc.direction, placed_.bounds[k],
+                                     1e-3 + 0.01 * placed_.bounds[k].radius);
+        }
+      }
+      if (!shadowed) continue;
+      const Rgb e = direct_at(with, sun_with, x, n) - direct_at(without, in.sun_geometry, x, n);
+      put(direct_, r < vertices ? r : r + objects, e);
+    }
+  });
+  // Object vertices: their whole direct light.
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, placed_.object_count()), [&](const auto& kr) {
+        for (std::size_t k = kr.begin(); k != kr.end(); ++k) {
+          if (!placed_.visible(k)) continue;
+          tbb::parallel_for(
+              tbb::blocked_range<std::size_t>(placed_.first_vertex[k], placed_.first_vertex[k + 1],
+                                              64),
+              [&](const auto& qr) {
+                for (std::size_t q = qr.begin(); q != qr.end(); ++q) {
+                  put(direct_, vertices + q,
+                      direct_at(with, sun_with, placed_.ray_points[q], placed_.normals[q]));
+                }
+              });
+        }
+      });
+}
+
+void ObjectLighting::update(const ObjectLightInputs& in) {
+  const RuntimeScene& room = *room_;
+  const std::size_t vertices = room.vertex_count(), receivers = room.receivers();
+  const std::size_t objects = placed_.vertex_count();
+  if (in.room.size() != 3 * receivers) {
+    throw std::invalid_argument("ObjectLighting: the room's light has the wrong size");
+  }
+  auto start = std::chrono::steady_clock::now();
+  if (!transfer_valid_) {
+    transfer_ = trace_object_transfer(room, placed_, settings_);
+    transfer_valid_ = true;
+    timings_.rays = transfer_.rays;
+  }
+  timings_.transfer_seconds = seconds_since(start);
+  start = std::chrono::steady_clock::now();
+  trace_direct(in);
+  timings_.direct_seconds = seconds_since(start);
+
+  start = std::chrono::steady_clock::now();
+  // D = ΔE_d + [C; H] · ρE0 + the windows' light the objects gain or hide.
+  const auto unified = [&](std::size_t r) { return r < vertices ? r : r + objects; };
+  const auto add_static = [&](const ObjectRows& rows, std::size_t i, std::size_t row) {
+    float* d = &source_[3 * row];
+    for (std::size_t e = rows.first[i]; e < rows.first[i + 1]; ++e) {
+      const std::uint32_t c = rows.columns[e];
+      if (c >= vertices) continue;  // objects have no light in E0
+      for (std::size_t k = 0; k < 3; ++k) {
+        d[k] += rows.values[e] * albedo_[3 * c + k] * in.room[3 * c + k];
+      }
+    }
+  };
+  std::copy(direct_.begin(), direct_.end(), source_.begin());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, receivers, 512), [&](const auto& rr) {
+    for (std::size_t r = rr.begin(); r != rr.end(); ++r) add_static(transfer_.room, r, unified(r));
+  });
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, objects, 512), [&](const auto& qr) {
+    for (std::size_t q = qr.begin(); q != qr.end(); ++q)
+      add_static(transfer_.objects, q, vertices + q);
+  });
+  if (in.glass) {
+    for (const GlassHit& g : transfer_.room.glass) {
+      const Rgb l = in.glass(g.portal, g.direction) * (kPi * g.weight);
+      const std::size_t row = unified(g.row);
+      source_[3 * row] += static_cast<float>(l.r);
+      source_[3 * row + 1] += static_cast<float>(l.g);
+      source_[3 * row + 2] += static_cast<float>(l.b);
+    }
+    for (const GlassHit& g : transfer_.objects.glass) {
+      const Rgb l = in.glass(g.portal, g.direction) * (kPi * g.weight);
+      const std::size_t row = vertices + g.row;
+      source_[3 * row] += static_cast<float>(l.r);
+      source_[3 * row + 1] += static_cast<float>(l.g);
+      source_[3 * row + 2] += static_cast<float>(l.b);
+    }
+  }
+  // ΔE = D + [G + C; H] · ρ ΔE over room vertices and object vertices; sensors gathered once.
+  const auto& g = room.gather().matrix;
+  const auto add_rows = [](const ObjectRows& rows, std::size_t i, std::span<const float> reflected,
+                           float(&sum)[3]) {
+    for (std::size_t e = rows.first[i]; e < rows.first[i + 1]; ++e) {
+      const float* l = &reflected[3 * std::size_t{rows.columns[e]}];
+      sum[0] += rows.values[e] * l[0];
+      sum[1] += rows.values[e] * l[1];
+      sum[2] += rows.values[e] * l[2];
+    }
+  };
+  const RgbGather op{vertices + objects, receivers + objects, albedo_,
+                     [&](std::size_t u, std::span<const float> reflected, float(&sum)[3]) {
+                       if (u >= vertices && u < vertices + objects) {
+                         sum[0] = sum[1] = sum[2] = 0;
+                         add_rows(transfer_.objects, u - vertices, reflected, sum);
+                         return;
+                       }
+                       const std::size_t r = u < vertices ? u : u - objects;
+                       gather_rgb_row(g, static_cast<Eigen::Index>(r), reflected, sum);
+                       add_rows(transfer_.room, r, reflected, sum);
+                     }};
+  BounceSettings bounce;
+  bounce.tolerance = 1e-4;
+  timings_.bounces = solve_bounces_rgb(op, source_, indirect_, warm_, bounce);
+  warm_ = true;
+  for (std::size_t r = 0; r < receivers; ++r) {
+    const std::size_t u = unified(r);
+    for (std::size_t k = 0; k < 3; ++k) {
+      room_delta_[3 * r + k] = source_[3 * u + k] + indirect_[3 * u + k];
+      room_delta_direct_[3 * r + k] = direct_[3 * u + k];
+    }
+  }
+  for (std::size_t q = 0; q < objects; ++q) {
+    const std::size_t u = vertices + q;
+    for (std::size_t k = 0; k < 3; ++k) {
+      object_total_[3 * q + k] = source_[3 * u + k] + indirect_[3 * u + k];
+      object_indirect_[3 * q + k] = object_total_[3 * q + k] - direct_[3 * u + k];
+    }
+  }
+  timings_.bounce_seconds = seconds_since(start);
+}
+
+void ObjectLighting::add_to_room(std::span<float> out, bool include_direct) const {
+  if (out.size() != room_delta_.size()) {
+    throw std::invalid_argument("ObjectLighting: output size mismatch");
+  }
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    out[i] += room_delta_[i] - (include_direct ? 0.0f : room_delta_direct_[i]);
+  }
+}
+
+}  // namespace relight

@@ -1,0 +1,111 @@
+// The movable objects' run-time term (issue 12; Iwasaki et al. 2007 is the paper): furniture
+// that moves, turns, hides, casts shadows and bounces light, with no new precompute. The
+// precomputed transfer is that of the empty room; this term adds, in every output, what the
+// objects as placed change:
+//
+//   E = E0 + ΔE   at room receivers (E0: every other term's light, direct included),
+//   E = E_q       at object vertices,
+//
+// solved as one linear system over room and object vertices. With the direct light
+// ΔE_d (at room receivers, what the objects' shadows take away; at object vertices, their
+// whole direct light — luminaires and suns, traced exactly per receiver, through room and
+// objects: sources/luminaire/luminaire_direct.h, sources/portal/portal_sun.h), the stored
+// gather operator G of the empty room and the objects' rows C and H (object_transfer.h):
+//
+//   D  = ΔE_d + [C; H] · ρE0 + light through windows the objects gain or hide,
+//   ΔE = D + [G + C; H] · ρ ΔE,
+//
+// the second bounced with engine/bounce_solver.h (warm-started from the last frame: an object
+// dragged a little takes a bounce or two). E0 being the empty room's converged light
+// (E0 = E0_d + G ρ E0), E0 + ΔE solves the room with its objects exactly as the stored
+// estimator would. Sensors are gathered once from the converged light.
+//
+// The near-field emitters' direct light is not yet shadowed by objects (their light reaches the
+// objects through the bounce only); see docs/design-notes.md ("Movable objects").
+// Pinned by tests/sources/object/object_lighting_test.cpp and
+// tests/render/object_accuracy_test.cpp.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "engine/runtime_scene.h"
+#include "math/placement.h"
+#include "scene/scene.h"
+#include "sources/luminaire/luminaire_direct.h"
+#include "sources/object/object_mesh.h"
+#include "sources/object/object_transfer.h"
+#include "sources/portal/portal_sun.h"
+
+namespace relight {
+
+// The luminance seen through portal p's glass along a direction (the portal's shell with its
+// tint; the sun behind clear glass excluded, since it is traced as direct light).
+using GlassLuminance = std::function<Rgb(std::uint32_t portal, Vec3 direction)>;
+
+// What the rest of the lighting gives the objects this frame.
+struct ObjectLightInputs {
+  std::span<const float> room;  // E0: 3 per room receiver, every other term, direct included
+  std::span<const LuminaireLight> luminaires;
+  std::span<const PortalSun> suns;
+  std::optional<SunGeometry> sun_geometry;  // the room's (set when there are suns)
+  GlassLuminance glass;                     // empty: windows show black
+};
+
+struct ObjectTimings {
+  double direct_seconds = 0, transfer_seconds = 0, bounce_seconds = 0;
+  int bounces = 0;
+  std::uint64_t rays = 0;  // of the last transfer
+};
+
+class ObjectLighting {
+ public:
+  // `room` must have its gather operator (RuntimeScene::can_bounce) and outlive this; `meshes`
+  // are the scene's objects as prepared (TransferView::objects), every one where the scene
+  // placed it.
+  ObjectLighting(const RuntimeScene& room, std::vector<ObjectMesh> meshes,
+                 ObjectTransferSettings settings = {});
+
+  // Places the objects (scene order); returns whether any placement changed.
+  bool set_state(std::span<const MovablePlacement> placements);
+  // Recomputes ΔE and the objects' light: the transfer when placements changed since the last
+  // update, the direct light and the bounce always.
+  void update(const ObjectLightInputs& inputs);
+
+  // Adds ΔE to `out` (3 per room receiver); without direct light, ΔE less ΔE_d (what
+  // renderers that trace direct light per pixel, through the objects, still need).
+  void add_to_room(std::span<float> out, bool include_direct) const;
+  // The objects' vertices' irradiance, 3 per vertex (PlacedObjects order; 0 when hidden).
+  std::span<const float> irradiance(bool include_direct) const {
+    return include_direct ? object_total_ : object_indirect_;
+  }
+  const PlacedObjects& placed() const { return placed_; }
+  const std::vector<ObjectMesh>& meshes() const { return meshes_; }
+  // The room and the placed objects, blocking light together.
+  Occluders occluders() const { return {room_->occluders(), &placed_.tracer}; }
+  const ObjectTimings& timings() const { return timings_; }
+  const ObjectTransfer& transfer() const { return transfer_; }
+
+ private:
+  void trace_direct(const ObjectLightInputs& inputs);
+
+  const RuntimeScene* room_;
+  ObjectTransferSettings settings_;
+  std::vector<ObjectMesh> meshes_;
+  std::vector<MovablePlacement> placements_;
+  PlacedObjects placed_;
+  ObjectTransfer transfer_;
+  bool transfer_valid_ = false;
+  std::vector<float> albedo_;    // 3 per unified row that reflects: room vertices, objects
+  std::vector<float> direct_;    // ΔE_d: 3 per unified row (room vertices, objects, sensors)
+  std::vector<float> source_;    // D, likewise
+  std::vector<float> indirect_;  // the bounce, likewise
+  bool warm_ = false;
+  std::vector<float> room_delta_, room_delta_direct_;  // 3 per room receiver
+  std::vector<float> object_total_, object_indirect_;  // 3 per object vertex
+  ObjectTimings timings_;
+};
+
+}  // namespace relight

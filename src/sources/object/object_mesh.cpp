@@ -1,0 +1,90 @@
+#include "sources/object/object_mesh.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "engine/receivers.h"
+#include "scene/mesh_preparation.h"
+
+namespace relight {
+
+ObjectMesh prepare_object(const Scene& scene, const MovableObject& object) {
+  PreparationSettings settings;
+  settings.max_edge = scene.precompute.max_edge;
+  settings.crease_deg = scene.precompute.crease_deg;
+  const PreparedMesh mesh = prepare_mesh(object.geometry, settings);
+  Receivers receivers;
+  receivers.positions = mesh.positions;
+  receivers.normals = mesh.normals;
+  receivers.vertex_count = mesh.positions.size();
+  receivers.albedo.assign(receivers.vertex_count, Rgb{});
+  ObjectMesh m{object.name,
+               object.pivot,
+               mesh.positions,
+               mesh.normals,
+               receiver_ray_points(receivers, mesh),
+               mesh.triangles,
+               {}};
+  for (const std::uint32_t material : mesh.vertex_material) {
+    const Rgb a = scene.materials.at(material).albedo;
+    m.albedo.insert(m.albedo.end(),
+                    {static_cast<float>(a.r), static_cast<float>(a.g), static_cast<float>(a.b)});
+  }
+  return m;
+}
+
+namespace {
+
+// A sphere around the placed vertices: the centre of their bounding box, the radius to the
+// farthest one.
+BoundingSphere sphere_around(std::span<const Vec3> points) {
+  Vec3 lo = points.front(), hi = lo;
+  for (const Vec3& p : points) {
+    lo = min(lo, p);
+    hi = max(hi, p);
+  }
+  BoundingSphere s{(lo + hi) * 0.5, 0};
+  for (const Vec3& p : points) s.radius = std::max(s.radius, length(p - s.centre));
+  return s;
+}
+
+}  // namespace
+
+PlacedObjects place_objects(std::span<const ObjectMesh> objects,
+                            std::span<const MovablePlacement> placements) {
+  if (objects.size() != placements.size()) {
+    throw std::invalid_argument("place_objects: one placement per object expected");
+  }
+  std::vector<Vec3> positions, normals, ray_points;
+  std::vector<float> albedo;
+  std::vector<std::uint32_t> first{0}, triangle_object;
+  std::vector<Triangle> triangles;
+  std::vector<BoundingSphere> bounds;
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    const ObjectMesh& o = objects[i];
+    const MovablePlacement& p = placements[i];
+    const auto base = static_cast<std::uint32_t>(positions.size());
+    for (std::size_t v = 0; v < o.positions.size(); ++v) {
+      positions.push_back(placed_point(o.positions[v], o.pivot, p));
+      normals.push_back(placed_direction(o.normals[v], p));
+      ray_points.push_back(placed_point(o.ray_points[v], o.pivot, p));
+    }
+    albedo.insert(albedo.end(), o.albedo.begin(), o.albedo.end());
+    first.push_back(static_cast<std::uint32_t>(positions.size()));
+    if (!p.visible || o.triangles.empty()) {
+      bounds.push_back({});
+      continue;
+    }
+    bounds.push_back(sphere_around(std::span(positions).subspan(base)));
+    for (const Triangle& t : o.triangles) {
+      triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+      triangle_object.push_back(static_cast<std::uint32_t>(i));
+    }
+  }
+  RayTracer tracer(positions, triangles, sequential_ids(triangles.size()));
+  return {std::move(positions),       std::move(normals), std::move(ray_points),
+          std::move(albedo),          std::move(first),   std::move(triangles),
+          std::move(triangle_object), std::move(bounds),  std::move(tracer)};
+}
+
+}  // namespace relight

@@ -1,0 +1,54 @@
+// The movable objects' meshes (issue 12): each object's triangles prepared as the room's are
+// (welded, split to the scene's max_edge, crease-aware normals: scene/mesh_preparation.h), so
+// that its vertices receive and reflect light the way the room's vertices do, and placed where a
+// lighting state puts them (math/placement.h). Hidden objects keep their vertices (indices stay
+// put from frame to frame) but have no triangles: they neither block, reflect nor show.
+// Pinned by tests/sources/object/object_mesh_test.cpp.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "engine/runtime_scene.h"
+#include "math/placement.h"
+#include "math/vec3.h"
+#include "scene/scene.h"
+#include "trace/ray_tracer.h"
+
+namespace relight {
+
+// One object as the scene places it.
+struct ObjectMesh {
+  std::string name;
+  Vec3 pivot;                            // centre of its bounding box
+  std::vector<Vec3> positions, normals;  // per vertex; normals unit
+  std::vector<Vec3> ray_points;          // where rays leave each vertex (receivers.h)
+  std::vector<Triangle> triangles;
+  std::vector<float> albedo;  // 3 per vertex
+};
+
+// `object` is one of scene.objects (its materials are the scene's).
+ObjectMesh prepare_object(const Scene& scene, const MovableObject& object);
+
+// Every object as a state places it, vertices back to back in scene order.
+struct PlacedObjects {
+  std::vector<Vec3> positions, normals, ray_points;  // per vertex, placed
+  std::vector<float> albedo;                         // 3 per vertex
+  std::vector<std::uint32_t> first_vertex;     // per object, then the total: [first[i], first[i+1])
+  std::vector<Triangle> triangles;             // the visible objects', indices into positions
+  std::vector<std::uint32_t> triangle_object;  // per triangle: its object
+  std::vector<BoundingSphere> bounds;          // per object; radius 0 when hidden
+  RayTracer tracer;                            // over `triangles` (ids: index into triangles)
+
+  std::size_t vertex_count() const { return positions.size(); }
+  std::size_t object_count() const { return bounds.size(); }
+  bool visible(std::size_t object) const { return bounds[object].radius > 0; }
+};
+
+// Throws std::invalid_argument when the placements are not one per object.
+PlacedObjects place_objects(std::span<const ObjectMesh> objects,
+                            std::span<const MovablePlacement> placements);
+
+}  // namespace relight

@@ -1,0 +1,251 @@
+#include "sources/object/object_transfer.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "math/frame.h"
+#include "math/sampling.h"
+
+namespace relight {
+
+namespace {
+
+constexpr std::size_t kChunk = 256;  // rows traced by one task
+constexpr std::uint64_t kConeSeed = 0x6f626a636f6e6573ULL;
+constexpr std::uint64_t kObjectSeed = 0x6f626a726f777321ULL;
+
+// One chunk of rows while it is traced.
+struct Chunk {
+  std::vector<std::uint32_t> row_sizes;
+  std::vector<std::uint32_t> columns;
+  std::vector<float> values;
+  std::vector<GlassHit> glass;
+  std::uint64_t rays = 0;
+};
+
+// A row's entries before merging equal columns.
+struct RowScratch {
+  std::vector<std::pair<std::uint32_t, float>> entries;
+  void add(std::uint32_t column, double weight) {
+    if (weight != 0) entries.emplace_back(column, static_cast<float>(weight));
+  }
+  // Sorts, merges and appends the row to `chunk`.
+  void flush(Chunk& chunk) {
+    std::sort(entries.begin(), entries.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::uint32_t count = 0;
+    for (std::size_t i = 0; i < entries.size();) {
+      const std::uint32_t column = entries[i].first;
+      float sum = 0;
+      for (; i < entries.size() && entries[i].first == column; ++i) sum += entries[i].second;
+      chunk.columns.push_back(column);
+      chunk.values.push_back(sum);
+      ++count;
+    }
+    chunk.row_sizes.push_back(count);
+    entries.clear();
+  }
+};
+
+// What a ray from a point meets first.
+struct FirstHit {
+  enum Kind { kNothing, kRoom, kGlass, kObject } kind = kNothing;
+  RayHit hit;
+};
+
+bool faces(const std::vector<Vec3>& positions, const Triangle& t, Vec3 direction) {
+  const Vec3 a = positions[t[0]];
+  return dot(cross(positions[t[1]] - a, positions[t[2]] - a), direction) < 0;
+}
+
+// The room's first surface along `ray` (opaque or glass), as the stored G sees it.
+FirstHit room_hit(const RuntimeScene& room, const Ray& ray) {
+  FirstHit out;
+  const RayHit opaque = room.occluders().intersect(ray);
+  const RayHit glass = room.glass().triangle_count() > 0
+                           ? room.glass().intersect({ray.origin, ray.direction, ray.t_near,
+                                                     opaque.hit() ? opaque.t : ray.t_far})
+                           : RayHit{};
+  if (glass.hit()) return {FirstHit::kGlass, glass};
+  if (opaque.hit()) return {FirstHit::kRoom, opaque};
+  return out;
+}
+
+// Adds ±weight spread over the hit's vertices (front sides only: back sides absorb, as in G),
+// or a glass hit.
+void add_hit(const RuntimeScene& room, const PlacedObjects& objects, const FirstHit& h,
+             const Ray& ray, double weight, std::uint32_t row, RowScratch& scratch, Chunk& chunk) {
+  const double b[3] = {1 - h.hit.u - h.hit.v, h.hit.u, h.hit.v};
+  switch (h.kind) {
+    case FirstHit::kRoom: {
+      const Triangle& t = room.opaque_triangle(h.hit.triangle);
+      if (!faces(room.mesh_positions(), t, ray.direction)) return;
+      for (int k = 0; k < 3; ++k) scratch.add(t[k], weight * b[k]);
+      return;
+    }
+    case FirstHit::kObject: {
+      const Triangle& t = objects.triangles[h.hit.triangle];
+      if (!faces(objects.positions, t, ray.direction)) return;
+      const auto base = static_cast<std::uint32_t>(room.vertex_count());
+      for (int k = 0; k < 3; ++k) scratch.add(base + t[k], weight * b[k]);
+      return;
+    }
+    case FirstHit::kGlass:
+      chunk.glass.push_back({row, h.hit.triangle, ray.direction, static_cast<float>(weight)});
+      return;
+    case FirstHit::kNothing:
+      return;
+  }
+}
+
+// The correction row of room receiver r: rays over each visible object's cone.
+void trace_room_row(const RuntimeScene& room, const PlacedObjects& objects,
+                    const ObjectTransferSettings& settings, std::size_t r, RowScratch& scratch,
+                    Chunk& chunk) {
+  const Vec3 n = room.normal(r);
+  const Vec3 origin = offset_from_surface(room.ray_point(r), n);
+  const auto row = static_cast<std::uint32_t>(r);
+  for (std::size_t k = 0; k < objects.object_count(); ++k) {
+    if (!objects.visible(k)) continue;
+    const BoundingSphere& s = objects.bounds[k];
+    const Vec3 to_centre = s.centre - origin;
+    const double d = length(to_centre);
+    const bool inside = d <= s.radius;
+    double cos_alpha = -1, omega = 2 * kPi;  // inside: the whole hemisphere (cosine-sampled)
+    double share = 1;
+    Vec3 axis = n;
+    if (!inside) {
+      const double sin_alpha = s.radius / d;
+      cos_alpha = std::sqrt(std::max(0.0, 1 - sin_alpha * sin_alpha));
+      axis = to_centre / d;
+      omega = 2 * kPi * (1 - cos_alpha);
+      share = omega / kPi * std::clamp(dot(n, axis) + sin_alpha, 0.0, 1.0);
+      if (share < settings.cull) continue;
+    }
+    const int rays =
+        inside ? settings.cone_rays_max
+               : std::clamp(static_cast<int>(std::ceil(share * settings.cone_rays_per_hemisphere)),
+                            settings.cone_rays_min, settings.cone_rays_max);
+    Pcg32 rng(kConeSeed + k, r);
+    const std::uint32_t s1 = rng.next_u32(), s2 = rng.next_u32();
+    const Frame frame = frame_from_normal(axis);
+    for (int i = 0; i < rays; ++i) {
+      const auto index = static_cast<std::uint32_t>(i);
+      const double u1 = unit_interval(van_der_corput(index, s1));
+      const double u2 = unit_interval(sobol2(index, s2));
+      Vec3 dir;
+      double weight = 0;
+      if (inside) {
+        dir = frame.to_world(sample_cosine_hemisphere(u1, u2));
+        weight = 1.0 / rays;
+      } else {
+        const double cos_t = 1 - u1 * (1 - cos_alpha);
+        const double sin_t = std::sqrt(std::max(0.0, 1 - cos_t * cos_t));
+        const double phi = 2 * kPi * u2;
+        dir = frame.to_world({sin_t * std::cos(phi), sin_t * std::sin(phi), cos_t});
+        weight = omega / rays * std::max(0.0, dot(n, dir)) / kPi;
+        if (weight <= 0) continue;
+      }
+      ++chunk.rays;
+      const Ray ray{origin, dir};
+      const RayHit object = objects.tracer.intersect(ray);
+      if (!object.hit() || objects.triangle_object[object.triangle] != k) continue;
+      const FirstHit before = room_hit(room, ray);
+      chunk.rays += 2;
+      if (before.kind != FirstHit::kNothing && before.hit.t <= object.t) continue;  // hidden
+      add_hit(room, objects, {FirstHit::kObject, object}, ray, weight, row, scratch, chunk);
+      add_hit(room, objects, before, ray, -weight, row, scratch, chunk);
+    }
+  }
+  scratch.flush(chunk);
+}
+
+// The whole gather row of object vertex q.
+void trace_object_row(const RuntimeScene& room, const PlacedObjects& objects,
+                      const ObjectTransferSettings& settings, std::size_t q, RowScratch& scratch,
+                      Chunk& chunk) {
+  const auto object = static_cast<std::size_t>(
+      std::upper_bound(objects.first_vertex.begin(), objects.first_vertex.end(), q) -
+      objects.first_vertex.begin() - 1);
+  if (!objects.visible(object)) {  // a hidden object gathers nothing
+    scratch.flush(chunk);
+    return;
+  }
+  const Vec3 n = objects.normals[q];
+  const Vec3 origin = offset_from_surface(objects.ray_points[q], n);
+  Pcg32 rng(kObjectSeed, q);
+  const std::uint32_t s1 = rng.next_u32(), s2 = rng.next_u32();
+  const Frame frame = frame_from_normal(n);
+  const int rays = settings.object_rays;
+  const double weight = 1.0 / rays;
+  for (int i = 0; i < rays; ++i) {
+    const auto index = static_cast<std::uint32_t>(i);
+    const Vec3 dir = frame.to_world(sample_cosine_hemisphere(
+        unit_interval(van_der_corput(index, s1)), unit_interval(sobol2(index, s2))));
+    const Ray ray{origin, dir};
+    FirstHit h = room_hit(room, ray);
+    const RayHit seen = objects.tracer.intersect(
+        {origin, dir, 0, h.kind != FirstHit::kNothing ? h.hit.t : ray.t_far});
+    if (seen.hit()) h = {FirstHit::kObject, seen};
+    chunk.rays += 2;
+    add_hit(room, objects, h, ray, weight, static_cast<std::uint32_t>(q), scratch, chunk);
+  }
+  scratch.flush(chunk);
+}
+
+// Traces rows [0, count) in chunks and joins them in row order.
+template <typename TraceRow>
+ObjectRows trace_rows(std::size_t count, const TraceRow& trace_row, std::uint64_t& rays) {
+  std::vector<Chunk> chunks((count + kChunk - 1) / kChunk);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunks.size()), [&](const auto& range) {
+    RowScratch scratch;
+    for (std::size_t c = range.begin(); c != range.end(); ++c) {
+      const std::size_t end = std::min(count, (c + 1) * kChunk);
+      for (std::size_t r = c * kChunk; r < end; ++r) trace_row(r, scratch, chunks[c]);
+    }
+  });
+  ObjectRows out;
+  std::size_t entries = 0, glass = 0;
+  for (const Chunk& c : chunks) {
+    entries += c.columns.size();
+    glass += c.glass.size();
+  }
+  out.first.reserve(count + 1);
+  out.columns.reserve(entries);
+  out.values.reserve(entries);
+  out.glass.reserve(glass);
+  for (const Chunk& c : chunks) {
+    for (const std::uint32_t size : c.row_sizes) out.first.push_back(out.first.back() + size);
+    out.columns.insert(out.columns.end(), c.columns.begin(), c.columns.end());
+    out.values.insert(out.values.end(), c.values.begin(), c.values.end());
+    out.glass.insert(out.glass.end(), c.glass.begin(), c.glass.end());
+    rays += c.rays;
+  }
+  return out;
+}
+
+}  // namespace
+
+ObjectTransfer trace_object_transfer(const RuntimeScene& room, const PlacedObjects& objects,
+                                     const ObjectTransferSettings& settings) {
+  ObjectTransfer t;
+  t.room = trace_rows(
+      room.receivers(),
+      [&](std::size_t r, RowScratch& scratch, Chunk& chunk) {
+        trace_room_row(room, objects, settings, r, scratch, chunk);
+      },
+      t.rays);
+  t.objects = trace_rows(
+      objects.vertex_count(),
+      [&](std::size_t q, RowScratch& scratch, Chunk& chunk) {
+        trace_object_row(room, objects, settings, q, scratch, chunk);
+      },
+      t.rays);
+  return t;
+}
+
+}  // namespace relight
