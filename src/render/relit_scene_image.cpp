@@ -8,13 +8,65 @@
 
 namespace relight {
 
+namespace {
+
+// What the camera sees: the stored mesh, and the movable objects as the state places them
+// (their triangles after the room's, their vertices after the room's vertices).
+struct ShownScene {
+  std::vector<Vec3> positions;
+  std::vector<Triangle> triangles;
+  std::vector<float> albedo;
+  std::optional<RayTracer> tracer;  // room's opaque triangles and the objects'; ids: triangles
+};
+
+ShownScene shown_with_objects(const TransferFile& t, const ObjectLighting& objects) {
+  const PlacedObjects& placed = objects.placed();
+  ShownScene s{t.positions, t.triangles, {t.vertex_albedo.begin(), t.vertex_albedo.end()}, {}};
+  const auto base = static_cast<std::uint32_t>(t.positions.size());
+  s.positions.insert(s.positions.end(), placed.positions.begin(), placed.positions.end());
+  s.albedo.insert(s.albedo.end(), placed.albedo.begin(), placed.albedo.end());
+  std::vector<Triangle> opaque;
+  std::vector<std::uint32_t> ids;
+  for (const std::uint32_t i : t.opaque_triangles) {
+    opaque.push_back(t.triangles[i]);
+    ids.push_back(i);
+  }
+  for (const Triangle& tri : placed.triangles) {
+    const Triangle shifted{tri[0] + base, tri[1] + base, tri[2] + base};
+    ids.push_back(static_cast<std::uint32_t>(s.triangles.size()));
+    s.triangles.push_back(shifted);
+    opaque.push_back(shifted);
+  }
+  s.tracer.emplace(s.positions, opaque, ids);
+  return s;
+}
+
+// Room vertices' irradiance (the first 3·V of `room`), then the objects' vertices'.
+std::vector<float> with_objects(std::span<const float> room, std::size_t vertices,
+                                std::span<const float> objects) {
+  std::vector<float> out(room.begin(), room.begin() + static_cast<std::ptrdiff_t>(3 * vertices));
+  out.insert(out.end(), objects.begin(), objects.end());
+  return out;
+}
+
+}  // namespace
+
 ShadedImages render_relit_scene(RelitScene& scene, const Camera& camera, int width, int height,
                                 bool pixel_direct) {
   const TransferFile& t = scene.transfer();
-  const RayTracer& occluders = scene.opaque_tracer();
+  const RayTracer& room = scene.opaque_tracer();
   const RayTracer& windows = scene.portal_tracer();
   const PinholeCamera pinhole = make_pinhole_camera(camera, width, height);
   const Relighter& lit = scene.relighter();
+  const ObjectLighting* objects = lit.objects();
+  const std::optional<ShownScene> shown =
+      objects != nullptr ? std::optional(shown_with_objects(t, *objects)) : std::nullopt;
+  const RayTracer& visible = shown ? *shown->tracer : room;
+  const std::vector<Vec3>& positions = shown ? shown->positions : t.positions;
+  const std::vector<Triangle>& triangles = shown ? shown->triangles : t.triangles;
+  const std::span<const float> albedo =
+      shown ? std::span<const float>(shown->albedo) : t.vertex_albedo;
+  const Occluders occluders = objects != nullptr ? objects->occluders() : Occluders(room);
   const auto background = [&](Vec3 origin, Vec3 dir) {
     const RayHit hit = windows.intersect({origin, dir});
     if (!hit.hit()) return Rgb{};
@@ -29,24 +81,32 @@ ShadedImages render_relit_scene(RelitScene& scene, const Camera& camera, int wid
     return l;
   };
   if (!pixel_direct) {
-    return shade_vertices(
-        pinhole,
-        {occluders, t.positions, t.triangles, t.vertex_albedo, scene.irradiance(), {}, background});
+    const std::vector<float> irradiance =
+        objects != nullptr
+            ? with_objects(scene.irradiance(), t.vertex_count, objects->irradiance(true))
+            : std::vector<float>(scene.irradiance().begin(), scene.irradiance().end());
+    return shade_vertices(pinhole,
+                          {visible, positions, triangles, albedo, irradiance, {}, background});
   }
-  const std::vector<float> indirect = scene.indirect_irradiance();
+  std::vector<float> indirect = scene.indirect_irradiance();
+  if (objects != nullptr) {
+    indirect = with_objects(indirect, t.vertex_count, objects->irradiance(false));
+  }
   const std::vector<LuminaireLight> lights = pixel_lights(t.scene, lit);
-  // A scene without windows has no suns and no sun geometry.
-  const std::optional<SunGeometry> sun_geometry =
-      lit.suns().empty() ? std::nullopt : std::optional<SunGeometry>(lit.sun_geometry());
+  // A scene without windows has no suns and no sun geometry; with objects, they shadow the sun.
+  std::optional<SunGeometry> sun_geometry;
+  if (!lit.suns().empty()) {
+    sun_geometry.emplace(lit.sun_geometry());
+    sun_geometry->occluders = occluders;
+  }
   const EmitterLighting* emitters = lit.emitters();
   return shade_vertices(
-      pinhole, {occluders, t.positions, t.triangles, t.vertex_albedo, indirect,
+      pinhole, {visible, positions, triangles, albedo, indirect,
                 [&](Vec3 p, Vec3 n) {
                   Rgb e = luminaire_direct_irradiance(occluders, lights, p, n) +
                           (sun_geometry ? sun_irradiance(*sun_geometry, lit.suns(), p, n) : Rgb{});
                   if (emitters != nullptr) {
-                    const Occluders room(occluders);
-                    e += emitter_direct_irradiance(emitters->placed(), &room, p, n);
+                    e += emitter_direct_irradiance(emitters->placed(), &occluders, p, n);
                   }
                   return e;
                 },
