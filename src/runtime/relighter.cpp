@@ -68,12 +68,17 @@ void Relighter::set_state(const LightingState& state) {
   state_ = state;
 }
 
+// Points on a luminous opening for the objects' shadows at sensors (vertices take 16).
+constexpr int kSensorOpeningSamples = 256;
+
 void Relighter::update_objects() {
   // E0 with direct light, summed again when a term's state changed.
   if (sum_terms(1, room_light_)) objects_dirty_ = true;
   if (!objects_dirty_) return;
   const std::vector<LuminaireLight> lights = luminaires_.lights(luminaire_specs_);
-  ObjectLightInputs in{room_light_, lights, portals_.suns(), std::nullopt, {}};
+  const std::vector<LuminaireLight> sensor_lights =
+      luminaires_.lights(luminaire_specs_, kSensorOpeningSamples);
+  ObjectLightInputs in{room_light_, lights, sensor_lights, portals_.suns(), std::nullopt, {}};
   if (!portals_.suns().empty()) in.sun_geometry.emplace(portals_.sun_geometry());
   if (portals_.size() > 0) {
     in.glass = [this](std::uint32_t p, Vec3 direction) {

@@ -91,8 +91,8 @@ void ObjectLighting::trace_direct(const ObjectLightInputs& in) {
     reach.push_back(r);
   }
   const auto direct_at = [&](const Occluders& occluders, const std::optional<SunGeometry>& sun,
-                             Vec3 p, Vec3 n) {
-    Rgb e = luminaire_direct_irradiance(occluders, in.luminaires, p, n);
+                             Vec3 p, Vec3 n, std::span<const LuminaireLight> luminaires) {
+    Rgb e = luminaire_direct_irradiance(occluders, luminaires, p, n);
     if (suns) e += sun_irradiance(*sun, in.suns, p, n);
     return e;
   };
@@ -115,7 +115,11 @@ void ObjectLighting::trace_direct(const ObjectLightInputs& in) {
         }
       }
       if (!shadowed) continue;
-      const Rgb e = direct_at(with, sun_with, x, n) - direct_at(without, in.sun_geometry, x, n);
+      // A sensor's penumbra is sampled finer: its reading is not averaged between vertices.
+      const std::span<const LuminaireLight> lights =
+          r < vertices || in.sensor_luminaires.empty() ? in.luminaires : in.sensor_luminaires;
+      const Rgb e = direct_at(with, sun_with, x, n, lights) -
+                    direct_at(without, in.sun_geometry, x, n, lights);
       put(direct_, r < vertices ? r : r + objects, e);
     }
   });
@@ -124,15 +128,15 @@ void ObjectLighting::trace_direct(const ObjectLightInputs& in) {
       tbb::blocked_range<std::size_t>(0, placed_.object_count()), [&](const auto& kr) {
         for (std::size_t k = kr.begin(); k != kr.end(); ++k) {
           if (!placed_.visible(k)) continue;
-          tbb::parallel_for(
-              tbb::blocked_range<std::size_t>(placed_.first_vertex[k], placed_.first_vertex[k + 1],
-                                              64),
-              [&](const auto& qr) {
-                for (std::size_t q = qr.begin(); q != qr.end(); ++q) {
-                  put(direct_, vertices + q,
-                      direct_at(with, sun_with, placed_.ray_points[q], placed_.normals[q]));
-                }
-              });
+          tbb::parallel_for(tbb::blocked_range<std::size_t>(placed_.first_vertex[k],
+                                                            placed_.first_vertex[k + 1], 64),
+                            [&](const auto& qr) {
+                              for (std::size_t q = qr.begin(); q != qr.end(); ++q) {
+                                put(direct_, vertices + q,
+                                    direct_at(with, sun_with, placed_.ray_points[q],
+                                              placed_.normals[q], in.luminaires));
+                              }
+                            });
         }
       });
 }

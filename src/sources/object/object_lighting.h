@@ -49,6 +49,8 @@ using GlassLuminance = std::function<Rgb(std::uint32_t portal, Vec3 direction)>;
 struct ObjectLightInputs {
   std::span<const float> room;  // E0: 3 per room receiver, every other term, direct included
   std::span<const LuminaireLight> luminaires;
+  // The same with more points on each luminous opening, for sensors (empty: `luminaires`).
+  std::span<const LuminaireLight> sensor_luminaires;
   std::span<const PortalSun> suns;
   std::optional<SunGeometry> sun_geometry;  // the room's (set when there are suns)
   GlassLuminance glass;                     // empty: windows show black

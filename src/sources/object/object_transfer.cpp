@@ -126,10 +126,13 @@ void trace_room_row(const RuntimeScene& room, const PlacedObjects& objects,
       share = omega / kPi * std::clamp(dot(n, axis) + sin_alpha, 0.0, 1.0);
       if (share < settings.cull) continue;
     }
+    // A sensor's reading is its own row, not smoothed between vertices: it gets more rays.
+    const int scale = r < room.vertex_count() ? 1 : settings.sensor_ray_factor;
     const int rays =
-        inside ? settings.cone_rays_max
-               : std::clamp(static_cast<int>(std::ceil(share * settings.cone_rays_per_hemisphere)),
-                            settings.cone_rays_min, settings.cone_rays_max);
+        scale *
+        (inside ? settings.cone_rays_max
+                : std::clamp(static_cast<int>(std::ceil(share * settings.cone_rays_per_hemisphere)),
+                             settings.cone_rays_min, settings.cone_rays_max));
     Pcg32 rng(kConeSeed + k, r);
     const std::uint32_t s1 = rng.next_u32(), s2 = rng.next_u32();
     const Frame frame = frame_from_normal(axis);

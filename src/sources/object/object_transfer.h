@@ -46,6 +46,7 @@ struct ObjectTransferSettings {
   int cone_rays_min = 4;
   int cone_rays_max = 64;
   double cull = 1e-3;  // a share below this: no rays (the object changes < 0.1 % of the gather)
+  int sensor_ray_factor = 8;  // sensors' rows take this many times the rays
 };
 
 // A ray that left through a window: its light is the portal's, looked up per frame.
