@@ -1,4 +1,5 @@
-// `relight bench SCENE.rlt [--frames N] [--sky | --emitters]`: times the run-time weighted sum
+// `relight bench SCENE.rlt [--frames N] [--sky | --emitters | --objects [--object NAME]]`: times
+// the run-time weighted sum
 // and, in
 // the same run, a plain parallel streaming read of as many bytes, so the ratio
 // effective_gbps / stream_gbps speaks for itself on a shared machine. One JSON line.
@@ -7,7 +8,10 @@
 // sky changes luminance), which rebuilds each portal's shell (the paper's Table 1 case) and
 // re-traces and bounces a sun behind clear glass (with shell_ms, sun_ms, sun_bounce_ms), or with
 // --emitters only the near-field emitters (each moves 1 cm: sampling, bounce and their sum,
-// with sampling_ms and bounce_ms); only the kind of source that changed is summed again
+// with sampling_ms and bounce_ms), or with --objects the movable objects (each moves along a
+// small circle, 2 cm and 2° a frame; with --object only the one named — a designer dragging it:
+// their transfer traced again, their direct light and shadows, the bounce, with direct_ms,
+// transfer_ms and bounce_ms); only the kind of source that changed is summed again
 // (runtime/relighter.h).
 #include <algorithm>
 #include <chrono>
@@ -34,6 +38,8 @@ struct BenchArgs {
   int frames = 50;
   bool sky = false;
   bool emitters = false;
+  bool objects = false;
+  std::string object;  // with objects: move only this one
 };
 
 // The next frame's sky: a small change of the kind a designer scrubbing time makes.
@@ -88,16 +94,42 @@ int run_bench(const BenchArgs& args) {
   if (args.emitters && state.emitters.empty()) {
     fail_input(args.rlt, "--emitters needs a scene with near-field emitters");
   }
-  if (args.sky && args.emitters) fail_input(args.rlt, "--sky and --emitters: one at a time");
+  if (args.objects && state.objects.empty()) {
+    fail_input(args.rlt, "--objects needs a scene with movable objects");
+  }
+  if (int(args.sky) + int(args.emitters) + int(args.objects) > 1) {
+    fail_input(args.rlt, "--sky, --emitters and --objects: one at a time");
+  }
+  std::vector<bool> moving(state.objects.size(), args.object.empty());
+  if (!args.object.empty()) {
+    if (!args.objects) fail_input(args.rlt, "--object needs --objects");
+    bool found = false;
+    for (std::size_t k = 0; k < relit.scene().objects.size(); ++k) {
+      if (relit.scene().objects[k].name == args.object) moving[k] = found = true;
+    }
+    if (!found) fail_input(args.rlt, "no movable object named \"" + args.object + "\"");
+  }
+  const std::vector<MovablePlacement> start = state.objects;
   // A frame: a lighting change (new weights, new shells) and the full weighted sum.
   relighter.relight(irradiance);  // warm
   std::vector<double> shell_ms, sun_ms, sun_bounce_ms, sampling_ms, bounce_ms;
+  std::vector<double> object_direct_ms, object_transfer_ms, object_bounce_ms, object_bounces;
   const double frame_ms = median(time_ms(args.frames, [&](int i) {
     if (args.sky) {
       for (PortalState& p : state.portals) advance_sky(p.environment, i);
     } else if (args.emitters) {
       // A designer dragging the emitters: 1 cm a frame, back and forth.
       for (EmitterState& e : state.emitters) e.translate.x += (i % 2 == 0) ? 0.01 : -0.01;
+    } else if (args.objects) {
+      // Along a circle of 0.3 m radius from where the scene (or nothing) put each object: a
+      // 2 cm step and a 2° turn a frame.
+      const double a = (i + 1) * (0.02 / 0.3);
+      for (std::size_t k = 0; k < state.objects.size(); ++k) {
+        if (!moving[k]) continue;
+        state.objects[k].translate =
+            start[k].translate + Vec3{0.3 * (std::cos(a) - 1), 0, 0.3 * std::sin(a)};
+        state.objects[k].rotate_deg = start[k].rotate_deg + 2.0 * (i + 1);
+      }
     } else {
       for (LuminaireState& l : state.luminaires) l.dimmer = 0.5 + 0.5 * ((i % 2) == 0);
     }
@@ -108,6 +140,13 @@ int run_bench(const BenchArgs& args) {
     shell_ms.push_back(shells * 1e3);
     sun_ms.push_back(relighter.portals().sun_seconds() * 1e3);
     sun_bounce_ms.push_back(relighter.portals().sun_bounce_seconds() * 1e3);
+    if (const ObjectLighting* o = relighter.objects()) {
+      const ObjectTimings& t = o->timings();
+      object_direct_ms.push_back(t.direct_seconds * 1e3);
+      object_transfer_ms.push_back(t.transfer_seconds * 1e3);
+      object_bounce_ms.push_back(t.bounce_seconds * 1e3);
+      object_bounces.push_back(t.bounces);
+    }
     if (const EmitterLighting* e = relighter.emitters()) {
       const NearfieldResult& s = e->last_sampling();
       sampling_ms.push_back((s.sampling_seconds + s.reconstruction_seconds) * 1e3);
@@ -137,7 +176,9 @@ int run_bench(const BenchArgs& args) {
 
   const double effective = bytes / (frame_ms * 1e-3) / 1e9;
   const double streaming = buffer.size() * sizeof(std::uint64_t) / (stream_ms * 1e-3) / 1e9;
-  nlohmann::json line = {{"mode", args.sky ? "sky" : (args.emitters ? "emitters" : "luminaires")},
+  const char* mode =
+      args.sky ? "sky" : (args.emitters ? "emitters" : (args.objects ? "objects" : "luminaires"));
+  nlohmann::json line = {{"mode", mode},
                          {"receivers", relighter.receivers()},
                          {"luminaires", relit.scene().luminaires.size()},
                          {"portals", state.portals.size()},
@@ -162,6 +203,19 @@ int run_bench(const BenchArgs& args) {
     line["sampling_ms"] = median(sampling_ms);
     line["bounce_ms"] = median(bounce_ms);
   }
+  if (args.objects) {
+    // The objects' term (sources/object/object_lighting.h): their direct light and shadows,
+    // their transfer traced again (the paper's basis irradiance), and the bounce.
+    const ObjectLighting& o = *relighter.objects();
+    line["objects"] = state.objects.size();
+    line["moving"] = std::count(moving.begin(), moving.end(), true);
+    line["object_vertices"] = o.placed().vertex_count();
+    line["direct_ms"] = median(object_direct_ms);
+    line["transfer_ms"] = median(object_transfer_ms);
+    line["bounce_ms"] = median(object_bounce_ms);
+    line["bounces"] = median(object_bounces);
+    line["transfer_rays"] = o.timings().rays;
+  }
   std::cout << line.dump() << "\n";
   return 0;
 }
@@ -176,6 +230,9 @@ void add_bench_command(CLI::App& app, Action& action) {
   cmd->add_flag("--sky", args->sky, "change only the sky seen through the portals each frame");
   cmd->add_flag("--emitters", args->emitters,
                 "move only the near-field emitters each frame (sampling, bounce and sum)");
+  cmd->add_flag("--objects", args->objects,
+                "move and turn the movable objects each frame (transfer, shadows, bounce)");
+  cmd->add_option("--object", args->object, "with --objects: move only this object");
   cmd->callback([args, &action] { action = [args] { return run_bench(*args); }; });
 }
 

@@ -2,6 +2,7 @@
 
 #include <bit>
 #include <cstring>
+#include <stdexcept>
 
 #include "engine/receivers.h"
 #include "material/lambert.h"
@@ -59,6 +60,36 @@ std::string encode_geometry(const TransferFile& t) {
   return out;
 }
 
+std::string encode_objects(std::span<const ObjectMesh> objects) {
+  std::size_t bytes = 12;
+  for (const ObjectMesh& o : objects)
+    bytes += 8 + 24 * o.positions.size() + 12 * o.triangles.size();
+  std::string out;
+  out.reserve(bytes);
+  put_tag(out, "RLOB");
+  put(out, kStudioProtocolVersion);
+  put(out, static_cast<std::uint32_t>(objects.size()));
+  for (const ObjectMesh& o : objects) {
+    const std::size_t v = o.positions.size();
+    if (o.albedo.size() != 3 * v) {
+      throw std::invalid_argument("encode_objects: object \"" + o.name +
+                                  "\" has no albedo per vertex");
+    }
+    put(out, static_cast<std::uint32_t>(v));
+    put(out, static_cast<std::uint32_t>(o.triangles.size()));
+    for (const Vec3 p : o.positions) {
+      put(out, static_cast<float>(p.x));
+      put(out, static_cast<float>(p.y));
+      put(out, static_cast<float>(p.z));
+    }
+    for (const float a : o.albedo) put(out, a);
+    for (const Triangle& tri : o.triangles) {
+      for (const std::uint32_t index : tri) put(out, index);
+    }
+  }
+  return out;
+}
+
 std::vector<int> vertex_portals(const TransferFile& t) {
   std::vector<int> portal(t.vertex_count, -1);
   std::vector<bool> opaque(t.vertex_count, false);
@@ -101,12 +132,33 @@ void compute_frame_values(const TransferFile& t, std::span<const int> vertex_por
   }
 }
 
+void compute_object_values(std::span<const float> albedo, std::span<const float> irradiance,
+                           FrameValues& out) {
+  if (albedo.size() != irradiance.size() || albedo.size() % 3 != 0) {
+    throw std::invalid_argument("compute_object_values: " + std::to_string(albedo.size()) +
+                                " albedo values for " + std::to_string(irradiance.size()) +
+                                " irradiance values");
+  }
+  const std::size_t q = albedo.size() / 3;
+  out.object_radiance.resize(3 * q);
+  out.object_illuminance.resize(q);
+  for (std::size_t v = 0; v < q; ++v) {
+    const float* e = &irradiance[3 * v];
+    for (std::size_t c = 0; c < 3; ++c) {
+      out.object_radiance[3 * v + c] =
+          static_cast<float>(lambertian_radiance(albedo[3 * v + c], e[c]));
+    }
+    out.object_illuminance[v] = static_cast<float>(photometric(e));
+  }
+}
+
 std::string encode_frame(std::uint32_t frame_number, std::optional<std::uint32_t> seq,
                          float milliseconds, const FrameValues& values) {
   const auto v = static_cast<std::uint32_t>(values.illuminance.size());
   const auto s = static_cast<std::uint32_t>(values.sensors.size());
+  const std::size_t q = values.object_illuminance.size();
   std::string out;
-  out.reserve(24 + 8 * std::size_t{v} + 4 * std::size_t{s});
+  out.reserve(24 + 8 * std::size_t{v} + 4 * std::size_t{s} + 8 * q);
   put_tag(out, "RLFR");
   put(out, frame_number);
   put(out, seq.value_or(kNoSeq));
@@ -120,6 +172,13 @@ std::string encode_frame(std::uint32_t frame_number, std::optional<std::uint32_t
     put(out, float_to_half(values.illuminance[i]));
   }
   for (const float e : values.sensors) put(out, e);
+  // After the sensors, so that parsers of frames without objects read them unchanged.
+  for (std::size_t i = 0; i < q; ++i) {
+    put(out, float_to_half(values.object_radiance[3 * i]));
+    put(out, float_to_half(values.object_radiance[3 * i + 1]));
+    put(out, float_to_half(values.object_radiance[3 * i + 2]));
+    put(out, float_to_half(values.object_illuminance[i]));
+  }
   return out;
 }
 

@@ -1,8 +1,9 @@
 // The studio's binary messages (docs/studio-protocol.md): the geometry `RLGE` once per
-// connection and a radiance frame `RLFR` per state change. A frame carries per vertex what a
-// camera sees of the diffuse surface, L = ρ·E/π per channel (cd/m²), and the illuminance
-// Y(E) (lx) for the false-colour view, as half floats, then the sensors' own readings as
-// floats. Little-endian, as the protocol page lays out.
+// connection, the movable objects' meshes `RLOB` after it (scenes with objects only), and a
+// radiance frame `RLFR` per state change. A frame carries per vertex what a camera sees of the
+// diffuse surface, L = ρ·E/π per channel (cd/m²), and the illuminance Y(E) (lx) for the
+// false-colour view, as half floats, then the sensors' own readings as floats, then the same
+// two values per object vertex. Little-endian, as the protocol page lays out.
 #pragma once
 
 #include <cstdint>
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include "math/rgb.h"
+#include "sources/object/object_mesh.h"
 #include "sources/transfer_file.h"
 
 namespace relight {
@@ -20,6 +22,10 @@ inline constexpr std::uint32_t kStudioProtocolVersion = 1;
 inline constexpr std::uint32_t kNoSeq = 0xFFFFFFFFu;
 
 std::string encode_geometry(const TransferFile& transfer);
+
+// `RLOB`: every movable object's mesh as the scene places it (scene order; indices local to
+// the object). Clients place each one as the lighting state says (math/placement.h).
+std::string encode_objects(std::span<const ObjectMesh> objects);
 
 // Per vertex: the portal whose glass it belongs to, or −1 (a vertex any opaque triangle uses
 // is opaque).
@@ -30,6 +36,10 @@ struct FrameValues {
   std::vector<float> radiance;     // 3 per vertex, cd/m²
   std::vector<float> illuminance;  // 1 per vertex, lx
   std::vector<float> sensors;      // 1 per sensor point, lx
+  // The movable objects' vertices, all objects back to back in scene order (PlacedObjects
+  // order); zero for hidden objects. Empty when the scene has no objects.
+  std::vector<float> object_radiance;     // 3 per object vertex, cd/m²
+  std::vector<float> object_illuminance;  // 1 per object vertex, lx
 };
 
 // `irradiance`: 3 per receiver (vertices, then sensors) as the Relighter writes it;
@@ -37,6 +47,12 @@ struct FrameValues {
 void compute_frame_values(const TransferFile& transfer, std::span<const int> vertex_portal,
                           std::span<const float> irradiance, std::span<const Rgb> glass_radiance,
                           FrameValues& out);
+
+// The objects' vertices' values from their albedo and irradiance (3 floats per object vertex
+// each: PlacedObjects::albedo, ObjectLighting::irradiance(true)). Throws
+// std::invalid_argument when the two disagree in size.
+void compute_object_values(std::span<const float> albedo, std::span<const float> irradiance,
+                           FrameValues& out);
 
 std::string encode_frame(std::uint32_t frame_number, std::optional<std::uint32_t> seq,
                          float milliseconds, const FrameValues& values);

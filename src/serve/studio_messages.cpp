@@ -160,6 +160,19 @@ nlohmann::json hello_message(const TransferFile& t, const std::string& scene_fil
                         {"pivot", vec3_json(e.pivot)},
                         {"size", 0.5 * length(hi - lo)}});
   }
+  nlohmann::json objects = nlohmann::json::array();
+  for (const ObjectMesh& o : t.view.objects) {
+    Vec3 lo = o.pivot, hi = lo;
+    for (const Vec3 p : o.positions) {
+      lo = min(lo, p);
+      hi = max(hi, p);
+    }
+    objects.push_back({{"name", o.name},
+                       {"pivot", vec3_json(o.pivot)},
+                       {"size", 0.5 * length(hi - lo)},
+                       {"vertices", o.positions.size()},
+                       {"triangles", o.triangles.size()}});
+  }
   nlohmann::json cameras = nlohmann::json::array();
   for (const Camera& c : scene.cameras) {
     cameras.push_back({{"name", c.name},
@@ -189,6 +202,7 @@ nlohmann::json hello_message(const TransferFile& t, const std::string& scene_fil
           {"portals", portals},
           {"exterior", exterior},
           {"emitters", emitters},
+          {"objects", objects},
           {"cameras", cameras},
           {"sensors", sensors},
           {"sh_order", t.view.sh_order},

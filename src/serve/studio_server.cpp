@@ -1,5 +1,6 @@
 #include "serve/studio_server.h"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -42,7 +43,18 @@ struct Shown {
   nlohmann::json document = nlohmann::json::object();
   LightingState state;
   std::uint32_t frame_number = 0;
+  // The movable objects as `state` places them, with their own ray tracer, for picks; null
+  // when the scene has none. The worker's relighter re-places its own copy on every change,
+  // so picks on the network thread read this snapshot instead.
+  std::shared_ptr<const PlacedObjects> objects;
 };
+
+// The objects as `state` places them, for picks (Shown::objects); null without objects.
+std::shared_ptr<const PlacedObjects> placed_for_picks(const TransferFile& t,
+                                                      const LightingState& state) {
+  if (t.view.objects.empty()) return nullptr;
+  return std::make_shared<const PlacedObjects>(place_objects(t.view.objects, state.objects));
+}
 
 nlohmann::json vec3_json(Vec3 v) {
   return {v.x, v.y, v.z};
@@ -67,6 +79,7 @@ struct StudioServer::Impl {
   std::unique_ptr<RelitScene> relit;
   std::vector<int> vertex_portal;
   std::string geometry;
+  std::string objects_message;        // RLOB; empty when the scene has no movable objects
   const RayTracer* picker = nullptr;  // relit's tracer of every triangle
   std::unique_ptr<WebSocketServer> transport;
 
@@ -104,6 +117,9 @@ struct StudioServer::Impl {
     }
     auto values = std::make_shared<FrameValues>();
     compute_frame_values(transfer(), vertex_portal, relit->irradiance(), glass, *values);
+    if (const ObjectLighting* objects = relit->relighter().objects()) {
+      compute_object_values(objects->placed().albedo, objects->irradiance(true), *values);
+    }
     return values;
   }
 
@@ -150,6 +166,12 @@ struct StudioServer::Impl {
         profiles.push_back(text_of(profile_message(std::nullopt, j, p.state)));
       }
     }
+    std::shared_ptr<const PlacedObjects> placed;
+    {
+      std::lock_guard lock(mutex);
+      if (shown.state.objects == p.state.objects) placed = shown.objects;
+    }
+    if (!placed) placed = placed_for_picks(transfer(), p.state);
     const std::string state_text = text_of({{"type", "state"},
                                             {"seq", seq_json(p.seq)},
                                             {"client", p.client},
@@ -158,7 +180,7 @@ struct StudioServer::Impl {
     std::set<ConnectionId> to;
     {
       std::lock_guard lock(mutex);
-      shown = {frame, values, p.document, p.state, number};
+      shown = {frame, values, p.document, p.state, number, std::move(placed)};
       to = clients;
     }
     frame_number = number;
@@ -190,6 +212,7 @@ struct StudioServer::Impl {
     clients.insert(id);
     send_json(id, hello);
     transport->send(id, geometry, true);
+    if (!objects_message.empty()) transport->send(id, objects_message, true);
     transport->send(id, *shown.frame, true);
   }
 
@@ -228,28 +251,59 @@ struct StudioServer::Impl {
   }
 
   void handle(ConnectionId id, std::optional<std::uint32_t> seq, const PickRequest& r) {
-    const RayHit hit = picker->intersect({r.origin, r.direction});
-    if (!hit.hit()) {
-      send_json(id, {{"type", "pick"}, {"seq", seq_json(seq)}, {"hit", false}});
-      return;
-    }
-    const TransferFile& t = transfer();
-    const Triangle& tri = t.triangles[hit.triangle];
-    const Vec3 a = t.positions[tri[0]], b = t.positions[tri[1]], c = t.positions[tri[2]];
-    Vec3 n = normalize(cross(b - a, c - a));
-    if (dot(n, r.direction) > 0) n = -n;
-    const double w[3] = {1 - hit.u - hit.v, hit.u, hit.v};
     std::shared_ptr<const FrameValues> values;
+    std::shared_ptr<const PlacedObjects> objects;
     {
       std::lock_guard lock(mutex);
       values = shown.values;
+      objects = shown.objects;
     }
+    const Ray ray{r.origin, r.direction};
+    const RayHit room_hit = picker->intersect(ray);
+    const RayHit object_hit = objects ? objects->tracer.intersect(ray) : RayHit{};
+    if (!room_hit.hit() && !object_hit.hit()) {
+      send_json(id, {{"type", "pick"}, {"seq", seq_json(seq)}, {"hit", false}});
+      return;
+    }
+    const bool on_object = object_hit.hit() && (!room_hit.hit() || object_hit.t < room_hit.t);
+    const RayHit& hit = on_object ? object_hit : room_hit;
+    // The hit triangle's corners and, per corner, where its values are in the frame.
+    const TransferFile& t = transfer();
+    const Triangle& tri = on_object ? objects->triangles[hit.triangle] : t.triangles[hit.triangle];
+    const std::vector<Vec3>& positions = on_object ? objects->positions : t.positions;
+    const std::vector<float>& illuminance =
+        on_object ? values->object_illuminance : values->illuminance;
+    const std::vector<float>& radiance = on_object ? values->object_radiance : values->radiance;
+    const Vec3 a = positions[tri[0]], b = positions[tri[1]], c = positions[tri[2]];
+    Vec3 n = normalize(cross(b - a, c - a));
+    if (dot(n, r.direction) > 0) n = -n;
+    const double w[3] = {1 - hit.u - hit.v, hit.u, hit.v};
     double e = 0, l = 0;
     for (int k = 0; k < 3; ++k) {
       const std::size_t v = tri[static_cast<std::size_t>(k)];
-      e += w[k] * values->illuminance[v];
-      l += w[k] * luminance(Rgb{values->radiance[3 * v], values->radiance[3 * v + 1],
-                                values->radiance[3 * v + 2]});
+      e += w[k] * illuminance[v];
+      l += w[k] * luminance(Rgb{radiance[3 * v], radiance[3 * v + 1], radiance[3 * v + 2]});
+    }
+    nlohmann::json reply = {{"type", "pick"},
+                            {"seq", seq_json(seq)},
+                            {"hit", true},
+                            {"point", vec3_json(r.origin + hit.t * r.direction)},
+                            {"normal", vec3_json(n)},
+                            {"distance", hit.t},
+                            {"illuminance", e},
+                            {"luminance", l}};
+    if (on_object) {
+      // The object's own triangle number (as in RLOB): its triangles are back to back.
+      const std::uint32_t object = objects->triangle_object[hit.triangle];
+      const auto first = std::lower_bound(objects->triangle_object.begin(),
+                                          objects->triangle_object.end(), object);
+      reply["triangle"] =
+          hit.triangle - static_cast<std::uint32_t>(first - objects->triangle_object.begin());
+      reply["material"] = nullptr;
+      reply["portal"] = nullptr;
+      reply["object"] = t.view.objects[object].name;
+      send_json(id, reply);
+      return;
     }
     // Files written before the MMAT section name no material.
     const std::size_t material =
@@ -258,22 +312,15 @@ struct StudioServer::Impl {
     for (std::size_t k = 0; k < t.portal_triangles.size(); ++k) {
       if (t.portal_triangles[k] == hit.triangle) portal = static_cast<int>(t.portal_of_triangle[k]);
     }
-    send_json(
-        id, {{"type", "pick"},
-             {"seq", seq_json(seq)},
-             {"hit", true},
-             {"point", vec3_json(r.origin + hit.t * r.direction)},
-             {"normal", vec3_json(n)},
-             {"distance", hit.t},
-             {"triangle", hit.triangle},
-             {"material", material < scene().materials.size()
-                              ? nlohmann::json(scene().materials[material].name)
-                              : nlohmann::json(nullptr)},
-             {"portal", portal >= 0
-                            ? nlohmann::json(scene().portals[static_cast<std::size_t>(portal)].name)
-                            : nlohmann::json(nullptr)},
-             {"illuminance", e},
-             {"luminance", l}});
+    reply["triangle"] = hit.triangle;
+    reply["material"] = material < scene().materials.size()
+                            ? nlohmann::json(scene().materials[material].name)
+                            : nlohmann::json(nullptr);
+    reply["portal"] = portal >= 0
+                          ? nlohmann::json(scene().portals[static_cast<std::size_t>(portal)].name)
+                          : nlohmann::json(nullptr);
+    reply["object"] = nullptr;
+    send_json(id, reply);
   }
 
   void handle(ConnectionId id, std::optional<std::uint32_t> seq, const DistributionRequest& r) {
@@ -304,6 +351,7 @@ StudioServer::StudioServer(const fs::path& rlt, const StudioOptions& options)
   const TransferFile& t = s.transfer();
   s.vertex_portal = vertex_portals(t);
   s.geometry = encode_geometry(t);
+  if (!t.view.objects.empty()) s.objects_message = encode_objects(t.view.objects);
   s.picker = &s.relit->mesh_tracer();  // built here: picks run on the network thread
   const LightingState initial = default_lighting_state(t.scene);
   const auto start = std::chrono::steady_clock::now();
@@ -311,7 +359,11 @@ StudioServer::StudioServer(const fs::path& rlt, const StudioOptions& options)
   const std::chrono::duration<float, std::milli> ms = std::chrono::steady_clock::now() - start;
   s.shown = {
       std::make_shared<const std::string>(encode_frame(1, std::nullopt, ms.count(), *values)),
-      values, nlohmann::json::object(), initial, 1};
+      values,
+      nlohmann::json::object(),
+      initial,
+      1,
+      placed_for_picks(t, initial)};
 
   WebSocketServerOptions transport_options;
   transport_options.host = options.host;

@@ -1,9 +1,9 @@
 // The studio's entry point: connects to `relight serve` (docs/studio-protocol.md), builds
-// the view and the panels from `hello`, the mesh from RLGE, uploads every RLFR, routes
-// state / pick / distribution / error / pong messages, handles clicks in the view (probe a
-// point, or aim a luminaire at it; a press on an emitter's marker drags the emitter,
-// emitters.js), keeps the status line, and exposes window.relightStudio for the browser
-// tests.
+// the view and the panels from `hello`, the mesh from RLGE and the movable objects' meshes
+// from RLOB, uploads every RLFR, routes state / pick / distribution / error / pong messages,
+// handles clicks in the view (probe a point, or aim a luminaire at it; a press on an
+// emitter's marker drags the emitter, emitters.js; a press on an object drags it, objects.js),
+// keeps the status line, and exposes window.relightStudio for the browser tests.
 import { CameraRig } from './cameras.js';
 import { Connection } from './connection.js';
 import { DistributionEditor } from './distribution_editor.js';
@@ -13,7 +13,8 @@ import { LabelLayer } from './labels.js';
 import { Legend } from './legend.js';
 import { LuminairePanel } from './luminaires.js';
 import { Markers } from './markers.js';
-import { decodeFrame, decodeGeometry, messages } from './protocol.js';
+import { ObjectPanel, ObjectsView } from './objects.js';
+import { decodeFrame, decodeGeometry, decodeObjects, messages } from './protocol.js';
 import { Sensors } from './sensors.js';
 import { StateStore, canonical } from './state.js';
 import { notice } from './ui.js';
@@ -26,7 +27,8 @@ const $ = (id) => document.getElementById(id);
 let resolveReady;
 const api = {
   ready: new Promise((r) => (resolveReady = r)),
-  frames: 0,
+  frames: 0, // frames drawn
+  framesReceived: 0, // RLFR messages decoded
   lastFrameNumber: null,
   errors: [], // the server's error messages
   clientErrors: [], // what this client could not decode or apply
@@ -64,6 +66,12 @@ const markers = new Markers(viewer, store);
 // Takes presses on its markers on #stage in the capture phase, ahead of the camera controls
 // and the click handling below.
 const emitterMarkers = new EmitterMarkers(viewer, store, $('stage'));
+// Likewise for presses on movable objects (after the markers: a marker in front wins), except
+// while a luminaire is being aimed; a click on an object reads the point as any click does.
+const objectsView = new ObjectsView(viewer, store, $('stage'), {
+  busy: () => session.aimIndex !== null,
+  click: (x, y) => onViewportClick(x, y),
+});
 const sensors = new Sensors(viewer, $('sensors'));
 const rig = new CameraRig(viewer, () => viewPanel.markFree());
 const viewPanel = new ViewPanel(viewer, rig, markers, $('labels'));
@@ -78,6 +86,8 @@ const luminairePanel = new LuminairePanel($('luminaires'), store, distributions,
 const editor = new DistributionEditor($('distribution'), store, distributions, requestDistribution);
 const windowsPanel = new WindowsPanel($('windows'), store);
 const emitterPanel = new EmitterPanel($('emitters'), store);
+const objectPanel = new ObjectPanel($('objects'), store, objectsView);
+objectsView.onSelect = (i) => objectPanel.setSelected(i);
 // The luminaire in the distribution editor is drawn larger in the view.
 editor.onSelect = (i) => {
   markers.selected = i;
@@ -162,6 +172,8 @@ function onHello(hello) {
   windowsPanel.setScene(hello);
   emitterMarkers.setScene(hello);
   emitterPanel.setScene(hello);
+  objectsView.setScene(hello);
+  objectPanel.setScene(hello);
   editor.setScene(hello);
   store.reset(hello.state || {}, hello.client ?? null);
   // Every luminaire's distribution: flux for the panels, exact C0 samples for the editor.
@@ -175,10 +187,15 @@ function onBinary(tag, buffer) {
       viewer.setGeometry(g, session.hello?.bounds);
       session.geometry = true;
       $('overlay-message').textContent = 'Waiting for the first frame…';
+    } else if (tag === 'RLOB') {
+      if (!session.geometry) throw new Error('RLOB before RLGE');
+      objectsView.setMeshes(decodeObjects(buffer));
     } else if (tag === 'RLFR') {
       if (!session.geometry) throw new Error('RLFR before RLGE');
       const f = decodeFrame(buffer);
+      api.framesReceived++;
       viewer.setFrame(f);
+      objectsView.setFrame(f);
       sensors.setReadings(f.sensors);
       session.lastFrame = f;
       $('overlay-message').textContent = '';
@@ -212,6 +229,7 @@ viewer.afterRender.push((info) => {
   sensors.drawLabels(labels);
   markers.drawLabels(labels);
   emitterMarkers.drawLabels(labels);
+  objectsView.drawLabels(labels);
   if (info.frameDrawn) {
     // A frame counts as drawn at the first animation frame after the one that drew it,
     // when the browser has composited it: latency runs from the state message's send to
@@ -266,13 +284,13 @@ function showProbe(reply) {
     viewer.requestRender();
     return;
   }
-  // (material is null when the .rlt predates per-triangle materials)
-  const where = reply.portal ? `window “${reply.portal}”` : reply.material ?? `triangle ${reply.triangle}`;
+  // (material is null when the .rlt predates per-triangle materials, and on objects)
+  const where = reply.object ? `object “${reply.object}”` : reply.portal ? `window “${reply.portal}”` : reply.material ?? `triangle ${reply.triangle}`;
   markers.probe = { point: reply.point, text: `${formatValue(reply.illuminance)} lx · ${formatValue(reply.luminance)} cd/m²` };
   box.hidden = false;
   box.innerHTML = '';
   const lines = [
-    [`${where}`, 'Surface (material or window) at the clicked point'],
+    [`${where}`, 'Surface (material, window or movable object) at the clicked point'],
     [`E = ${formatValue(reply.illuminance)} lx   L = ${formatValue(reply.luminance)} cd/m²`, 'Illuminance and luminance at the point, interpolated from the current frame'],
     [`at (${reply.point.map((v) => v.toFixed(2)).join(', ')}) m, ${reply.distance.toFixed(2)} m away`, 'Position of the point and its distance from the camera'],
   ];
@@ -432,8 +450,10 @@ Object.assign(api, {
     return store.latestSeq;
   },
   pick: (x, y) => pickAt(x, y),
-  // Emitter i's marker on the canvas (CSS px), and any world point's.
+  // Emitter i's marker on the canvas (CSS px), object i's base centre, and any world point's.
   emitterOnScreen: (i) => emitterMarkers.screenPosition(i),
+  objectOnScreen: (i) => objectsView.screenPosition(i),
+  objects: objectsView,
   project: (p) => {
     const s = labels.project(p);
     return s && { x: s[0], y: s[1] };

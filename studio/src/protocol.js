@@ -1,6 +1,6 @@
 // Wire format of `relight serve` (docs/studio-protocol.md): decoding of the binary
-// geometry ("RLGE") and frame ("RLFR") messages, IEEE 754 binary16 → number, and builders
-// for the client's text messages (state, pick, distribution, ping).
+// geometry ("RLGE"), movable objects ("RLOB") and frame ("RLFR") messages, IEEE 754 binary16
+// → number, and builders for the client's text messages (state, pick, distribution, ping).
 
 const LITTLE_ENDIAN = new Uint8Array(new Uint16Array([1]).buffer)[0] === 1;
 export const NO_SEQ = 0xffffffff;
@@ -51,9 +51,44 @@ export function decodeGeometry(buffer) {
   };
 }
 
+// RLOB: per movable object (hello.objects order) its mesh as the scene places it: positions
+// (f32 xyz), albedo (f32 rgb, linear) and indices local to the object (u32, CCW front).
+export function decodeObjects(buffer) {
+  need(buffer, 12, 'RLOB header');
+  if (binaryTag(buffer) !== 'RLOB') throw new Error(`expected RLOB, got "${binaryTag(buffer)}"`);
+  const dv = new DataView(buffer);
+  const version = dv.getUint32(4, true);
+  const count = dv.getUint32(8, true);
+  const objects = [];
+  let at = 12;
+  for (let i = 0; i < count; i++) {
+    need(buffer, at + 8, `RLOB object ${i}`);
+    const V = dv.getUint32(at, true);
+    const T = dv.getUint32(at + 4, true);
+    at += 8;
+    need(buffer, at + 24 * V + 12 * T, `RLOB object ${i}`);
+    const indices = view(Uint32Array, buffer, at + 24 * V, 3 * T, 'getUint32');
+    for (let k = 0; k < indices.length; k++) {
+      if (indices[k] >= V) throw new Error(`RLOB object ${i}: index ${indices[k]} of ${V} vertices`);
+    }
+    objects.push({
+      vertexCount: V,
+      triangleCount: T,
+      positions: view(Float32Array, buffer, at, 3 * V, 'getFloat32'),
+      albedo: view(Float32Array, buffer, at + 12 * V, 3 * V, 'getFloat32'),
+      indices,
+    });
+    at += 24 * V + 12 * T;
+  }
+  if (at !== buffer.byteLength) throw new Error(`RLOB: ${buffer.byteLength} bytes, expected ${at}`);
+  return { version, objects };
+}
+
 // RLFR: frame number, seq (null for 0xFFFFFFFF), server milliseconds, per vertex four half
 // floats (radiance R G B in cd/m², illuminance in lx) kept as raw Uint16 for upload as a
-// half-float vertex attribute, and the sensor points' illuminance (f32, lx).
+// half-float vertex attribute, the sensor points' illuminance (f32, lx), then the same four
+// half floats per movable-object vertex (all objects back to back, hello.objects order; none
+// when the scene has no objects).
 export function decodeFrame(buffer) {
   need(buffer, 24, 'RLFR header');
   if (binaryTag(buffer) !== 'RLFR') throw new Error(`expected RLFR, got "${binaryTag(buffer)}"`);
@@ -62,7 +97,12 @@ export function decodeFrame(buffer) {
   const rawSeq = dv.getUint32(8, true);
   const V = dv.getUint32(12, true);
   const S = dv.getUint32(16, true);
-  need(buffer, 24 + 8 * V + 4 * S, 'RLFR');
+  const base = 24 + 8 * V + 4 * S;
+  need(buffer, base, 'RLFR');
+  if ((buffer.byteLength - base) % 8 !== 0) {
+    throw new Error(`RLFR: ${buffer.byteLength - base} bytes after the sensors, not 8 per object vertex`);
+  }
+  const Q = (buffer.byteLength - base) / 8;
   return {
     frame,
     seq: rawSeq === NO_SEQ ? null : rawSeq,
@@ -71,6 +111,8 @@ export function decodeFrame(buffer) {
     serverMs: dv.getFloat32(20, true),
     halfs: view(Uint16Array, buffer, 24, 4 * V, 'getUint16'),
     sensors: view(Float32Array, buffer, 24 + 8 * V, S, 'getFloat32'),
+    objectVertexCount: Q,
+    objectHalfs: view(Uint16Array, buffer, base, 4 * Q, 'getUint16'),
   };
 }
 

@@ -22,9 +22,9 @@ export function canonical(x) {
   return JSON.stringify(x);
 }
 
-// Drops empty luminaire/portal/emitter entries and empty top-level objects.
+// Drops empty luminaire/portal/emitter/object entries and empty top-level objects.
 function prune(doc) {
-  for (const key of ['luminaires', 'portals', 'exterior', 'emitters']) {
+  for (const key of ['luminaires', 'portals', 'exterior', 'emitters', 'objects']) {
     const o = doc[key];
     if (!o || typeof o !== 'object') continue;
     if (key !== 'exterior') {
@@ -78,7 +78,7 @@ export class StateStore {
     this._notify('remote');
   }
 
-  // Luminaire / portal / emitter entry of the document, created on demand.
+  // Luminaire / portal / emitter / movable object entry of the document, created on demand.
   luminaire(name) {
     this.doc.luminaires ??= {};
     return (this.doc.luminaires[name] ??= {});
@@ -90,6 +90,10 @@ export class StateStore {
   emitter(name) {
     this.doc.emitters ??= {};
     return (this.doc.emitters[name] ??= {});
+  }
+  object(name) {
+    this.doc.objects ??= {};
+    return (this.doc.objects[name] ??= {});
   }
 
   // fn(doc) edits the document; it is then sent (throttled).

@@ -5,7 +5,10 @@
 // it, a small metering pass renders (Y, E) into a float target and reads it back: the
 // log-average luminance gives the automatic exposure and the 1st/99th percentiles the
 // automatic false-colour range, the same statistics `relight render` takes over its pixels.
-// Overlays (luminaire markers, sensor points) live on layer 1, which metering ignores.
+// Overlays (luminaire markers, sensor points) live on layer 1, which metering ignores. The
+// movable objects (objects.js) are surfaces like the room: their meshes go into `objects`
+// (layer 0), drawn with the room's opaque material, so exposure, false colour and metering
+// treat them as the room.
 import * as THREE from 'three';
 import { createDisplayMaterial } from './display_shader.js';
 import { autoExposureEv100, exposureScale, resolveScale } from './false_color.js';
@@ -45,6 +48,8 @@ export class Viewer {
     this.camera.layers.enable(OVERLAY_LAYER);
     this.overlays = new THREE.Group();
     this.scene.add(this.overlays);
+    this.objects = new THREE.Group();
+    this.scene.add(this.objects);
     this.materials = [createDisplayMaterial(false), createDisplayMaterial(true)];
     this.mesh = null;
     this.lighting = null; // the half-float attribute
@@ -209,20 +214,27 @@ export class Viewer {
     return { logAverage: count ? Math.exp(sum / count) : null, values };
   }
 
-  // Fallback without float render targets: the same statistics over the vertices.
+  // Fallback without float render targets: the same statistics over the vertices (the room's
+  // and the shown objects').
   _meterVertices(quantity) {
-    const a = this.lighting?.array;
-    if (!a) return { logAverage: null, values: [] };
+    if (!this.lighting) return { logAverage: null, values: [] };
+    const arrays = [this.lighting.array];
+    for (const o of this.objects.children) {
+      const l = o.geometry?.getAttribute('lighting');
+      if (o.visible && l) arrays.push(l.array);
+    }
     let sum = 0, count = 0;
     const values = [];
-    for (let v = 0; v < a.length / 4; v++) {
-      const L = [0, 1, 2].map((k) => THREE.DataUtils.fromHalfFloat(a[4 * v + k]));
-      const y = 0.2126 * L[0] + 0.7152 * L[1] + 0.0722 * L[2];
-      if (y > 0) {
-        sum += Math.log(y);
-        count++;
+    for (const a of arrays) {
+      for (let v = 0; v < a.length / 4; v++) {
+        const L = [0, 1, 2].map((k) => THREE.DataUtils.fromHalfFloat(a[4 * v + k]));
+        const y = 0.2126 * L[0] + 0.7152 * L[1] + 0.0722 * L[2];
+        if (y > 0) {
+          sum += Math.log(y);
+          count++;
+        }
+        if (quantity) values.push(quantity === 'lux' ? THREE.DataUtils.fromHalfFloat(a[4 * v + 3]) : y);
       }
-      if (quantity) values.push(quantity === 'lux' ? THREE.DataUtils.fromHalfFloat(a[4 * v + 3]) : y);
     }
     return { logAverage: count ? Math.exp(sum / count) : null, values };
   }

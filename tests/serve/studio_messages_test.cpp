@@ -107,6 +107,27 @@ TEST(StudioMessages, HelloDescribesTheScene) {
   EXPECT_EQ(h["sh_order"], 4);
   EXPECT_EQ(h["state"], nlohmann::json::object());
   EXPECT_EQ(h["emitters"], nlohmann::json::array());
+  EXPECT_EQ(h["objects"], nlohmann::json::array());
+}
+
+TEST(StudioMessages, HelloListsTheObjects) {
+  const testing::TinyStudioRoom furnished(testing::tiny_studio_room_with_object_json());
+  const TransferFile& t = furnished.transfer;
+  const nlohmann::json h = hello_message(t, "tiny.rlt", nlohmann::json::object());
+  ASSERT_EQ(h["objects"].size(), 1u);
+  const nlohmann::json& o = h["objects"][0];
+  EXPECT_EQ(o["name"], "cabinet");
+  // (the .rlt stores the objects' meshes in single precision)
+  const std::vector<double> pivot = o["pivot"];
+  for (std::size_t k = 0; k < 3; ++k) {
+    EXPECT_NEAR(pivot[k], (testing::kCabinetMin[k] + testing::kCabinetMax[k]) / 2, 1e-6);
+  }
+  // Half the diagonal of the 0.5 × 1.2 × 0.4 m box.
+  EXPECT_NEAR(o["size"].get<double>(), 0.5 * std::sqrt(0.25 + 1.44 + 0.16), 1e-6);
+  EXPECT_EQ(o["vertices"], t.view.objects[0].positions.size());
+  EXPECT_EQ(o["triangles"], t.view.objects[0].triangles.size());
+  EXPECT_GE(o["vertices"].get<std::size_t>(), 8u);
+  EXPECT_GE(o["triangles"].get<std::size_t>(), 12u);
 }
 
 TEST(StudioMessages, HelloListsTheEmitters) {
@@ -151,6 +172,34 @@ TEST(StudioMessages, BadEmitterStatesAreRefusedWithTheirJsonPath) {
                 .find("message:/emitters/panel/translate"),
             std::string::npos);
   EXPECT_EQ(error(R"({"emitters":{"panel":{"translate":[0.5,0,0],"luminance":100}}})"), "accepted");
+}
+
+// Likewise for movable objects' placements.
+TEST(StudioMessages, BadObjectStatesAreRefusedWithTheirJsonPath) {
+  const testing::TinyStudioRoom furnished(testing::tiny_studio_room_with_object_json());
+  const Scene& scene = furnished.transfer.scene;
+  const auto error = [&](const char* text) -> std::string {
+    LightingState state = default_lighting_state(scene);
+    try {
+      apply_lighting_state(state, scene, nlohmann::json::parse(text), "message", ".");
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "accepted";
+  };
+  EXPECT_EQ(error(R"({"objects":{"sofa":{"visible":false}}})"),
+            "message:/objects/sofa: no movable object named \"sofa\" in the precomputed scene");
+  EXPECT_NE(
+      error(R"({"objects":{"cabinet":{"visible":"no"}}})").find("message:/objects/cabinet/visible"),
+      std::string::npos);
+  EXPECT_NE(error(R"({"objects":{"cabinet":{"rotate_deg":"90"}}})")
+                .find("message:/objects/cabinet/rotate_deg"),
+            std::string::npos);
+  EXPECT_NE(error(R"({"objects":{"cabinet":{"scale":2}}})").find("scale"), std::string::npos);
+  EXPECT_NE(error(R"({"objects":[]})").find("message:/objects"), std::string::npos);
+  EXPECT_EQ(
+      error(R"({"objects":{"cabinet":{"translate":[1,0,0.5],"rotate_deg":30,"visible":true}}})"),
+      "accepted");
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 // A tiny precomputed room for the studio's tests: a grey box with a south window (a portal to
 // a uniform sky), a downlight with a curve distribution and a work-plane grid, precomputed at
 // low settings into a .rlt in a temporary folder (about a second); optionally with a near-field
-// emitter.
+// emitter or a movable object.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -42,6 +42,21 @@ inline nlohmann::json tiny_studio_room_with_emitter_json() {
       "geometry": { "type": "quad", "corner": [1, 2, 1], "u": [0.4, 0, 0], "v": [0, 0, 0.4] },
       "luminance": 2000, "color": [1, 0.5, 0.25] } ])");
   document["precompute"]["nearfield_directions"] = 16;
+  return document;
+}
+
+// The room with a movable object "cabinet": one box 0.5 × 1.2 × 0.4 m standing on the floor
+// beside the downlight (pivot [0.75, 0.6, 0.7]), of material "grey".
+inline constexpr double kCabinetMin[3] = {0.5, 0, 0.5}, kCabinetMax[3] = {1.0, 1.2, 0.9};
+inline nlohmann::json tiny_studio_room_with_object_json() {
+  nlohmann::json document = tiny_studio_room_json();
+  document["objects"] = nlohmann::json::array(
+      {{{"name", "cabinet"},
+        {"geometry",
+         nlohmann::json::array({{{"type", "box"},
+                                 {"min", {kCabinetMin[0], kCabinetMin[1], kCabinetMin[2]}},
+                                 {"max", {kCabinetMax[0], kCabinetMax[1], kCabinetMax[2]}},
+                                 {"material", "grey"}}})}}});
   return document;
 }
 

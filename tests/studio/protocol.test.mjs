@@ -10,7 +10,7 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 
-import { connect, mean, relightBinary, startServer, stopServer, studioScene } from './studio_support.mjs';
+import { connect, decodeObjects, mean, relightBinary, startServer, stopServer, studioScene } from './studio_support.mjs';
 
 const allLuminaires = (hello, settings) =>
   Object.fromEntries(hello.luminaires.map((l) => [l.name, settings]));
@@ -19,7 +19,7 @@ let server;
 test.before(async () => { server = await startServer(); });
 test.after(async () => { assert.equal(await stopServer(server), 0, server.stderr()); });
 
-test('hello, geometry and the first frame arrive in order with matching sizes', async () => {
+test('hello, geometry (objects) and the first frame arrive in order with matching sizes', async () => {
   const c = await connect(server.ws);
   const first = await c.next();
   assert.equal(first.json.type, 'hello');
@@ -31,10 +31,21 @@ test('hello, geometry and the first frame arrive in order with matching sizes', 
   assert.equal(geometry.data.readUInt32LE(8), hello.vertices);
   assert.equal(geometry.data.readUInt32LE(12), hello.triangles);
   assert.equal(geometry.data.length, 16 + 24 * hello.vertices + 16 * hello.triangles);
-  const frameMessage = await c.next();
+  // Movable objects: RLOB between the geometry and the first frame, only when there are any
+  // (tests/studio/objects.test.mjs pins it on a scene with one).
+  assert.ok(Array.isArray(hello.objects));
+  let frameMessage = await c.next();
+  if (hello.objects.length) {
+    assert.equal(frameMessage.tag, 'RLOB');
+    const rlob = decodeObjects(frameMessage.data);
+    assert.deepEqual(rlob.objects.map((o) => [o.vertices, o.triangles]),
+                     hello.objects.map((o) => [o.vertices, o.triangles]));
+    frameMessage = await c.next();
+  }
   assert.equal(frameMessage.tag, 'RLFR');
   const sensorPoints = hello.sensors.reduce((n, s) => n + s.points.length, 0);
-  assert.equal(frameMessage.data.length, 24 + 8 * hello.vertices + 4 * sensorPoints);
+  const objectVertices = hello.objects.reduce((n, o) => n + o.vertices, 0);
+  assert.equal(frameMessage.data.length, 24 + 8 * hello.vertices + 4 * sensorPoints + 8 * objectVertices);
   c.close();
 });
 

@@ -55,7 +55,8 @@ export function residentKiB(pid) {
   return Number(status.match(/VmRSS:\s+(\d+)/)[1]);
 }
 
-// A WebSocket client that queues what it receives: text as parsed JSON, binary as Buffers.
+// A WebSocket client that queues what it receives: text as parsed JSON, binary as Buffers,
+// each with the time it arrived (`at`, performance.now()).
 export class Client {
   constructor(url, options = {}) {
     this.ws = new WebSocket(url, options);
@@ -63,8 +64,9 @@ export class Client {
     this.waiters = [];
     this.closed = null;
     this.ws.on('message', (data, isBinary) => {
-      const m = isBinary ? { binary: true, tag: data.subarray(0, 4).toString('latin1'), data }
-                         : { binary: false, json: JSON.parse(data.toString()) };
+      const at = performance.now();
+      const m = isBinary ? { binary: true, tag: data.subarray(0, 4).toString('latin1'), data, at }
+                         : { binary: false, json: JSON.parse(data.toString()), at };
       this.queue.push(m);
       this.wake();
     });
@@ -117,18 +119,58 @@ function halfToFloat(h) {
   return sign * (1 + m / 1024) * 2 ** (e - 15);
 }
 
+// An RLFR frame: per vertex radiance (3) and illuminance, the sensors, and the same per
+// movable-object vertex (the bytes after the sensors, 8 per object vertex).
 export function decodeFrame(buf) {
   const frame = buf.readUInt32LE(4), seq = buf.readUInt32LE(8);
   const v = buf.readUInt32LE(12), s = buf.readUInt32LE(16);
   const ms = buf.readFloatLE(20);
-  const radiance = new Float32Array(3 * v), illuminance = new Float32Array(v);
-  for (let i = 0; i < v; ++i) {
-    for (let c = 0; c < 3; ++c) radiance[3 * i + c] = halfToFloat(buf.readUInt16LE(24 + 8 * i + 2 * c));
-    illuminance[i] = halfToFloat(buf.readUInt16LE(24 + 8 * i + 6));
-  }
+  const halfs = (at, n) => {
+    const radiance = new Float32Array(3 * n), illuminance = new Float32Array(n);
+    for (let i = 0; i < n; ++i) {
+      for (let c = 0; c < 3; ++c) radiance[3 * i + c] = halfToFloat(buf.readUInt16LE(at + 8 * i + 2 * c));
+      illuminance[i] = halfToFloat(buf.readUInt16LE(at + 8 * i + 6));
+    }
+    return { radiance, illuminance };
+  };
+  const { radiance, illuminance } = halfs(24, v);
   const sensors = new Float32Array(s);
   for (let k = 0; k < s; ++k) sensors[k] = buf.readFloatLE(24 + 8 * v + 4 * k);
-  return { frame, seq: seq === 0xffffffff ? null : seq, vertices: v, ms, radiance, illuminance, sensors };
+  const base = 24 + 8 * v + 4 * s;
+  if ((buf.length - base) % 8 !== 0) throw new Error(`RLFR: ${buf.length - base} bytes after the sensors`);
+  const objects = halfs(base, (buf.length - base) / 8);
+  return { frame, seq: seq === 0xffffffff ? null : seq, vertices: v, ms, radiance, illuminance, sensors,
+           objectVertices: objects.illuminance.length, objectRadiance: objects.radiance,
+           objectIlluminance: objects.illuminance };
+}
+
+// RLGE's positions (3 floats per vertex).
+export function geometryPositions(buf) {
+  const v = buf.readUInt32LE(8);
+  return Array.from({ length: 3 * v }, (_, k) => buf.readFloatLE(16 + 4 * k));
+}
+
+// RLOB: per object {vertices, triangles, positions (3 per vertex), albedo (3 per vertex),
+// indices (3 per triangle)}; throws unless the bytes are exactly that.
+export function decodeObjects(buf) {
+  if (buf.subarray(0, 4).toString('latin1') !== 'RLOB') throw new Error('not RLOB');
+  const version = buf.readUInt32LE(4), count = buf.readUInt32LE(8);
+  const objects = [];
+  let at = 12;
+  const floats = (n) => Array.from({ length: n }, (_, k) => buf.readFloatLE(at + 4 * k));
+  for (let i = 0; i < count; ++i) {
+    const vertices = buf.readUInt32LE(at), triangles = buf.readUInt32LE(at + 4);
+    at += 8;
+    const positions = floats(3 * vertices);
+    at += 12 * vertices;
+    const albedo = floats(3 * vertices);
+    at += 12 * vertices;
+    const indices = Array.from({ length: 3 * triangles }, (_, k) => buf.readUInt32LE(at + 4 * k));
+    at += 12 * triangles;
+    objects.push({ vertices, triangles, positions, albedo, indices });
+  }
+  if (at !== buf.length) throw new Error(`RLOB: ${buf.length} bytes, the layout gives ${at}`);
+  return { version, objects };
 }
 
 export const mean = (values) => values.reduce((a, b) => a + b, 0) / values.length;
