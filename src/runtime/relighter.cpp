@@ -73,8 +73,8 @@ constexpr int kSensorOpeningSamples = 256;
 
 void Relighter::update_objects() {
   // E0 with direct light, summed again when a term's state changed.
-  if (sum_terms(1, room_light_)) objects_dirty_ = true;
-  if (!objects_dirty_) return;
+  const bool light_changed = sum_terms(1, room_light_);
+  if (!light_changed && !objects_dirty_) return;
   const std::vector<LuminaireLight> lights = luminaires_.lights(luminaire_specs_);
   const std::vector<LuminaireLight> sensor_lights =
       luminaires_.lights(luminaire_specs_, kSensorOpeningSamples);
@@ -87,7 +87,7 @@ void Relighter::update_objects() {
           .cubemap[cubemap_texel_index(shell.face_size, cubemap_texel(shell.face_size, direction))];
     };
   }
-  objects_->update(in);
+  objects_->update(in, light_changed);
   objects_dirty_ = false;
 }
 

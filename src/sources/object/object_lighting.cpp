@@ -69,13 +69,19 @@ bool ObjectLighting::set_state(std::span<const MovablePlacement> placements) {
     throw std::invalid_argument("ObjectLighting: one placement per object expected");
   }
   if (std::equal(placements.begin(), placements.end(), placements_.begin())) return false;
+  for (std::size_t k = 0; k < placements.size(); ++k) {
+    const bool pending = std::find(moved_.begin(), moved_.end(), k) != moved_.end();
+    if (placements[k] != placements_[k] && !pending) {
+      moved_.push_back(static_cast<std::uint32_t>(k));
+      moved_before_.push_back(placed_.bounds[k]);  // where it was when last lit
+    }
+  }
   placements_.assign(placements.begin(), placements.end());
   placed_ = place_objects(meshes_, placements_);
-  transfer_valid_ = false;
   return true;
 }
 
-void ObjectLighting::trace_direct(const ObjectLightInputs& in) {
+void ObjectLighting::trace_direct(const ObjectLightInputs& in, bool all) {
   const RuntimeScene& room = *room_;
   const std::size_t vertices = room.vertex_count(), objects = placed_.vertex_count();
   const Occluders with = occluders(), without(room.occluders());
@@ -96,25 +102,41 @@ void ObjectLighting::trace_direct(const ObjectLightInputs& in) {
     if (suns) e += sun_irradiance(*sun, in.suns, p, n);
     return e;
   };
+  // Whether a shadow ray from x toward a light may pass the sphere s.
+  const auto may_shadow = [&](Vec3 x, const BoundingSphere& s) {
+    if (s.radius <= 0) return false;
+    for (std::size_t j = 0; j < in.luminaires.size(); ++j) {
+      if (max_component(in.luminaires[j].rgb) > 0 &&
+          segment_near_sphere(x, in.luminaires[j].position, s, reach[j])) {
+        return true;
+      }
+    }
+    for (std::size_t j = 0; suns && j < in.suns.size(); ++j) {
+      if (ray_near_sphere(x, in.suns[j].disc.direction, s, 1e-3 + 0.01 * s.radius)) return true;
+    }
+    return false;
+  };
+  // What must be traced again: with `all`, wherever any object may shadow; otherwise only where
+  // a moved object may, where it was or where it is now (the rest is kept from the last frame).
+  const auto redo = [&](Vec3 x) {
+    if (all) {
+      for (const BoundingSphere& s : placed_.bounds) {
+        if (may_shadow(x, s)) return true;
+      }
+      return false;
+    }
+    for (std::size_t i = 0; i < moved_.size(); ++i) {
+      if (may_shadow(x, moved_before_[i]) || may_shadow(x, placed_.bounds[moved_[i]])) return true;
+    }
+    return false;
+  };
   // Room receivers: the light the objects' shadows take away, where a shadow ray may pass an
   // object.
-  std::fill(direct_.begin(), direct_.end(), 0.0f);
+  if (all) std::fill(direct_.begin(), direct_.end(), 0.0f);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, room.receivers(), 256), [&](const auto& rr) {
     for (std::size_t r = rr.begin(); r != rr.end(); ++r) {
       const Vec3 x = room.ray_point(r), n = room.normal(r);
-      bool shadowed = false;
-      for (std::size_t k = 0; k < placed_.object_count() && !shadowed; ++k) {
-        if (!placed_.visible(k)) continue;
-        for (std::size_t j = 0; j < in.luminaires.size() && !shadowed; ++j) {
-          shadowed = max_component(in.luminaires[j].rgb) > 0 &&
-                     segment_near_sphere(x, in.luminaires[j].position, placed_.bounds[k], reach[j]);
-        }
-        for (std::size_t s = 0; suns && s < in.suns.size() && !shadowed; ++s) {
-          shadowed = ray_near_sphere(x, in.suns[s].disc.direction, placed_.bounds[k],
-                                     1e-3 + 0.01 * placed_.bounds[k].radius);
-        }
-      }
-      if (!shadowed) continue;
+      if (!redo(x)) continue;
       // A sensor's penumbra is sampled finer: its reading is not averaged between vertices.
       const std::span<const LuminaireLight> lights =
           r < vertices || in.sensor_luminaires.empty() ? in.luminaires : in.sensor_luminaires;
@@ -127,21 +149,25 @@ void ObjectLighting::trace_direct(const ObjectLightInputs& in) {
   tbb::parallel_for(
       tbb::blocked_range<std::size_t>(0, placed_.object_count()), [&](const auto& kr) {
         for (std::size_t k = kr.begin(); k != kr.end(); ++k) {
-          if (!placed_.visible(k)) continue;
+          const bool moved = all || std::find(moved_.begin(), moved_.end(), k) != moved_.end();
           tbb::parallel_for(tbb::blocked_range<std::size_t>(placed_.first_vertex[k],
                                                             placed_.first_vertex[k + 1], 64),
                             [&](const auto& qr) {
                               for (std::size_t q = qr.begin(); q != qr.end(); ++q) {
-                                put(direct_, vertices + q,
-                                    direct_at(with, sun_with, placed_.ray_points[q],
-                                              placed_.normals[q], in.luminaires));
+                                if (!placed_.visible(k)) {
+                                  put(direct_, vertices + q, Rgb{});
+                                } else if (moved || redo(placed_.ray_points[q])) {
+                                  put(direct_, vertices + q,
+                                      direct_at(with, sun_with, placed_.ray_points[q],
+                                                placed_.normals[q], in.luminaires));
+                                }
                               }
                             });
         }
       });
 }
 
-void ObjectLighting::update(const ObjectLightInputs& in) {
+void ObjectLighting::update(const ObjectLightInputs& in, bool light_changed) {
   const RuntimeScene& room = *room_;
   const std::size_t vertices = room.vertex_count(), receivers = room.receivers();
   const std::size_t objects = placed_.vertex_count();
@@ -152,11 +178,16 @@ void ObjectLighting::update(const ObjectLightInputs& in) {
   if (!transfer_valid_) {
     transfer_ = trace_object_transfer(room, placed_, settings_);
     transfer_valid_ = true;
-    timings_.rays = transfer_.rays;
+  } else if (!moved_.empty()) {
+    retrace_object_transfer(transfer_, room, placed_, settings_, moved_, moved_before_);
   }
+  timings_.rays = transfer_.rays;
   timings_.transfer_seconds = seconds_since(start);
   start = std::chrono::steady_clock::now();
-  trace_direct(in);
+  trace_direct(in, light_changed || !direct_valid_);
+  direct_valid_ = true;
+  moved_.clear();
+  moved_before_.clear();
   timings_.direct_seconds = seconds_since(start);
 
   start = std::chrono::steady_clock::now();

@@ -72,9 +72,11 @@ class ObjectLighting {
 
   // Places the objects (scene order); returns whether any placement changed.
   bool set_state(std::span<const MovablePlacement> placements);
-  // Recomputes ΔE and the objects' light: the transfer when placements changed since the last
-  // update, the direct light and the bounce always.
-  void update(const ObjectLightInputs& inputs);
+  // Recomputes ΔE and the objects' light: the transfer where objects moved since the last
+  // update (object_transfer.h retrace_object_transfer), the direct light wherever an object
+  // may shadow when `light_changed` (any other term's light, E0, changed) or else only where a
+  // moved object may, and the bounce always.
+  void update(const ObjectLightInputs& inputs, bool light_changed);
 
   // Adds ΔE to `out` (3 per room receiver); without direct light, ΔE less ΔE_d (what
   // renderers that trace direct light per pixel, through the objects, still need).
@@ -91,7 +93,7 @@ class ObjectLighting {
   const ObjectTransfer& transfer() const { return transfer_; }
 
  private:
-  void trace_direct(const ObjectLightInputs& inputs);
+  void trace_direct(const ObjectLightInputs& inputs, bool all);
 
   const RuntimeScene* room_;
   ObjectTransferSettings settings_;
@@ -99,7 +101,10 @@ class ObjectLighting {
   std::vector<MovablePlacement> placements_;
   PlacedObjects placed_;
   ObjectTransfer transfer_;
-  bool transfer_valid_ = false;
+  bool transfer_valid_ = false, direct_valid_ = false;
+  // Objects moved since the last update, and their spheres before.
+  std::vector<std::uint32_t> moved_;
+  std::vector<BoundingSphere> moved_before_;
   std::vector<float> albedo_;    // 3 per unified row that reflects: room vertices, objects
   std::vector<float> direct_;    // ΔE_d: 3 per unified row (room vertices, objects, sensors)
   std::vector<float> source_;    // D, likewise

@@ -102,6 +102,20 @@ void add_hit(const RuntimeScene& room, const PlacedObjects& objects, const First
   }
 }
 
+}  // namespace
+
+double sphere_share(Vec3 origin, Vec3 normal, const BoundingSphere& s) {
+  if (s.radius <= 0) return 0;
+  const Vec3 to_centre = s.centre - origin;
+  const double d = length(to_centre);
+  if (d <= s.radius) return 1;
+  const double sin_alpha = s.radius / d;
+  const double omega = 2 * kPi * (1 - std::sqrt(std::max(0.0, 1 - sin_alpha * sin_alpha)));
+  return omega / kPi * std::clamp(dot(normal, to_centre / d) + sin_alpha, 0.0, 1.0);
+}
+
+namespace {
+
 // The correction row of room receiver r: rays over each visible object's cone.
 void trace_room_row(const RuntimeScene& room, const PlacedObjects& objects,
                     const ObjectTransferSettings& settings, std::size_t r, RowScratch& scratch,
@@ -116,15 +130,14 @@ void trace_room_row(const RuntimeScene& room, const PlacedObjects& objects,
     const double d = length(to_centre);
     const bool inside = d <= s.radius;
     double cos_alpha = -1, omega = 2 * kPi;  // inside: the whole hemisphere (cosine-sampled)
-    double share = 1;
+    const double share = sphere_share(origin, n, s);
     Vec3 axis = n;
     if (!inside) {
+      if (share < settings.cull) continue;
       const double sin_alpha = s.radius / d;
       cos_alpha = std::sqrt(std::max(0.0, 1 - sin_alpha * sin_alpha));
       axis = to_centre / d;
       omega = 2 * kPi * (1 - cos_alpha);
-      share = omega / kPi * std::clamp(dot(n, axis) + sin_alpha, 0.0, 1.0);
-      if (share < settings.cull) continue;
     }
     // A sensor's reading is its own row, not smoothed between vertices: it gets more rays.
     const int scale = r < room.vertex_count() ? 1 : settings.sensor_ray_factor;
@@ -200,15 +213,19 @@ void trace_object_row(const RuntimeScene& room, const PlacedObjects& objects,
   scratch.flush(chunk);
 }
 
-// Traces rows [0, count) in chunks and joins them in row order.
+// Traces rows `rows` (or [0, count) when `rows` is null) in chunks and joins them in that order.
 template <typename TraceRow>
-ObjectRows trace_rows(std::size_t count, const TraceRow& trace_row, std::uint64_t& rays) {
+ObjectRows trace_rows(std::size_t count, const std::vector<std::uint32_t>* rows,
+                      const TraceRow& trace_row, std::uint64_t& rays) {
+  if (rows != nullptr) count = rows->size();
   std::vector<Chunk> chunks((count + kChunk - 1) / kChunk);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunks.size()), [&](const auto& range) {
     RowScratch scratch;
     for (std::size_t c = range.begin(); c != range.end(); ++c) {
       const std::size_t end = std::min(count, (c + 1) * kChunk);
-      for (std::size_t r = c * kChunk; r < end; ++r) trace_row(r, scratch, chunks[c]);
+      for (std::size_t i = c * kChunk; i < end; ++i) {
+        trace_row(rows != nullptr ? (*rows)[i] : i, scratch, chunks[c]);
+      }
     }
   });
   ObjectRows out;
@@ -231,24 +248,98 @@ ObjectRows trace_rows(std::size_t count, const TraceRow& trace_row, std::uint64_
   return out;
 }
 
+// `rows` with the rows listed in `redo` replaced by those of `traced` (in the order of `redo`,
+// which is ascending); glass hits likewise.
+ObjectRows splice(const ObjectRows& rows, const std::vector<std::uint32_t>& redo,
+                  const ObjectRows& traced) {
+  ObjectRows out;
+  out.first.reserve(rows.first.size());
+  out.columns.reserve(rows.columns.size() + traced.columns.size());
+  out.values.reserve(out.columns.capacity());
+  std::size_t next = 0;  // into redo
+  for (std::size_t r = 0; r < rows.rows(); ++r) {
+    const bool again = next < redo.size() && redo[next] == r;
+    const ObjectRows& from = again ? traced : rows;
+    const std::size_t i = again ? next++ : r;
+    const auto lo = static_cast<std::ptrdiff_t>(from.first[i]);
+    const auto hi = static_cast<std::ptrdiff_t>(from.first[i + 1]);
+    out.columns.insert(out.columns.end(), from.columns.begin() + lo, from.columns.begin() + hi);
+    out.values.insert(out.values.end(), from.values.begin() + lo, from.values.begin() + hi);
+    out.first.push_back(out.columns.size());
+  }
+  std::vector<bool> again(rows.rows(), false);
+  for (const std::uint32_t r : redo) again[r] = true;
+  for (const GlassHit& g : rows.glass) {
+    if (!again[g.row]) out.glass.push_back(g);
+  }
+  out.glass.insert(out.glass.end(), traced.glass.begin(), traced.glass.end());
+  return out;
+}
+
 }  // namespace
 
 ObjectTransfer trace_object_transfer(const RuntimeScene& room, const PlacedObjects& objects,
                                      const ObjectTransferSettings& settings) {
   ObjectTransfer t;
   t.room = trace_rows(
-      room.receivers(),
+      room.receivers(), nullptr,
       [&](std::size_t r, RowScratch& scratch, Chunk& chunk) {
         trace_room_row(room, objects, settings, r, scratch, chunk);
       },
       t.rays);
   t.objects = trace_rows(
-      objects.vertex_count(),
+      objects.vertex_count(), nullptr,
       [&](std::size_t q, RowScratch& scratch, Chunk& chunk) {
         trace_object_row(room, objects, settings, q, scratch, chunk);
       },
       t.rays);
   return t;
+}
+
+void retrace_object_transfer(ObjectTransfer& t, const RuntimeScene& room,
+                             const PlacedObjects& objects, const ObjectTransferSettings& settings,
+                             std::span<const std::uint32_t> moved,
+                             std::span<const BoundingSphere> before) {
+  // Whether a moved object, where it was or where it is, matters from a point.
+  const auto touched = [&](Vec3 point, Vec3 normal) {
+    const Vec3 origin = offset_from_surface(point, normal);
+    for (std::size_t i = 0; i < moved.size(); ++i) {
+      if (sphere_share(origin, normal, before[i]) >= settings.cull ||
+          sphere_share(origin, normal, objects.bounds[moved[i]]) >= settings.cull) {
+        return true;
+      }
+    }
+    return false;
+  };
+  std::vector<std::uint32_t> room_rows, object_rows;
+  for (std::size_t r = 0; r < room.receivers(); ++r) {
+    if (touched(room.ray_point(r), room.normal(r)))
+      room_rows.push_back(static_cast<std::uint32_t>(r));
+  }
+  std::vector<bool> is_moved(objects.object_count(), false);
+  for (const std::uint32_t k : moved) is_moved[k] = true;
+  for (std::size_t k = 0; k < objects.object_count(); ++k) {
+    for (std::uint32_t q = objects.first_vertex[k]; q < objects.first_vertex[k + 1]; ++q) {
+      if (is_moved[k] || touched(objects.ray_points[q], objects.normals[q]))
+        object_rows.push_back(q);
+    }
+  }
+  t.rays = 0;
+  const ObjectRows room_traced = trace_rows(
+      0, &room_rows,
+      [&](std::size_t r, RowScratch& scratch, Chunk& chunk) {
+        trace_room_row(room, objects, settings, r, scratch, chunk);
+      },
+      t.rays);
+  const ObjectRows object_traced = trace_rows(
+      0, &object_rows,
+      [&](std::size_t q, RowScratch& scratch, Chunk& chunk) {
+        trace_object_row(room, objects, settings, q, scratch, chunk);
+      },
+      t.rays);
+  t.room = splice(t.room, room_rows, room_traced);
+  t.objects = splice(t.objects, object_rows, object_traced);
+  t.retraced_rows = room_rows.size() + object_rows.size();
 }
 
 }  // namespace relight

@@ -31,6 +31,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "engine/runtime_scene.h"
@@ -68,13 +69,29 @@ struct ObjectRows {
 };
 
 struct ObjectTransfer {
-  ObjectRows room;     // C: one row per room receiver (vertices, then sensors)
-  ObjectRows objects;  // H: one row per object vertex
-  std::uint64_t rays = 0;
+  ObjectRows room;                // C: one row per room receiver (vertices, then sensors)
+  ObjectRows objects;             // H: one row per object vertex
+  std::uint64_t rays = 0;         // traced by the last trace or retrace
+  std::size_t retraced_rows = 0;  // by the last retrace
 };
 
-// Needs room.can_bounce() only for use in a bounce, not to build.
+// Of a receiver at `origin` (already off its surface) with unit normal `normal`: the share of
+// its cosine-weighted hemisphere a sphere may cover, Ω/π · clamp(n · axis + sin α, 0, 1) (an
+// upper bound), 1 inside the sphere, 0 for a sphere of radius 0 (a hidden object).
+double sphere_share(Vec3 origin, Vec3 normal, const BoundingSphere& sphere);
+
 ObjectTransfer trace_object_transfer(const RuntimeScene& room, const PlacedObjects& objects,
                                      const ObjectTransferSettings& settings);
+
+// After objects `moved` moved (or were hidden or shown; `before[i]` the sphere of moved[i]
+// before, radius 0 when it was hidden): retraces the rows a move can change — every vertex row
+// of a moved object, and every row, room or object, from which a moved object's sphere before
+// or now covers at least `cull` of the hemisphere — and keeps the others. A row left alone can
+// still miss a moved object that passes in front of another object's cone while covering less
+// than `cull` of its hemisphere (< 0.1 % of what it gathers).
+void retrace_object_transfer(ObjectTransfer& transfer, const RuntimeScene& room,
+                             const PlacedObjects& objects, const ObjectTransferSettings& settings,
+                             std::span<const std::uint32_t> moved,
+                             std::span<const BoundingSphere> before);
 
 }  // namespace relight
