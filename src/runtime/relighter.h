@@ -65,6 +65,10 @@ class Relighter {
   // The movable objects' term, when the scene has objects (their placed meshes, their
   // vertices' light, the occluders with them in place, the last frame's timings).
   const ObjectLighting* objects() const { return objects_ ? &*objects_ : nullptr; }
+  // Objects the states so far placed through the room's surfaces, each once (then cleared).
+  std::vector<std::string> take_object_warnings() {
+    return objects_ ? objects_->take_warnings() : std::vector<std::string>{};
+  }
 
   // The near-field emitters' term, when the scene has emitters (their placement for exact
   // direct light per pixel, the last sampling).

@@ -1,5 +1,7 @@
 #include "runtime/relit_scene.h"
 
+#include <cstdio>
+
 #include "engine/receivers.h"
 #include "material/lambert.h"
 
@@ -17,6 +19,12 @@ RelitScene::RelitScene(const std::filesystem::path& rlt,
 void RelitScene::apply(const LightingState& state) {
   relighter_->set_state(state);
   relighter_->relight(irradiance_);
+  if (relighter_->objects() != nullptr) {
+    for (const std::string& name : relighter_->take_object_warnings()) {
+      std::fprintf(stderr, "warning: movable object \"%s\" is placed through the room's surfaces\n",
+                   name.c_str());
+    }
+  }
 }
 
 std::vector<float> RelitScene::indirect_irradiance() {

@@ -78,6 +78,13 @@ bool ObjectLighting::set_state(std::span<const MovablePlacement> placements) {
   }
   placements_.assign(placements.begin(), placements.end());
   placed_ = place_objects(meshes_, placements_);
+  warned_.resize(meshes_.size(), false);
+  for (const std::uint32_t k : moved_) {
+    if (!warned_[k] && passes_through(placed_, k, room_->occluders())) {
+      warned_[k] = true;
+      warnings_.push_back(meshes_[k].name);
+    }
+  }
   return true;
 }
 

@@ -29,6 +29,8 @@
 #include <functional>
 #include <optional>
 #include <span>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "engine/runtime_scene.h"
@@ -90,6 +92,9 @@ class ObjectLighting {
   // The room and the placed objects, blocking light together.
   Occluders occluders() const { return {room_->occluders(), &placed_.tracer}; }
   const ObjectTimings& timings() const { return timings_; }
+  // Names of objects a state placed through the room's surfaces (allowed: light then passes
+  // as the geometry says), each listed once, the first time; take_warnings() empties the list.
+  std::vector<std::string> take_warnings() { return std::exchange(warnings_, {}); }
   const ObjectTransfer& transfer() const { return transfer_; }
 
  private:
@@ -113,6 +118,8 @@ class ObjectLighting {
   std::vector<float> room_delta_, room_delta_direct_;  // 3 per room receiver
   std::vector<float> object_total_, object_indirect_;  // 3 per object vertex
   ObjectTimings timings_;
+  std::vector<bool> warned_;  // per object
+  std::vector<std::string> warnings_;
 };
 
 }  // namespace relight

@@ -87,4 +87,25 @@ PlacedObjects place_objects(std::span<const ObjectMesh> objects,
           std::move(triangle_object), std::move(bounds),  std::move(tracer)};
 }
 
+bool passes_through(const PlacedObjects& objects, std::size_t k, const RayTracer& room) {
+  if (!objects.visible(k)) return false;
+  const Vec3 centre = objects.bounds[k].centre;
+  const auto inward = [&](Vec3 p) {
+    const Vec3 d = centre - p;
+    const double l = length(d);
+    return l > 0.02 ? p + d * (0.01 / l) : p;
+  };
+  for (std::size_t t = 0; t < objects.triangles.size(); ++t) {
+    if (objects.triangle_object[t] != k) continue;
+    const Triangle& tri = objects.triangles[t];
+    for (int e = 0; e < 3; ++e) {
+      const Vec3 a = inward(objects.positions[tri[static_cast<std::size_t>(e)]]);
+      const Vec3 b = inward(objects.positions[tri[static_cast<std::size_t>((e + 1) % 3)]]);
+      const double l = length(b - a);
+      if (l > 0 && room.occluded({a, (b - a) / l, 0, l})) return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace relight

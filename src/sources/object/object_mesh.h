@@ -47,6 +47,11 @@ struct PlacedObjects {
   bool visible(std::size_t object) const { return bounds[object].radius > 0; }
 };
 
+// Whether placed object k passes through the room's surfaces: an edge of one of its triangles,
+// shrunk 1 cm toward the object's centre (so that an object standing on the floor or against a
+// wall does not count), crosses a triangle of `room`.
+bool passes_through(const PlacedObjects& objects, std::size_t k, const RayTracer& room);
+
 // Throws std::invalid_argument when the placements are not one per object.
 PlacedObjects place_objects(std::span<const ObjectMesh> objects,
                             std::span<const MovablePlacement> placements);
