@@ -198,10 +198,13 @@ void ObjectLighting::update(const ObjectLightInputs& in, bool light_changed) {
   timings_.direct_seconds = seconds_since(start);
 
   start = std::chrono::steady_clock::now();
-  // D = ΔE_d + [C; H] · ρE0 + the windows' light the objects gain or hide.
-  const auto unified = [&](std::size_t r) { return r < vertices ? r : r + objects; };
-  const auto add_static = [&](const ObjectRows& rows, std::size_t i, std::size_t row) {
-    float* d = &source_[3 * row];
+  // D = ΔE_d + [C; H] · ρE0 + the windows' light the objects gain or hide. Transfer rows:
+  // room receiver r is row r, object vertex q row R + q (object_transfer.h); solver rows: room
+  // vertices, object vertices, sensors.
+  const auto unified = [&](std::size_t row) {
+    return row < vertices ? row : (row < receivers ? row + objects : row - receivers + vertices);
+  };
+  const auto add_static = [&](const ObjectRows& rows, std::size_t i, float* d) {
     for (std::size_t e = rows.first[i]; e < rows.first[i + 1]; ++e) {
       const std::uint32_t c = rows.columns[e];
       if (c >= vertices) continue;  // objects have no light in E0
@@ -211,28 +214,26 @@ void ObjectLighting::update(const ObjectLightInputs& in, bool light_changed) {
     }
   };
   std::copy(direct_.begin(), direct_.end(), source_.begin());
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, receivers, 512), [&](const auto& rr) {
-    for (std::size_t r = rr.begin(); r != rr.end(); ++r) add_static(transfer_.room, r, unified(r));
-  });
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, objects, 512), [&](const auto& qr) {
-    for (std::size_t q = qr.begin(); q != qr.end(); ++q)
-      add_static(transfer_.objects, q, vertices + q);
-  });
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, receivers + objects, 512),
+                    [&](const auto& rr) {
+                      for (std::size_t row = rr.begin(); row != rr.end(); ++row) {
+                        float* d = &source_[3 * unified(row)];
+                        for (const ObjectRows& cone : transfer_.cones) add_static(cone, row, d);
+                        if (row >= receivers) add_static(transfer_.base, row - receivers, d);
+                      }
+                    });
   if (in.glass) {
-    for (const GlassHit& g : transfer_.room.glass) {
+    const auto add_glass = [&](const GlassHit& g, std::size_t row) {
       const Rgb l = in.glass(g.portal, g.direction) * (kPi * g.weight);
-      const std::size_t row = unified(g.row);
-      source_[3 * row] += static_cast<float>(l.r);
-      source_[3 * row + 1] += static_cast<float>(l.g);
-      source_[3 * row + 2] += static_cast<float>(l.b);
+      float* d = &source_[3 * unified(row)];
+      d[0] += static_cast<float>(l.r);
+      d[1] += static_cast<float>(l.g);
+      d[2] += static_cast<float>(l.b);
+    };
+    for (const ObjectRows& cone : transfer_.cones) {
+      for (const GlassHit& g : cone.glass) add_glass(g, g.row);
     }
-    for (const GlassHit& g : transfer_.objects.glass) {
-      const Rgb l = in.glass(g.portal, g.direction) * (kPi * g.weight);
-      const std::size_t row = vertices + g.row;
-      source_[3 * row] += static_cast<float>(l.r);
-      source_[3 * row + 1] += static_cast<float>(l.g);
-      source_[3 * row + 2] += static_cast<float>(l.b);
-    }
+    for (const GlassHit& g : transfer_.base.glass) add_glass(g, receivers + g.row);
   }
   // ΔE = D + [G + C; H] · ρ ΔE over room vertices and object vertices; sensors gathered once.
   const auto& g = room.gather().matrix;
@@ -247,14 +248,18 @@ void ObjectLighting::update(const ObjectLightInputs& in, bool light_changed) {
   };
   const RgbGather op{vertices + objects, receivers + objects, albedo_,
                      [&](std::size_t u, std::span<const float> reflected, float(&sum)[3]) {
+                       std::size_t row = 0;
                        if (u >= vertices && u < vertices + objects) {
+                         row = receivers + (u - vertices);
                          sum[0] = sum[1] = sum[2] = 0;
-                         add_rows(transfer_.objects, u - vertices, reflected, sum);
-                         return;
+                         add_rows(transfer_.base, u - vertices, reflected, sum);
+                       } else {
+                         row = u < vertices ? u : u - objects;
+                         gather_rgb_row(g, static_cast<Eigen::Index>(row), reflected, sum);
                        }
-                       const std::size_t r = u < vertices ? u : u - objects;
-                       gather_rgb_row(g, static_cast<Eigen::Index>(r), reflected, sum);
-                       add_rows(transfer_.room, r, reflected, sum);
+                       for (const ObjectRows& cone : transfer_.cones) {
+                         add_rows(cone, row, reflected, sum);
+                       }
                      }};
   BounceSettings bounce;
   bounce.tolerance = 1e-4;

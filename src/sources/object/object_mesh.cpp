@@ -82,9 +82,25 @@ PlacedObjects place_objects(std::span<const ObjectMesh> objects,
     }
   }
   RayTracer tracer(positions, triangles, sequential_ids(triangles.size()));
-  return {std::move(positions),       std::move(normals), std::move(ray_points),
-          std::move(albedo),          std::move(first),   std::move(triangles),
-          std::move(triangle_object), std::move(bounds),  std::move(tracer)};
+  std::vector<RayTracer> own;
+  for (std::size_t k = 0; k < objects.size(); ++k) {
+    std::vector<Triangle> mine;
+    std::vector<std::uint32_t> ids;
+    for (std::size_t t = 0; t < triangles.size(); ++t) {
+      if (triangle_object[t] != k) continue;
+      mine.push_back(triangles[t]);
+      ids.push_back(static_cast<std::uint32_t>(t));
+    }
+    own.emplace_back(positions, mine, ids);
+  }
+  return {std::move(positions), std::move(normals),   std::move(ray_points),      std::move(albedo),
+          std::move(first),     std::move(triangles), std::move(triangle_object), std::move(bounds),
+          std::move(tracer),    std::move(own)};
+}
+
+std::size_t PlacedObjects::object_of_vertex(std::size_t q) const {
+  return static_cast<std::size_t>(std::upper_bound(first_vertex.begin(), first_vertex.end(), q) -
+                                  first_vertex.begin() - 1);
 }
 
 bool passes_through(const PlacedObjects& objects, std::size_t k, const RayTracer& room) {

@@ -41,6 +41,10 @@ struct PlacedObjects {
   std::vector<std::uint32_t> triangle_object;  // per triangle: its object
   std::vector<BoundingSphere> bounds;          // per object; radius 0 when hidden
   RayTracer tracer;                            // over `triangles` (ids: index into triangles)
+  std::vector<RayTracer> own;                  // per object, over its triangles alone (same ids)
+
+  // The object vertex q belongs to.
+  std::size_t object_of_vertex(std::size_t q) const;
 
   std::size_t vertex_count() const { return positions.size(); }
   std::size_t object_count() const { return bounds.size(); }

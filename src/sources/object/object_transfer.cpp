@@ -116,99 +116,130 @@ double sphere_share(Vec3 origin, Vec3 normal, const BoundingSphere& s) {
 
 namespace {
 
-// The correction row of room receiver r: rays over each visible object's cone.
-void trace_room_row(const RuntimeScene& room, const PlacedObjects& objects,
-                    const ObjectTransferSettings& settings, std::size_t r, RowScratch& scratch,
-                    Chunk& chunk) {
-  const Vec3 n = room.normal(r);
-  const Vec3 origin = offset_from_surface(room.ray_point(r), n);
-  const auto row = static_cast<std::uint32_t>(r);
-  for (std::size_t k = 0; k < objects.object_count(); ++k) {
-    if (!objects.visible(k)) continue;
-    const BoundingSphere& s = objects.bounds[k];
-    const Vec3 to_centre = s.centre - origin;
-    const double d = length(to_centre);
-    const bool inside = d <= s.radius;
-    double cos_alpha = -1, omega = 2 * kPi;  // inside: the whole hemisphere (cosine-sampled)
-    const double share = sphere_share(origin, n, s);
-    Vec3 axis = n;
-    if (!inside) {
-      if (share < settings.cull) continue;
-      const double sin_alpha = s.radius / d;
-      cos_alpha = std::sqrt(std::max(0.0, 1 - sin_alpha * sin_alpha));
-      axis = to_centre / d;
-      omega = 2 * kPi * (1 - cos_alpha);
+// Where row `row` gathers from: a room receiver (row < R) or object vertex row − R.
+struct Origin {
+  Vec3 point, normal;
+  std::size_t own = kNone;  // the object the vertex belongs to; kNone for a room receiver
+  bool sensor = false;
+  static constexpr std::size_t kNone = ~std::size_t{0};
+};
+
+Origin origin_of(const RuntimeScene& room, const PlacedObjects& objects, std::size_t row) {
+  const std::size_t receivers = room.receivers();
+  if (row < receivers) {
+    const Vec3 n = room.normal(row);
+    return {offset_from_surface(room.ray_point(row), n), n, Origin::kNone,
+            row >= room.vertex_count()};
+  }
+  const std::size_t q = row - receivers;
+  const Vec3 n = objects.normals[q];
+  return {offset_from_surface(objects.ray_points[q], n), n, objects.object_of_vertex(q), false};
+}
+
+// What the base row of `o` saw along `ray`: the room (opaque or glass), and for an object
+// vertex its own object too.
+FirstHit base_hit(const RuntimeScene& room, const PlacedObjects& objects, const Origin& o,
+                  const Ray& ray) {
+  FirstHit h = room_hit(room, ray);
+  if (o.own != Origin::kNone) {
+    const RayHit self = objects.own[o.own].intersect(
+        {ray.origin, ray.direction, 0, h.kind != FirstHit::kNothing ? h.hit.t : ray.t_far});
+    if (self.hit()) h = {FirstHit::kObject, self};
+  }
+  return h;
+}
+
+// Row `row` of object k's cone rows: rays over the cone of k's bounding sphere.
+void trace_cone_row(const RuntimeScene& room, const PlacedObjects& objects,
+                    const ObjectTransferSettings& settings, std::size_t k, std::size_t row,
+                    RowScratch& scratch, Chunk& chunk) {
+  const Origin o = origin_of(room, objects, row);
+  if (!objects.visible(k) || o.own == k || (o.own != Origin::kNone && !objects.visible(o.own))) {
+    scratch.flush(chunk);
+    return;
+  }
+  const BoundingSphere& s = objects.bounds[k];
+  const Vec3 to_centre = s.centre - o.point;
+  const double d = length(to_centre);
+  const bool inside = d <= s.radius;
+  const double share = sphere_share(o.point, o.normal, s);
+  if (!inside && share < settings.cull) {
+    scratch.flush(chunk);
+    return;
+  }
+  double cos_alpha = -1, omega = 2 * kPi;  // inside: the whole hemisphere (cosine-sampled)
+  Vec3 axis = o.normal;
+  if (!inside) {
+    const double sin_alpha = s.radius / d;
+    cos_alpha = std::sqrt(std::max(0.0, 1 - sin_alpha * sin_alpha));
+    axis = to_centre / d;
+    omega = 2 * kPi * (1 - cos_alpha);
+  }
+  // A sensor's reading is its own row, not smoothed between vertices: it gets more rays.
+  const int scale = o.sensor ? settings.sensor_ray_factor : 1;
+  const int rays =
+      scale *
+      (inside ? settings.cone_rays_max
+              : std::clamp(static_cast<int>(std::ceil(share * settings.cone_rays_per_hemisphere)),
+                           settings.cone_rays_min, settings.cone_rays_max));
+  Pcg32 rng(kConeSeed + k, row);
+  const std::uint32_t s1 = rng.next_u32(), s2 = rng.next_u32();
+  const Frame frame = frame_from_normal(axis);
+  const auto out_row = static_cast<std::uint32_t>(row);
+  for (int i = 0; i < rays; ++i) {
+    const auto index = static_cast<std::uint32_t>(i);
+    const double u1 = unit_interval(van_der_corput(index, s1));
+    const double u2 = unit_interval(sobol2(index, s2));
+    Vec3 dir;
+    double weight = 0;
+    if (inside) {
+      dir = frame.to_world(sample_cosine_hemisphere(u1, u2));
+      weight = 1.0 / rays;
+    } else {
+      const double cos_t = 1 - u1 * (1 - cos_alpha);
+      const double sin_t = std::sqrt(std::max(0.0, 1 - cos_t * cos_t));
+      const double phi = 2 * kPi * u2;
+      dir = frame.to_world({sin_t * std::cos(phi), sin_t * std::sin(phi), cos_t});
+      weight = omega / rays * std::max(0.0, dot(o.normal, dir)) / kPi;
+      if (weight <= 0) continue;
     }
-    // A sensor's reading is its own row, not smoothed between vertices: it gets more rays.
-    const int scale = r < room.vertex_count() ? 1 : settings.sensor_ray_factor;
-    const int rays =
-        scale *
-        (inside ? settings.cone_rays_max
-                : std::clamp(static_cast<int>(std::ceil(share * settings.cone_rays_per_hemisphere)),
-                             settings.cone_rays_min, settings.cone_rays_max));
-    Pcg32 rng(kConeSeed + k, r);
-    const std::uint32_t s1 = rng.next_u32(), s2 = rng.next_u32();
-    const Frame frame = frame_from_normal(axis);
-    for (int i = 0; i < rays; ++i) {
-      const auto index = static_cast<std::uint32_t>(i);
-      const double u1 = unit_interval(van_der_corput(index, s1));
-      const double u2 = unit_interval(sobol2(index, s2));
-      Vec3 dir;
-      double weight = 0;
-      if (inside) {
-        dir = frame.to_world(sample_cosine_hemisphere(u1, u2));
-        weight = 1.0 / rays;
-      } else {
-        const double cos_t = 1 - u1 * (1 - cos_alpha);
-        const double sin_t = std::sqrt(std::max(0.0, 1 - cos_t * cos_t));
-        const double phi = 2 * kPi * u2;
-        dir = frame.to_world({sin_t * std::cos(phi), sin_t * std::sin(phi), cos_t});
-        weight = omega / rays * std::max(0.0, dot(n, dir)) / kPi;
-        if (weight <= 0) continue;
-      }
-      ++chunk.rays;
-      const Ray ray{origin, dir};
-      const RayHit object = objects.tracer.intersect(ray);
-      if (!object.hit() || objects.triangle_object[object.triangle] != k) continue;
-      const FirstHit before = room_hit(room, ray);
-      chunk.rays += 2;
-      if (before.kind != FirstHit::kNothing && before.hit.t <= object.t) continue;  // hidden
-      add_hit(room, objects, {FirstHit::kObject, object}, ray, weight, row, scratch, chunk);
-      add_hit(room, objects, before, ray, -weight, row, scratch, chunk);
-    }
+    ++chunk.rays;
+    const Ray ray{o.point, dir};
+    // Counted only for the first object it meets (the partition among overlapping cones); a
+    // vertex's own object is its base row's.
+    const RayHit object = objects.tracer.intersect(ray);
+    if (!object.hit() || objects.triangle_object[object.triangle] != k) continue;
+    const FirstHit before = base_hit(room, objects, o, ray);
+    chunk.rays += 2;
+    if (before.kind != FirstHit::kNothing && before.hit.t <= object.t) continue;  // hidden
+    add_hit(room, objects, {FirstHit::kObject, object}, ray, weight, out_row, scratch, chunk);
+    add_hit(room, objects, before, ray, -weight, out_row, scratch, chunk);
   }
   scratch.flush(chunk);
 }
 
-// The whole gather row of object vertex q.
-void trace_object_row(const RuntimeScene& room, const PlacedObjects& objects,
-                      const ObjectTransferSettings& settings, std::size_t q, RowScratch& scratch,
-                      Chunk& chunk) {
-  const auto object = static_cast<std::size_t>(
-      std::upper_bound(objects.first_vertex.begin(), objects.first_vertex.end(), q) -
-      objects.first_vertex.begin() - 1);
-  if (!objects.visible(object)) {  // a hidden object gathers nothing
+// The base row of object vertex q: cosine-distributed rays against the room and its own object.
+void trace_base_row(const RuntimeScene& room, const PlacedObjects& objects,
+                    const ObjectTransferSettings& settings, std::size_t q, RowScratch& scratch,
+                    Chunk& chunk) {
+  const Origin o = origin_of(room, objects, room.receivers() + q);
+  if (!objects.visible(o.own)) {  // a hidden object gathers nothing
     scratch.flush(chunk);
     return;
   }
-  const Vec3 n = objects.normals[q];
-  const Vec3 origin = offset_from_surface(objects.ray_points[q], n);
   Pcg32 rng(kObjectSeed, q);
   const std::uint32_t s1 = rng.next_u32(), s2 = rng.next_u32();
-  const Frame frame = frame_from_normal(n);
+  const Frame frame = frame_from_normal(o.normal);
   const int rays = settings.object_rays;
   const double weight = 1.0 / rays;
   for (int i = 0; i < rays; ++i) {
     const auto index = static_cast<std::uint32_t>(i);
     const Vec3 dir = frame.to_world(sample_cosine_hemisphere(
         unit_interval(van_der_corput(index, s1)), unit_interval(sobol2(index, s2))));
-    const Ray ray{origin, dir};
-    FirstHit h = room_hit(room, ray);
-    const RayHit seen = objects.tracer.intersect(
-        {origin, dir, 0, h.kind != FirstHit::kNothing ? h.hit.t : ray.t_far});
-    if (seen.hit()) h = {FirstHit::kObject, seen};
+    const Ray ray{o.point, dir};
     chunk.rays += 2;
-    add_hit(room, objects, h, ray, weight, static_cast<std::uint32_t>(q), scratch, chunk);
+    add_hit(room, objects, base_hit(room, objects, o, ray), ray, weight,
+            static_cast<std::uint32_t>(q), scratch, chunk);
   }
   scratch.flush(chunk);
 }
@@ -248,10 +279,11 @@ ObjectRows trace_rows(std::size_t count, const std::vector<std::uint32_t>* rows,
   return out;
 }
 
-// `rows` with the rows listed in `redo` replaced by those of `traced` (in the order of `redo`,
-// which is ascending); glass hits likewise.
+// `rows` with the rows listed in `redo` (ascending) replaced by those of `traced` (in the order
+// of `redo`); glass hits likewise.
 ObjectRows splice(const ObjectRows& rows, const std::vector<std::uint32_t>& redo,
                   const ObjectRows& traced) {
+  if (redo.empty()) return rows;
   ObjectRows out;
   out.first.reserve(rows.first.size());
   out.columns.reserve(rows.columns.size() + traced.columns.size());
@@ -276,23 +308,37 @@ ObjectRows splice(const ObjectRows& rows, const std::vector<std::uint32_t>& redo
   return out;
 }
 
+// Whether the cone from `o` toward sphere a may meet sphere b (they overlap as seen from o).
+bool cones_overlap(Vec3 o, const BoundingSphere& a, const BoundingSphere& b) {
+  if (a.radius <= 0 || b.radius <= 0) return false;
+  const Vec3 da = a.centre - o, db = b.centre - o;
+  const double la = length(da), lb = length(db);
+  if (la <= a.radius || lb <= b.radius) return true;
+  const double angle = std::acos(std::clamp(dot(da, db) / (la * lb), -1.0, 1.0));
+  return angle <= std::asin(a.radius / la) + std::asin(b.radius / lb);
+}
+
 }  // namespace
 
 ObjectTransfer trace_object_transfer(const RuntimeScene& room, const PlacedObjects& objects,
                                      const ObjectTransferSettings& settings) {
   ObjectTransfer t;
-  t.room = trace_rows(
-      room.receivers(), nullptr,
-      [&](std::size_t r, RowScratch& scratch, Chunk& chunk) {
-        trace_room_row(room, objects, settings, r, scratch, chunk);
-      },
-      t.rays);
-  t.objects = trace_rows(
+  const std::size_t rows = room.receivers() + objects.vertex_count();
+  for (std::size_t k = 0; k < objects.object_count(); ++k) {
+    t.cones.push_back(trace_rows(
+        rows, nullptr,
+        [&](std::size_t row, RowScratch& scratch, Chunk& chunk) {
+          trace_cone_row(room, objects, settings, k, row, scratch, chunk);
+        },
+        t.rays));
+  }
+  t.base = trace_rows(
       objects.vertex_count(), nullptr,
       [&](std::size_t q, RowScratch& scratch, Chunk& chunk) {
-        trace_object_row(room, objects, settings, q, scratch, chunk);
+        trace_base_row(room, objects, settings, q, scratch, chunk);
       },
       t.rays);
+  t.retraced_rows = (objects.object_count() + 1) * rows;
   return t;
 }
 
@@ -300,46 +346,52 @@ void retrace_object_transfer(ObjectTransfer& t, const RuntimeScene& room,
                              const PlacedObjects& objects, const ObjectTransferSettings& settings,
                              std::span<const std::uint32_t> moved,
                              std::span<const BoundingSphere> before) {
-  // Whether a moved object, where it was or where it is, matters from a point.
-  const auto touched = [&](Vec3 point, Vec3 normal) {
-    const Vec3 origin = offset_from_surface(point, normal);
-    for (std::size_t i = 0; i < moved.size(); ++i) {
-      if (sphere_share(origin, normal, before[i]) >= settings.cull ||
-          sphere_share(origin, normal, objects.bounds[moved[i]]) >= settings.cull) {
-        return true;
-      }
-    }
-    return false;
-  };
-  std::vector<std::uint32_t> room_rows, object_rows;
-  for (std::size_t r = 0; r < room.receivers(); ++r) {
-    if (touched(room.ray_point(r), room.normal(r)))
-      room_rows.push_back(static_cast<std::uint32_t>(r));
-  }
+  const std::size_t receivers = room.receivers(), rows = receivers + objects.vertex_count();
   std::vector<bool> is_moved(objects.object_count(), false);
   for (const std::uint32_t k : moved) is_moved[k] = true;
-  for (std::size_t k = 0; k < objects.object_count(); ++k) {
-    for (std::uint32_t q = objects.first_vertex[k]; q < objects.first_vertex[k + 1]; ++q) {
-      if (is_moved[k] || touched(objects.ray_points[q], objects.normals[q]))
-        object_rows.push_back(q);
-    }
+  // Rows whose origin moved: the vertices of moved objects.
+  std::vector<bool> origin_moved(rows, false);
+  for (std::size_t q = 0; q < objects.vertex_count(); ++q) {
+    origin_moved[receivers + q] = is_moved[objects.object_of_vertex(q)];
   }
   t.rays = 0;
-  const ObjectRows room_traced = trace_rows(
-      0, &room_rows,
-      [&](std::size_t r, RowScratch& scratch, Chunk& chunk) {
-        trace_room_row(room, objects, settings, r, scratch, chunk);
-      },
-      t.rays);
-  const ObjectRows object_traced = trace_rows(
-      0, &object_rows,
+  t.retraced_rows = 0;
+  for (std::size_t k = 0; k < objects.object_count(); ++k) {
+    // A moved object's cone rows all; another's where its cone may meet a moved object, before
+    // or now (the first object a ray meets may have changed), or whose origin moved.
+    std::vector<std::uint32_t> redo;
+    for (std::size_t row = 0; row < rows; ++row) {
+      bool again = is_moved[k] || origin_moved[row];
+      if (!again && objects.visible(k)) {
+        const Vec3 o = origin_of(room, objects, row).point;
+        for (std::size_t i = 0; i < moved.size() && !again; ++i) {
+          again = cones_overlap(o, objects.bounds[k], before[i]) ||
+                  cones_overlap(o, objects.bounds[k], objects.bounds[moved[i]]);
+        }
+      }
+      if (again) redo.push_back(static_cast<std::uint32_t>(row));
+    }
+    const ObjectRows traced = trace_rows(
+        0, &redo,
+        [&](std::size_t row, RowScratch& scratch, Chunk& chunk) {
+          trace_cone_row(room, objects, settings, k, row, scratch, chunk);
+        },
+        t.rays);
+    t.cones[k] = splice(t.cones[k], redo, traced);
+    t.retraced_rows += redo.size();
+  }
+  std::vector<std::uint32_t> redo;
+  for (std::size_t q = 0; q < objects.vertex_count(); ++q) {
+    if (origin_moved[receivers + q]) redo.push_back(static_cast<std::uint32_t>(q));
+  }
+  const ObjectRows traced = trace_rows(
+      0, &redo,
       [&](std::size_t q, RowScratch& scratch, Chunk& chunk) {
-        trace_object_row(room, objects, settings, q, scratch, chunk);
+        trace_base_row(room, objects, settings, q, scratch, chunk);
       },
       t.rays);
-  t.room = splice(t.room, room_rows, room_traced);
-  t.objects = splice(t.objects, object_rows, object_traced);
-  t.retraced_rows = room_rows.size() + object_rows.size();
+  t.base = splice(t.base, redo, traced);
+  t.retraced_rows += redo.size();
 }
 
 }  // namespace relight

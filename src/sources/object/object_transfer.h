@@ -12,11 +12,13 @@
 //    triangle behind it (or, when the empty room showed a window there, −w times the light
 //    through the glass). Counting a ray only for the first object it meets partitions the
 //    directions among objects whose cones overlap, so none is counted twice.
-//  * object vertices: the whole gather row, cosine-distributed rays against the room, the
-//    glass and every placed object (the objects' own G rows).
+//  * object vertices: a base row, cosine-distributed rays against the room, the glass and the
+//    vertex's own object (traced when that object moves), and the same cone rows toward every
+//    other object, "what the base row saw" being the room or its own object.
 //
 // With reflected light R = ρE per column, the irradiance gathered at a room receiver r is then
-// (G·R)[r] + (C·R)[r] and at an object vertex (H·R)[q] — the same estimator as the stored G
+// (G·R)[r] + Σ_k (C_k·R)[r] and at an object vertex (B·R)[q] + Σ_k (C_k·R)[R + q] (H, the
+// objects' rows) — the same estimator as the stored G
 // (π times the mean luminance over cosine-distributed directions), restricted to the
 // directions that changed. Columns are unified: room vertex v is column v, object vertex q
 // column V + q.
@@ -68,11 +70,17 @@ struct ObjectRows {
   std::size_t rows() const { return first.size() - 1; }
 };
 
+// Rows are numbered over every receiver that gathers: the room's receivers (vertices, then
+// sensors), then the object vertices (PlacedObjects order): row R + q for vertex q.
 struct ObjectTransfer {
-  ObjectRows room;                // C: one row per room receiver (vertices, then sensors)
-  ObjectRows objects;             // H: one row per object vertex
+  // Per object k, one row per receiver: what k changes in what that receiver gathers (C_k;
+  // empty rows for k's own vertices, which see their object in their base row).
+  std::vector<ObjectRows> cones;
+  // One row per object vertex: its gather of the room and of its own object (traced when the
+  // object moves); the other objects come in through `cones`.
+  ObjectRows base;
   std::uint64_t rays = 0;         // traced by the last trace or retrace
-  std::size_t retraced_rows = 0;  // by the last retrace
+  std::size_t retraced_rows = 0;  // rows (of cones and base) traced by it
 };
 
 // Of a receiver at `origin` (already off its surface) with unit normal `normal`: the share of
@@ -84,11 +92,11 @@ ObjectTransfer trace_object_transfer(const RuntimeScene& room, const PlacedObjec
                                      const ObjectTransferSettings& settings);
 
 // After objects `moved` moved (or were hidden or shown; `before[i]` the sphere of moved[i]
-// before, radius 0 when it was hidden): retraces the rows a move can change — every vertex row
-// of a moved object, and every row, room or object, from which a moved object's sphere before
-// or now covers at least `cull` of the hemisphere — and keeps the others. A row left alone can
-// still miss a moved object that passes in front of another object's cone while covering less
-// than `cull` of its hemisphere (< 0.1 % of what it gathers).
+// before, radius 0 when it was hidden): retraces what a move can change — every cone row of a
+// moved object, every row whose origin moved (the moved objects' vertices: their cone rows and
+// base rows), and the rows of another object's cone that may meet a moved object's sphere,
+// before or now (which object a ray meets first may have changed) — and keeps the rest. A drag
+// traces about one object's share of the rays, not all of them.
 void retrace_object_transfer(ObjectTransfer& transfer, const RuntimeScene& room,
                              const PlacedObjects& objects, const ObjectTransferSettings& settings,
                              std::span<const std::uint32_t> moved,
