@@ -55,6 +55,13 @@ void add_info_command(CLI::App& app, Action& action) {
       if (!scene.exterior.empty()) {
         std::cout << "exterior objects: " << scene.exterior.size() << "\n";
       }
+      for (const MovableObject& o : scene.objects) {
+        char line[256];
+        std::snprintf(line, sizeof line,
+                      "  movable object %s: %zu triangles, pivot [%.4g, %.4g, %.4g]\n",
+                      o.name.c_str(), o.geometry.triangles.size(), o.pivot.x, o.pivot.y, o.pivot.z);
+        std::cout << line;
+      }
       for (const std::string& w : shell_size_warnings(scene, geometry)) {
         std::cerr << "warning: " << w << "\n";
       }

@@ -261,28 +261,16 @@ export class EmitterMarkers {
     return best;
   }
 
-  // Where the ray through canvas point (x, y) meets the plane y = height, or null.
-  _onPlane(x, y, height) {
-    const { origin, direction } = this.viewer.rayAt(x, y);
-    if (Math.abs(direction[1]) < 1e-6) return null;
-    const t = (height - origin[1]) / direction[1];
-    if (!(t > 0)) return null;
-    return [origin[0] + t * direction[0], origin[2] + t * direction[2]];
-  }
-
   _installDrag(stage) {
     const canvas = this.viewer.canvas;
-    const local = (e) => {
-      const r = canvas.getBoundingClientRect();
-      return [e.clientX - r.left, e.clientY - r.top];
-    };
+    const local = (e) => this.viewer.canvasPoint(e);
     stage.addEventListener('pointerdown', (e) => {
       if (e.button !== 0 || e.target !== canvas || this.drag) return;
       const [x, y] = local(e);
       const i = this._hit(x, y);
       if (i < 0) return;
       const eff = this.effective(i);
-      const grab = this._onPlane(x, y, eff.position[1]);
+      const grab = this.viewer.onPlane(x, y, eff.position[1]);
       if (!grab) return;
       e.stopPropagation();
       e.preventDefault();
@@ -322,7 +310,7 @@ export class EmitterMarkers {
     const d = this.drag;
     const it = this.items[d.i];
     const eff = this.effective(d.i);
-    const at = this._onPlane(x, y, eff.position[1]);
+    const at = this.viewer.onPlane(x, y, eff.position[1]);
     if (!at) return;
     const b = this.hello.bounds;
     const clamp = (v, k) => (b ? Math.min(Math.max(v, b.min[k] - it.em.size), b.max[k] + it.em.size) : v);

@@ -336,21 +336,9 @@ export class ObjectsView {
     return { i: h.object.userData.objectIndex, distance: h.distance };
   }
 
-  // Where the ray through canvas point (x, y) meets the plane y = height, or null.
-  _onPlane(x, y, height) {
-    const { origin, direction } = this.viewer.rayAt(x, y);
-    if (Math.abs(direction[1]) < 1e-6) return null;
-    const t = (height - origin[1]) / direction[1];
-    if (!(t > 0)) return null;
-    return [origin[0] + t * direction[0], origin[2] + t * direction[2]];
-  }
-
   _installPointer(stage) {
     const canvas = this.viewer.canvas;
-    const local = (e) => {
-      const r = canvas.getBoundingClientRect();
-      return [e.clientX - r.left, e.clientY - r.top];
-    };
+    const local = (e) => this.viewer.canvasPoint(e);
     stage.addEventListener('pointerdown', (e) => {
       // (defaultPrevented: an emitter's marker took this press)
       if (e.button !== 0 || e.target !== canvas || this.drag || e.defaultPrevented || this.busy()) return;
@@ -362,7 +350,7 @@ export class ObjectsView {
       stage.setPointerCapture(e.pointerId);
       const eff = this.effective(hit.i);
       const bottom = this.items[hit.i].box.min.y + eff.translate[1];
-      const grab = this._onPlane(x, y, bottom);
+      const grab = this.viewer.onPlane(x, y, bottom);
       this.drag = {
         i: hit.i,
         pointerId: e.pointerId,
@@ -437,7 +425,7 @@ export class ObjectsView {
     const d = this.drag;
     if (!d.offset) return;
     const it = this.items[d.i];
-    const at = this._onPlane(x, y, d.bottom);
+    const at = this.viewer.onPlane(x, y, d.bottom);
     if (!at) return;
     const b = this.hello.bounds;
     const clamp = (v, k) => (b ? Math.min(Math.max(v, b.min[k]), b.max[k]) : v);

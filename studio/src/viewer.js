@@ -166,6 +166,22 @@ export class Viewer {
   }
 
   // A camera ray through the canvas pixel (x, y) in CSS pixels from the top left.
+  // Where the ray through canvas point (x, y) meets the horizontal plane at `height`, as
+  // [x, z], or null (parallel, or behind the camera): dragging things along the floor.
+  onPlane(x, y, height) {
+    const { origin, direction } = this.rayAt(x, y);
+    if (Math.abs(direction[1]) < 1e-6) return null;
+    const t = (height - origin[1]) / direction[1];
+    if (!(t > 0)) return null;
+    return [origin[0] + t * direction[0], origin[2] + t * direction[2]];
+  }
+
+  // A pointer event's position in canvas pixels.
+  canvasPoint(e) {
+    const r = this.canvas.getBoundingClientRect();
+    return [e.clientX - r.left, e.clientY - r.top];
+  }
+
   rayAt(x, y) {
     const ndc = new THREE.Vector2((x / this.width) * 2 - 1, -(y / this.height) * 2 + 1);
     const ray = new THREE.Raycaster();

@@ -35,6 +35,7 @@
 #include "scene/scene_loader.h"
 #include "sources/precompute.h"
 #include "sources/transfer_file.h"
+#include "support/daylight_harness.h"
 #include "support/temp_dir.h"
 #include "trace/traced_scene.h"
 
@@ -42,20 +43,10 @@ namespace relight {
 namespace {
 
 using nlohmann::json;
+using testing::grid;
 
 constexpr int kReferenceSpp = 16384;
 const std::string kIes = RELIGHT_SHARED_DIR "/data/photometry/photometric-viewer/ies/";
-
-json grid(const std::string& name, Vec3 corner, Vec3 u, Vec3 v, int nu, int nv, Vec3 normal) {
-  return {{"name", name},
-          {"grid",
-           {{"corner", {corner.x, corner.y, corner.z}},
-            {"u", {u.x, u.y, u.z}},
-            {"v", {v.x, v.y, v.z}},
-            {"nu", nu},
-            {"nv", nv}}},
-          {"normal", {normal.x, normal.y, normal.z}}};
-}
 
 json box(Vec3 lo, Vec3 hi, const std::string& material) {
   return {{"type", "box"},
