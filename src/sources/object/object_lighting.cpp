@@ -206,7 +206,7 @@ void ObjectLighting::update(const ObjectLightInputs& in, bool light_changed) {
   };
   const auto add_static = [&](const ObjectRows& rows, std::size_t i, float* d) {
     for (std::size_t e = rows.first[i]; e < rows.first[i + 1]; ++e) {
-      const std::uint32_t c = rows.columns[e];
+      const std::size_t c = rows.columns[e];
       if (c >= vertices) continue;  // objects have no light in E0
       for (std::size_t k = 0; k < 3; ++k) {
         d[k] += rows.values[e] * albedo_[3 * c + k] * in.room[3 * c + k];

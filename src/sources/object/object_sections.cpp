@@ -106,7 +106,7 @@ std::vector<ObjectMesh> read_object_sections(const RltFile& file, const Scene& s
 }
 
 std::size_t object_section_bytes(const ObjectMesh& o) {
-  return o.positions.size() * (4 * 3 * sizeof(float)) +
+  return o.positions.size() * 4 * 3 * sizeof(float) +
          o.triangles.size() * 3 * sizeof(std::uint32_t) + 2 * sizeof(std::uint32_t) +
          3 * sizeof(float);
 }
