@@ -22,7 +22,7 @@
 //
 // The near-field emitters' direct light is not yet shadowed by objects (their light reaches the
 // objects through the bounce only); see docs/design-notes.md ("Movable objects").
-// Pinned by tests/sources/object/object_lighting_test.cpp and
+// Pinned by tests/runtime/object_transfer_test.cpp and
 // tests/render/object_accuracy_test.cpp.
 #pragma once
 

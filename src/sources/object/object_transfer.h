@@ -29,7 +29,7 @@
 // objects"). The paper's culling of small contributions (§5.4) is kept: a receiver spends
 // rays on an object in proportion to the object's cosine-weighted share of its hemisphere,
 // and none when that share is below `cull`. Pinned by
-// tests/sources/object/object_transfer_test.cpp.
+// tests/runtime/object_transfer_test.cpp.
 #pragma once
 
 #include <cstdint>
