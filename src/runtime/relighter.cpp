@@ -78,8 +78,10 @@ void Relighter::update_objects() {
   const std::vector<LuminaireLight> lights = luminaires_.lights(luminaire_specs_);
   const std::vector<LuminaireLight> sensor_lights =
       luminaires_.lights(luminaire_specs_, kSensorOpeningSamples);
-  ObjectLightInputs in{room_light_, lights, sensor_lights, portals_.suns(), std::nullopt, {}};
+  ObjectLightInputs in{room_light_, lights, sensor_lights, portals_.suns(), std::nullopt,
+                       nullptr,     {}};
   if (!portals_.suns().empty()) in.sun_geometry.emplace(portals_.sun_geometry());
+  if (emitters_) in.emitters = &emitters_->placed();
   if (portals_.size() > 0) {
     in.glass = [this](std::uint32_t p, Vec3 direction) {
       const Shell& shell = portals_.portal(p).shell;

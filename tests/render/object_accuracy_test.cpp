@@ -33,6 +33,7 @@
 #include "runtime/relighter.h"
 #include "runtime/relit_scene.h"
 #include "scene/scene_loader.h"
+#include "sources/nearfield/emitter_placement.h"
 #include "sources/precompute.h"
 #include "sources/transfer_file.h"
 #include "support/daylight_harness.h"
@@ -327,6 +328,70 @@ TEST_F(ObjectAccuracy, AnImageOfMovedObjectsIsWithinThreeHundredthsRmsOfTheRefer
   RecordProperty("rms_display_difference", std::to_string(rms));
   EXPECT_GT(n, static_cast<std::size_t>(3 * kWidth * kHeight / 2));
   EXPECT_LT(rms, 0.03);
+}
+
+// A near-field emitter (Sun 2005's panel) over a table that a state moves: the table's shadow
+// on the floor, traced exactly per sensor through room and objects, and its bounce, against
+// the reference (which places both).
+TEST(ObjectEmitters, AnEmitterOverAMovedTableShadowsTheFloorAsTheReferenceDoes) {
+  const json document = {
+      {"materials",
+       {{"wall", {{"albedo", {0.6, 0.6, 0.6}}}}, {"table", {{"albedo", {0.7, 0.5, 0.3}}}}}},
+      {"geometry",
+       {{{"type", "box"},
+         {"min", {0, 0, 0}},
+         {"max", {3, 2.5, 3}},
+         {"normals", "inward"},
+         {"material", "wall"}}}},
+      {"objects",
+       {{{"name", "table"}, {"geometry", {box({1.0, 0.7, 1.0}, {2.0, 0.75, 2.0}, "table")}}}}},
+      {"emitters",
+       {{{"name", "panel"},
+         {"luminance", 2000},
+         {"geometry",
+          {{"type", "quad"},
+           {"corner", {1.3, 1.6, 1.3}},
+           {"u", {0.4, 0, 0}},
+           {"v", {0, 0, 0.4}}}}}}},
+      {"sensors", {grid("floor", {0.1, 0.001, 0.1}, {2.8, 0, 0}, {0, 0, 2.8}, 7, 7, {0, 1, 0})}},
+      {"precompute",
+       {{"max_edge", 0.2},
+        {"gather_rays", 128},
+        {"sensor_gather_rays", 1024},
+        {"nearfield_interreflection", true}}}};
+  const Scene scene = scene_from_json(document, "emitter.json");
+  const Precomputed p = precompute(scene);
+  Relighter relighter(in_memory_view(p), scene);
+  const LightingState state =
+      state_of(scene, {{"objects", {{"table", {{"translate", {0.4, 0, 0.2}}}}}}});
+  const std::vector<Rgb> run_time = sensors(relighter, p, state);
+  const Scene placed = scene_with_state(scene, state);
+  const PreparedMesh mesh = prepare_mesh(placed.geometry, PreparationSettings{});
+  const TracedScene traced = build_traced_scene(mesh, placed.materials);
+  ReferenceSettings settings;
+  settings.spp = kReferenceSpp;
+  settings.seed = 7;
+  settings.progress = false;
+  const std::vector<Rgb> ref = reference_sensor_illuminance(
+      placed,
+      make_reference_scene(placed, mesh, traced, place_luminaires(placed), {},
+                           place_emitters(placed.emitters, state.emitters)),
+      settings);
+  double mean = 0, worst = 0, darkest = 1e300, brightest = 0;
+  for (std::size_t i = 0; i < ref.size(); ++i) {
+    const double rel = std::abs(luminance(run_time[i]) / luminance(ref[i]) - 1);
+    mean += rel / static_cast<double>(ref.size());
+    worst = std::max(worst, rel);
+    darkest = std::min(darkest, luminance(ref[i]));
+    brightest = std::max(brightest, luminance(ref[i]));
+  }
+  std::printf(
+      "floor under an emitter and a moved table: mean %.4f, worst %.4f (reference %.1f to "
+      "%.1f lx)\n",
+      mean, worst, darkest, brightest);
+  EXPECT_GT(brightest, 1.5 * darkest);  // the shadow is there
+  EXPECT_LT(mean, 0.02);
+  EXPECT_LT(worst, 0.08);
 }
 
 // Flux absorbed by a mesh whose irradiance is linear over each triangle:

@@ -7,6 +7,8 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "sources/nearfield/emitter_direct.h"
+
 namespace relight {
 
 namespace {
@@ -96,6 +98,28 @@ void ObjectLighting::trace_direct(const ObjectLightInputs& in, bool all) {
   if (in.sun_geometry)
     sun_with.emplace(SunGeometry{with, in.sun_geometry->glass, in.sun_geometry->portals});
   const bool suns = in.sun_geometry.has_value() && !in.suns.empty();
+  // Spheres around each near-field emitter's triangles (its shadow rays end on them).
+  std::vector<BoundingSphere> emitter_spheres;
+  if (in.emitters != nullptr && !in.emitters->positions.empty()) {
+    for (std::size_t e = 0; e < in.emitters->radiance.size(); ++e) {
+      std::vector<Vec3> points;
+      for (std::size_t t = 0; t < in.emitters->triangles.size(); ++t) {
+        if (in.emitters->emitter_of_triangle[t] != e) continue;
+        for (const std::uint32_t v : in.emitters->triangles[t]) {
+          points.push_back(in.emitters->positions[v]);
+        }
+      }
+      if (points.empty()) continue;
+      Vec3 lo = points.front(), hi = lo;
+      for (const Vec3& q : points) {
+        lo = min(lo, q);
+        hi = max(hi, q);
+      }
+      BoundingSphere s{(lo + hi) * 0.5, 0};
+      for (const Vec3& q : points) s.radius = std::max(s.radius, length(q - s.centre));
+      emitter_spheres.push_back(s);
+    }
+  }
   // How far each luminaire's opening reaches from its centre.
   std::vector<double> reach;
   for (const LuminaireLight& l : in.luminaires) {
@@ -103,10 +127,17 @@ void ObjectLighting::trace_direct(const ObjectLightInputs& in, bool all) {
     for (const Vec3& o : l.opening) r = std::max(r, length(o));
     reach.push_back(r);
   }
+  // A sensor's penumbrae are sampled finer (256 points on each luminous opening and emitter
+  // triangle, 16 at vertices): its reading is not averaged between vertices.
   const auto direct_at = [&](const Occluders& occluders, const std::optional<SunGeometry>& sun,
-                             Vec3 p, Vec3 n, std::span<const LuminaireLight> luminaires) {
-    Rgb e = luminaire_direct_irradiance(occluders, luminaires, p, n);
+                             Vec3 p, Vec3 n, bool sensor) {
+    const bool fine = sensor && in.sensor_luminaires.size() == in.luminaires.size();
+    Rgb e =
+        luminaire_direct_irradiance(occluders, fine ? in.sensor_luminaires : in.luminaires, p, n);
     if (suns) e += sun_irradiance(*sun, in.suns, p, n);
+    if (in.emitters != nullptr) {
+      e += emitter_direct_irradiance(*in.emitters, &occluders, p, n, sensor ? 256 : 16);
+    }
     return e;
   };
   // Whether a shadow ray from x toward a light may pass the sphere s.
@@ -120,6 +151,9 @@ void ObjectLighting::trace_direct(const ObjectLightInputs& in, bool all) {
     }
     for (std::size_t j = 0; suns && j < in.suns.size(); ++j) {
       if (ray_near_sphere(x, in.suns[j].disc.direction, s, 1e-3 + 0.01 * s.radius)) return true;
+    }
+    for (const BoundingSphere& e : emitter_spheres) {
+      if (segment_near_sphere(x, e.centre, s, e.radius)) return true;
     }
     return false;
   };
@@ -145,10 +179,9 @@ void ObjectLighting::trace_direct(const ObjectLightInputs& in, bool all) {
       const Vec3 x = room.ray_point(r), n = room.normal(r);
       if (!redo(x)) continue;
       // A sensor's penumbra is sampled finer: its reading is not averaged between vertices.
-      const std::span<const LuminaireLight> lights =
-          r < vertices || in.sensor_luminaires.empty() ? in.luminaires : in.sensor_luminaires;
-      const Rgb e = direct_at(with, sun_with, x, n, lights) -
-                    direct_at(without, in.sun_geometry, x, n, lights);
+      const bool sensor = r >= vertices;
+      const Rgb e = direct_at(with, sun_with, x, n, sensor) -
+                    direct_at(without, in.sun_geometry, x, n, sensor);
       put(direct_, r < vertices ? r : r + objects, e);
     }
   });
@@ -166,7 +199,7 @@ void ObjectLighting::trace_direct(const ObjectLightInputs& in, bool all) {
                                 } else if (moved || redo(placed_.ray_points[q])) {
                                   put(direct_, vertices + q,
                                       direct_at(with, sun_with, placed_.ray_points[q],
-                                                placed_.normals[q], in.luminaires));
+                                                placed_.normals[q], false));
                                 }
                               }
                             });

@@ -8,8 +8,9 @@
 //
 // solved as one linear system over room and object vertices. With the direct light
 // ΔE_d (at room receivers, what the objects' shadows take away; at object vertices, their
-// whole direct light — luminaires and suns, traced exactly per receiver, through room and
-// objects: sources/luminaire/luminaire_direct.h, sources/portal/portal_sun.h), the stored
+// whole direct light — luminaires, suns and near-field emitters, traced exactly per receiver,
+// through room and objects: sources/luminaire/luminaire_direct.h, sources/portal/portal_sun.h,
+// sources/nearfield/emitter_direct.h), the stored
 // gather operator G of the empty room and the objects' rows C and H (object_transfer.h):
 //
 //   D  = ΔE_d + [C; H] · ρE0 + light through windows the objects gain or hide,
@@ -20,8 +21,6 @@
 // (E0 = E0_d + G ρ E0), E0 + ΔE solves the room with its objects exactly as the stored
 // estimator would. Sensors are gathered once from the converged light.
 //
-// The near-field emitters' direct light is not yet shadowed by objects (their light reaches the
-// objects through the bounce only); see docs/design-notes.md ("Movable objects").
 // Pinned by tests/runtime/object_transfer_test.cpp and
 // tests/render/object_accuracy_test.cpp.
 #pragma once
@@ -37,6 +36,7 @@
 #include "math/placement.h"
 #include "scene/scene.h"
 #include "sources/luminaire/luminaire_direct.h"
+#include "sources/nearfield/emitter_placement.h"
 #include "sources/object/object_mesh.h"
 #include "sources/object/object_transfer.h"
 #include "sources/portal/portal_sun.h"
@@ -54,8 +54,9 @@ struct ObjectLightInputs {
   // The same with more points on each luminous opening, for sensors (empty: `luminaires`).
   std::span<const LuminaireLight> sensor_luminaires;
   std::span<const PortalSun> suns;
-  std::optional<SunGeometry> sun_geometry;  // the room's (set when there are suns)
-  GlassLuminance glass;                     // empty: windows show black
+  std::optional<SunGeometry> sun_geometry;   // the room's (set when there are suns)
+  const PlacedEmitters* emitters = nullptr;  // the near-field emitters as placed; null: none
+  GlassLuminance glass;                      // empty: windows show black
 };
 
 struct ObjectTimings {
