@@ -109,15 +109,7 @@ void ObjectLighting::trace_direct(const ObjectLightInputs& in, bool all) {
           points.push_back(in.emitters->positions[v]);
         }
       }
-      if (points.empty()) continue;
-      Vec3 lo = points.front(), hi = lo;
-      for (const Vec3& q : points) {
-        lo = min(lo, q);
-        hi = max(hi, q);
-      }
-      BoundingSphere s{(lo + hi) * 0.5, 0};
-      for (const Vec3& q : points) s.radius = std::max(s.radius, length(q - s.centre));
-      emitter_spheres.push_back(s);
+      if (!points.empty()) emitter_spheres.push_back(sphere_around(points));
     }
   }
   // How far each luminaire's opening reaches from its centre.

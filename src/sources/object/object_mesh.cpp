@@ -33,10 +33,6 @@ ObjectMesh prepare_object(const Scene& scene, const MovableObject& object) {
   return m;
 }
 
-namespace {
-
-// A sphere around the placed vertices: the centre of their bounding box, the radius to the
-// farthest one.
 BoundingSphere sphere_around(std::span<const Vec3> points) {
   Vec3 lo = points.front(), hi = lo;
   for (const Vec3& p : points) {
@@ -47,8 +43,6 @@ BoundingSphere sphere_around(std::span<const Vec3> points) {
   for (const Vec3& p : points) s.radius = std::max(s.radius, length(p - s.centre));
   return s;
 }
-
-}  // namespace
 
 PlacedObjects place_objects(std::span<const ObjectMesh> objects,
                             std::span<const MovablePlacement> placements) {

@@ -56,6 +56,10 @@ struct PlacedObjects {
 // wall does not count), crosses a triangle of `room`.
 bool passes_through(const PlacedObjects& objects, std::size_t k, const RayTracer& room);
 
+// A sphere around `points` (at least one): the centre of their bounding box, the radius to
+// the farthest one.
+BoundingSphere sphere_around(std::span<const Vec3> points);
+
 // Throws std::invalid_argument when the placements are not one per object.
 PlacedObjects place_objects(std::span<const ObjectMesh> objects,
                             std::span<const MovablePlacement> placements);
