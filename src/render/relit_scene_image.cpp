@@ -2,7 +2,6 @@
 
 #include <optional>
 
-#include "math/cubemap.h"
 #include "render/pixel_direct.h"
 #include "sources/nearfield/emitter_direct.h"
 
@@ -70,9 +69,7 @@ ShadedImages render_relit_scene(RelitScene& scene, const Camera& camera, int wid
   const auto background = [&](Vec3 origin, Vec3 dir) {
     const RayHit hit = windows.intersect({origin, dir});
     if (!hit.hit()) return Rgb{};
-    const Shell& shell = lit.shell(hit.triangle);
-    Rgb l =
-        shell.cubemap[cubemap_texel_index(shell.face_size, cubemap_texel(shell.face_size, dir))];
+    Rgb l = lit.shell(hit.triangle).radiance(dir);
     for (const PortalSun& sun : lit.suns()) {  // traced exactly, so not in the shell
       if (sun.portal == hit.triangle && sun_disc_luminance(sun.disc, normalize(dir)) > 0) {
         l += sun.illuminance * (sun.disc.luminance / sun.disc.normal_illuminance);

@@ -8,7 +8,6 @@
 #include <tbb/parallel_for.h>
 
 #include "engine/transfer_blocks.h"
-#include "math/cubemap.h"
 
 namespace relight {
 
@@ -84,9 +83,7 @@ void Relighter::update_objects() {
   if (emitters_) in.emitters = &emitters_->placed();
   if (portals_.size() > 0) {
     in.glass = [this](std::uint32_t p, Vec3 direction) {
-      const Shell& shell = portals_.portal(p).shell;
-      return shell
-          .cubemap[cubemap_texel_index(shell.face_size, cubemap_texel(shell.face_size, direction))];
+      return portals_.portal(p).shell.radiance(direction);
     };
   }
   objects_->update(in, light_changed);

@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "light/environment.h"
+#include "math/cubemap.h"
 #include "math/rgb.h"
 #include "sources/portal/shell_exterior.h"
 #include "sources/portal/shell_frost.h"
@@ -68,6 +69,12 @@ struct Shell {
   std::size_t sun_texel = 0;
   Rgb sun_radiance;
   std::size_t exterior_texels = 0;  // texels any exterior sub-ray hit
+
+  // The radiance the shell shows along a direction (its cubemap texel): what a window shows
+  // a camera ray or a ray gathering through it.
+  Rgb radiance(Vec3 direction) const {
+    return cubemap[cubemap_texel_index(face_size, cubemap_texel(face_size, direction))];
+  }
 };
 
 // Reused between calls so that a steady state allocates little.
