@@ -195,7 +195,8 @@ int solve_bounces_rgb(const GatherOperator& gather, const Receivers& receivers,
   const RgbGather op{vertices, n, albedo,
                      [&](std::size_t r, std::span<const float> reflected, float(&sum)[3]) {
                        gather_rgb_row(g, static_cast<Eigen::Index>(r), reflected, sum);
-                     }};
+                     },
+                     nullptr};
   return solve_bounces_rgb(op, direct, indirect, warm, settings);
 }
 
@@ -215,6 +216,7 @@ int solve_bounces_rgb(const RgbGather& op, std::span<const float> direct, std::s
         reflected[i] = op.albedo[i] * (direct[i] + gathered[i]);
       }
     });
+    if (op.prepare) op.prepare(reflected);
   };
   const double tolerance =
       warm ? std::max(settings.tolerance, kWarmBounceTolerance) : settings.tolerance;

@@ -61,6 +61,8 @@ ObjectLighting::ObjectLighting(const RuntimeScene& room, std::vector<ObjectMesh>
   source_.assign(3 * rows, 0.0f);
   indirect_.assign(3 * rows, 0.0f);
   room_delta_.assign(3 * room.receivers(), 0.0f);
+  object_gather_.assign(3 * rows, 0.0f);
+  static_light_.assign(3 * (vertices + placed_.vertex_count()), 0.0f);
   room_delta_direct_.assign(3 * room.receivers(), 0.0f);
   object_total_.assign(3 * placed_.vertex_count(), 0.0f);
   object_indirect_.assign(3 * placed_.vertex_count(), 0.0f);
@@ -73,12 +75,11 @@ bool ObjectLighting::set_state(std::span<const MovablePlacement> placements) {
   if (std::equal(placements.begin(), placements.end(), placements_.begin())) return false;
   for (std::size_t k = 0; k < placements.size(); ++k) {
     const bool pending = std::find(moved_.begin(), moved_.end(), k) != moved_.end();
-    if (placements[k] != placements_[k] && !pending) {
+    if (placements[k] != placements_[k] && !pending)
       moved_.push_back(static_cast<std::uint32_t>(k));
-      moved_before_.push_back(placed_.bounds[k]);  // where it was when last lit
-    }
   }
   placements_.assign(placements.begin(), placements.end());
+  if (!lit_) lit_ = std::move(placed_);  // where the objects were when last lit
   placed_ = place_objects(meshes_, placements_);
   warned_.resize(meshes_.size(), false);
   for (const std::uint32_t k : moved_) {
@@ -159,7 +160,9 @@ void ObjectLighting::trace_direct(const ObjectLightInputs& in, bool all) {
       return false;
     }
     for (std::size_t i = 0; i < moved_.size(); ++i) {
-      if (may_shadow(x, moved_before_[i]) || may_shadow(x, placed_.bounds[moved_[i]])) return true;
+      if (may_shadow(x, lit_->bounds[moved_[i]]) || may_shadow(x, placed_.bounds[moved_[i]])) {
+        return true;
+      }
     }
     return false;
   };
@@ -211,81 +214,56 @@ void ObjectLighting::update(const ObjectLightInputs& in, bool light_changed) {
     transfer_ = trace_object_transfer(room, placed_, settings_);
     transfer_valid_ = true;
   } else if (!moved_.empty()) {
-    retrace_object_transfer(transfer_, room, placed_, settings_, moved_, moved_before_);
+    retrace_object_transfer(transfer_, room, placed_, *lit_, settings_, moved_);
   }
   timings_.rays = transfer_.rays;
+  proxy_values_.resize(3 * (transfer_.cones.size() + 1) * transfer_.proxies.proxies.size());
+  base_proxied_.assign(vertices + objects, 0);
+  for (std::size_t q = 0; q < objects; ++q) {
+    base_proxied_[vertices + q] = transfer_.proxies.proxy_of[vertices + q] < 0 ? 1 : 0;
+  }
+  proxy_layers_.assign(transfer_.proxied.begin(), transfer_.proxied.end());
+  proxy_layers_.emplace_back(base_proxied_);
   timings_.transfer_seconds = seconds_since(start);
   start = std::chrono::steady_clock::now();
   trace_direct(in, light_changed || !direct_valid_);
   direct_valid_ = true;
   moved_.clear();
-  moved_before_.clear();
+  lit_.reset();
   timings_.direct_seconds = seconds_since(start);
 
   start = std::chrono::steady_clock::now();
   // D = ΔE_d + [C; H] · ρE0 + the windows' light the objects gain or hide. Transfer rows:
   // room receiver r is row r, object vertex q row R + q (object_transfer.h); solver rows: room
-  // vertices, object vertices, sensors.
+  // vertices, object vertices, sensors — the first two also the unified columns.
   const auto unified = [&](std::size_t row) {
     return row < vertices ? row : (row < receivers ? row + objects : row - receivers + vertices);
   };
-  const auto add_static = [&](const ObjectRows& rows, std::size_t i, float* d) {
-    for (std::size_t e = rows.first[i]; e < rows.first[i + 1]; ++e) {
-      const std::size_t c = rows.columns[e];
-      if (c >= vertices) continue;  // objects have no light in E0
-      for (std::size_t k = 0; k < 3; ++k) {
-        d[k] += rows.values[e] * albedo_[3 * c + k] * in.room[3 * c + k];
-      }
-    }
-  };
+  // ρE0 per column (objects have no light in E0).
+  std::fill(static_light_.begin(), static_light_.end(), 0.0f);
+  for (std::size_t i = 0; i < 3 * vertices; ++i) static_light_[i] = albedo_[i] * in.room[i];
   std::copy(direct_.begin(), direct_.end(), source_.begin());
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, receivers + objects, 512),
-                    [&](const auto& rr) {
-                      for (std::size_t row = rr.begin(); row != rr.end(); ++row) {
-                        float* d = &source_[3 * unified(row)];
-                        for (const ObjectRows& cone : transfer_.cones) add_static(cone, row, d);
-                        if (row >= receivers) add_static(transfer_.base, row - receivers, d);
-                      }
-                    });
-  if (in.glass) {
-    const auto add_glass = [&](const GlassHit& g, std::size_t row) {
-      const Rgb l = in.glass(g.portal, g.direction) * (kPi * g.weight);
-      float* d = &source_[3 * unified(row)];
-      d[0] += static_cast<float>(l.r);
-      d[1] += static_cast<float>(l.g);
-      d[2] += static_cast<float>(l.b);
-    };
-    for (const ObjectRows& cone : transfer_.cones) {
-      for (const GlassHit& g : cone.glass) add_glass(g, g.row);
-    }
-    for (const GlassHit& g : transfer_.base.glass) add_glass(g, receivers + g.row);
-  }
-  // ΔE = D + [G + C; H] · ρ ΔE over room vertices and object vertices; sensors gathered once.
+  apply_object_rows(static_light_, source_);
+  if (in.glass) add_glass_light(in.glass, source_);
+  // ΔE = D + [G + C; H] · ρ ΔE over room vertices and object vertices; sensors gathered once:
+  // the objects' rows applied once per sweep, the room's G row by row.
   const auto& g = room.gather().matrix;
-  const auto add_rows = [](const ObjectRows& rows, std::size_t i, std::span<const float> reflected,
-                           float(&sum)[3]) {
-    for (std::size_t e = rows.first[i]; e < rows.first[i + 1]; ++e) {
-      const float* l = &reflected[3 * std::size_t{rows.columns[e]}];
-      sum[0] += rows.values[e] * l[0];
-      sum[1] += rows.values[e] * l[1];
-      sum[2] += rows.values[e] * l[2];
-    }
+  const auto prepare = [&](std::span<const float> reflected) {
+    std::fill(object_gather_.begin(), object_gather_.end(), 0.0f);
+    apply_object_rows(reflected, object_gather_);
   };
   const RgbGather op{vertices + objects, receivers + objects, albedo_,
                      [&](std::size_t u, std::span<const float> reflected, float(&sum)[3]) {
-                       std::size_t row = 0;
                        if (u >= vertices && u < vertices + objects) {
-                         row = receivers + (u - vertices);
                          sum[0] = sum[1] = sum[2] = 0;
-                         add_rows(transfer_.base, u - vertices, reflected, sum);
                        } else {
-                         row = u < vertices ? u : u - objects;
-                         gather_rgb_row(g, static_cast<Eigen::Index>(row), reflected, sum);
+                         gather_rgb_row(g,
+                                        static_cast<Eigen::Index>(u < vertices ? u : u - objects),
+                                        reflected, sum);
                        }
-                       for (const ObjectRows& cone : transfer_.cones) {
-                         add_rows(cone, row, reflected, sum);
-                       }
-                     }};
+                       for (std::size_t k = 0; k < 3; ++k) sum[k] += object_gather_[3 * u + k];
+                     },
+                     prepare};
   BounceSettings bounce;
   bounce.tolerance = 1e-4;
   timings_.bounces = solve_bounces_rgb(op, source_, indirect_, warm_, bounce);
@@ -305,6 +283,96 @@ void ObjectLighting::update(const ObjectLightInputs& in, bool light_changed) {
     }
   }
   timings_.bounce_seconds = seconds_since(start);
+}
+
+namespace {
+
+// Σ_e values[e] · light[3 column_e ..] over row i of `rows`, added to sum.
+void add_row(const ObjectRows& rows, std::size_t i, std::span<const float> light, float* sum) {
+  for (std::size_t e = rows.first[i]; e < rows.first[i + 1]; ++e) {
+    const float* l = &light[3 * std::size_t{rows.columns[e]}];
+    sum[0] += rows.values[e] * l[0];
+    sum[1] += rows.values[e] * l[1];
+    sum[2] += rows.values[e] * l[2];
+  }
+}
+
+}  // namespace
+
+void ObjectLighting::apply_object_rows(std::span<const float> light, std::span<float> out) {
+  const RuntimeScene& room = *room_;
+  const std::size_t vertices = room.vertex_count(), receivers = room.receivers();
+  const std::size_t objects = placed_.vertex_count();
+  const auto unified = [&](std::size_t row) {
+    return row < vertices ? row : (row < receivers ? row + objects : row - receivers + vertices);
+  };
+  // Every object's cone rows (rows of different objects are the same receivers: one object at
+  // a time), then the base rows.
+  for (const ObjectRows& cone : transfer_.cones) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, cone.rows(), 1024), [&](const auto& rr) {
+      for (std::size_t row = rr.begin(); row != rr.end(); ++row) {
+        if (cone.first[row] != cone.first[row + 1]) {
+          add_row(cone, row, light, &out[3 * unified(row)]);
+        }
+      }
+    });
+  }
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, objects, 1024), [&](const auto& qr) {
+    for (std::size_t q = qr.begin(); q != qr.end(); ++q) {
+      add_row(transfer_.base, q, light, &out[3 * (vertices + q)]);
+    }
+  });
+  // The vertices that take a layer's row from proxies (each object's cones, then the base).
+  const ReceiverProxies& proxies = transfer_.proxies;
+  const std::size_t layers = transfer_.cones.size() + 1, count = proxies.proxies.size();
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 256), [&](const auto& jr) {
+    for (std::size_t j = jr.begin(); j != jr.end(); ++j) {
+      const std::size_t c = proxies.proxies[j];
+      for (std::size_t l = 0; l < layers; ++l) {
+        float* sum = &proxy_values_[3 * (l * count + j)];
+        sum[0] = sum[1] = sum[2] = 0;
+        if (l + 1 < layers) {
+          add_row(transfer_.cones[l], c < vertices ? c : receivers + (c - vertices), light, sum);
+        } else if (c >= vertices) {
+          add_row(transfer_.base, c - vertices, light, sum);
+        }
+      }
+    }
+  });
+  spread_from_proxies(proxies, proxy_layers_, proxy_values_,
+                      out.subspan(0, 3 * (vertices + objects)));
+}
+
+void ObjectLighting::add_glass_light(const GlassLuminance& glass, std::span<float> out) {
+  const RuntimeScene& room = *room_;
+  const std::size_t vertices = room.vertex_count(), receivers = room.receivers();
+  const std::size_t objects = placed_.vertex_count();
+  const ReceiverProxies& proxies = transfer_.proxies;
+  const std::size_t layers = transfer_.cones.size() + 1, count = proxies.proxies.size();
+  // Solver row and proxy (−1: none) of a transfer row.
+  const auto unified = [&](std::size_t row) {
+    return row < vertices ? row : (row < receivers ? row + objects : row - receivers + vertices);
+  };
+  const auto proxy = [&](std::size_t row) {
+    return row >= vertices && row < receivers ? -1 : proxies.proxy_of[unified(row)];
+  };
+  std::fill(proxy_values_.begin(), proxy_values_.end(), 0.0f);
+  const auto add = [&](const GlassHit& g, std::size_t row, std::size_t layer) {
+    const Rgb l = glass(g.portal, g.direction) * (kPi * g.weight);
+    const float light[3] = {static_cast<float>(l.r), static_cast<float>(l.g),
+                            static_cast<float>(l.b)};
+    const std::int32_t j = proxy(row);
+    for (std::size_t k = 0; k < 3; ++k) {
+      out[3 * unified(row) + k] += light[k];
+      if (j >= 0) proxy_values_[3 * (layer * count + static_cast<std::size_t>(j)) + k] += light[k];
+    }
+  };
+  for (std::size_t l = 0; l + 1 < layers; ++l) {
+    for (const GlassHit& g : transfer_.cones[l].glass) add(g, g.row, l);
+  }
+  for (const GlassHit& g : transfer_.base.glass) add(g, receivers + g.row, layers - 1);
+  spread_from_proxies(proxies, proxy_layers_, proxy_values_,
+                      out.subspan(0, 3 * (vertices + objects)));
 }
 
 void ObjectLighting::add_to_room(std::span<float> out, bool include_direct) const {

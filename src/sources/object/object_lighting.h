@@ -17,9 +17,10 @@
 //   ΔE = D + [G + C; H] · ρ ΔE,
 //
 // the second bounced with engine/bounce_solver.h (warm-started from the last frame: an object
-// dragged a little takes a bounce or two). E0 being the empty room's converged light
-// (E0 = E0_d + G ρ E0), E0 + ΔE solves the room with its objects exactly as the stored
-// estimator would. Sensors are gathered once from the converged light.
+// dragged a little takes a bounce or two), the objects' rows applied once per sweep, rows
+// that vertices take from proxies (receiver_proxies.h) spread from the proxies' values. E0 being
+// the empty room's converged light (E0 = E0_d + G ρ E0), E0 + ΔE solves the room with its objects
+// exactly as the stored estimator would. Sensors are gathered once from the converged light.
 //
 // Pinned by tests/runtime/object_transfer_test.cpp and
 // tests/render/object_accuracy_test.cpp.
@@ -100,6 +101,11 @@ class ObjectLighting {
 
  private:
   void trace_direct(const ObjectLightInputs& inputs, bool all);
+  // out (3 per solver row: room vertices, object vertices, sensors) += [C; H] · light (3 per
+  // unified column), proxies included.
+  void apply_object_rows(std::span<const float> light, std::span<float> out);
+  // out += the light through windows that the objects' rows gain or hide.
+  void add_glass_light(const GlassLuminance& glass, std::span<float> out);
 
   const RuntimeScene* room_;
   ObjectTransferSettings settings_;
@@ -108,13 +114,19 @@ class ObjectLighting {
   PlacedObjects placed_;
   ObjectTransfer transfer_;
   bool transfer_valid_ = false, direct_valid_ = false;
-  // Objects moved since the last update, and their spheres before.
+  // Objects moved since the last update, and every object as placed then (set while any is).
   std::vector<std::uint32_t> moved_;
-  std::vector<BoundingSphere> moved_before_;
-  std::vector<float> albedo_;    // 3 per unified row that reflects: room vertices, objects
-  std::vector<float> direct_;    // ΔE_d: 3 per unified row (room vertices, objects, sensors)
-  std::vector<float> source_;    // D, likewise
-  std::vector<float> indirect_;  // the bounce, likewise
+  std::optional<PlacedObjects> lit_;
+  std::vector<float> albedo_;        // 3 per unified row that reflects: room vertices, objects
+  std::vector<float> direct_;        // ΔE_d: 3 per unified row (room vertices, objects, sensors)
+  std::vector<float> source_;        // D, likewise
+  std::vector<float> indirect_;      // the bounce, likewise
+  std::vector<float> proxy_values_;  // 3 per proxy per layer: each object's cones, the base
+  std::vector<std::uint8_t> base_proxied_;  // per unified column: base row from proxies
+  // Per layer, per unified column: whether that row is taken from proxies.
+  std::vector<std::span<const std::uint8_t>> proxy_layers_;
+  std::vector<float> static_light_;   // ρE0, 3 per unified column
+  std::vector<float> object_gather_;  // [C; H] · ρΔE this sweep, 3 per unified row
   bool warm_ = false;
   std::vector<float> room_delta_, room_delta_direct_;  // 3 per room receiver
   std::vector<float> object_total_, object_indirect_;  // 3 per object vertex

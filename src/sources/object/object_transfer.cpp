@@ -17,6 +17,8 @@ namespace {
 constexpr std::size_t kChunk = 256;  // rows traced by one task
 constexpr std::uint64_t kConeSeed = 0x6f626a636f6e6573ULL;
 constexpr std::uint64_t kObjectSeed = 0x6f626a726f777321ULL;
+// A row weight this small changes nothing: what a ray added and a later update took off again.
+constexpr float kNegligible = 1e-9f;
 
 // One chunk of rows while it is traced.
 struct Chunk {
@@ -42,6 +44,7 @@ struct RowScratch {
       const std::uint32_t column = entries[i].first;
       float sum = 0;
       for (; i < entries.size() && entries[i].first == column; ++i) sum += entries[i].second;
+      if (std::abs(sum) <= kNegligible) continue;  // what a ray added and took off again
       chunk.columns.push_back(column);
       chunk.values.push_back(sum);
       ++count;
@@ -149,24 +152,34 @@ FirstHit base_hit(const RuntimeScene& room, const PlacedObjects& objects, const 
   return h;
 }
 
-// Row `row` of object k's cone rows: rays over the cone of k's bounding sphere.
-void trace_cone_row(const RuntimeScene& room, const PlacedObjects& objects,
-                    const ObjectTransferSettings& settings, std::size_t k, std::size_t row,
-                    RowScratch& scratch, Chunk& chunk) {
-  const Origin o = origin_of(room, objects, row);
-  if (!objects.visible(k) || o.own == k || (o.own != Origin::kNone && !objects.visible(o.own))) {
-    scratch.flush(chunk);
-    return;
-  }
-  const BoundingSphere& s = objects.bounds[k];
+// The unified column of row `row`'s vertex (object_transfer.h); a sensor has none.
+std::size_t column_of_row(const RuntimeScene& room, std::size_t row) {
+  if (row < room.vertex_count()) return row;
+  if (row < room.receivers()) return ~std::size_t{0};
+  return room.vertex_count() + (row - room.receivers());
+}
+
+// Whether row `row` has rays toward object k: k visible, the origin not on k nor on a hidden
+// object, the row not taken from proxies.
+bool has_cone_row(const RuntimeScene& room, const PlacedObjects& objects, std::size_t k,
+                  std::span<const std::uint8_t> proxied, const Origin& o, std::size_t row) {
+  const std::size_t column = column_of_row(room, row);
+  return objects.visible(k) && o.own != k && (o.own == Origin::kNone || objects.visible(o.own)) &&
+         !(column < proxied.size() && proxied[column] != 0);
+}
+
+// Calls visit(direction, weight) for each ray of row `row` toward object k's sphere `s`: rays
+// uniformly over the sphere's cone (cosine-distributed over the hemisphere from inside it),
+// weight Ω/N · cos θ / π, as many as the sphere's share asks; none below the cull. The same
+// rays every time for the same row, object and sphere.
+template <typename Visit>
+void for_each_cone_ray(const ObjectTransferSettings& settings, const Origin& o,
+                       const BoundingSphere& s, std::size_t k, std::size_t row, Visit&& visit) {
   const Vec3 to_centre = s.centre - o.point;
   const double d = length(to_centre);
   const bool inside = d <= s.radius;
   const double share = sphere_share(o.point, o.normal, s);
-  if (!inside && share < settings.cull) {
-    scratch.flush(chunk);
-    return;
-  }
+  if (!inside && share < settings.cull) return;
   double cos_alpha = -1, omega = 2 * kPi;  // inside: the whole hemisphere (cosine-sampled)
   Vec3 axis = o.normal;
   if (!inside) {
@@ -185,45 +198,126 @@ void trace_cone_row(const RuntimeScene& room, const PlacedObjects& objects,
   Pcg32 rng(kConeSeed + k, row);
   const std::uint32_t s1 = rng.next_u32(), s2 = rng.next_u32();
   const Frame frame = frame_from_normal(axis);
-  const auto out_row = static_cast<std::uint32_t>(row);
   for (int i = 0; i < rays; ++i) {
     const auto index = static_cast<std::uint32_t>(i);
     const double u1 = unit_interval(van_der_corput(index, s1));
     const double u2 = unit_interval(sobol2(index, s2));
-    Vec3 dir;
-    double weight = 0;
     if (inside) {
-      dir = frame.to_world(sample_cosine_hemisphere(u1, u2));
-      weight = 1.0 / rays;
-    } else {
-      const double cos_t = 1 - u1 * (1 - cos_alpha);
-      const double sin_t = std::sqrt(std::max(0.0, 1 - cos_t * cos_t));
-      const double phi = 2 * kPi * u2;
-      dir = frame.to_world({sin_t * std::cos(phi), sin_t * std::sin(phi), cos_t});
-      weight = omega / rays * std::max(0.0, dot(o.normal, dir)) / kPi;
-      if (weight <= 0) continue;
+      visit(frame.to_world(sample_cosine_hemisphere(u1, u2)), 1.0 / rays);
+      continue;
     }
-    ++chunk.rays;
-    const Ray ray{o.point, dir};
-    // Counted only for the first object it meets (the partition among overlapping cones); a
-    // vertex's own object is its base row's.
-    const RayHit object = objects.tracer.intersect(ray);
-    if (!object.hit() || objects.triangle_object[object.triangle] != k) continue;
-    const FirstHit before = base_hit(room, objects, o, ray);
-    chunk.rays += 2;
-    if (before.kind != FirstHit::kNothing && before.hit.t <= object.t) continue;  // hidden
-    add_hit(room, objects, {FirstHit::kObject, object}, ray, weight, out_row, scratch, chunk);
-    add_hit(room, objects, before, ray, -weight, out_row, scratch, chunk);
+    const double cos_t = 1 - u1 * (1 - cos_alpha);
+    const double sin_t = std::sqrt(std::max(0.0, 1 - cos_t * cos_t));
+    const double phi = 2 * kPi * u2;
+    const Vec3 dir = frame.to_world({sin_t * std::cos(phi), sin_t * std::sin(phi), cos_t});
+    const double weight = omega / rays * std::max(0.0, dot(o.normal, dir)) / kPi;
+    if (weight > 0) visit(dir, weight);
+  }
+}
+
+// One ray of a cone row toward object k among `objects` as placed: counted only for the first
+// object it meets (the partition among overlapping cones; a vertex's own object is its base
+// row's) when that object is k and no room surface hides it: +weight on what it sees of k,
+// −weight on what the base row saw there.
+void add_cone_ray(const RuntimeScene& room, const PlacedObjects& objects, const Origin& o,
+                  std::size_t k, Vec3 dir, double weight, std::uint32_t row, RowScratch& scratch,
+                  Chunk& chunk) {
+  ++chunk.rays;
+  const Ray ray{o.point, dir};
+  const RayHit object = objects.tracer.intersect(ray);
+  if (!object.hit() || objects.triangle_object[object.triangle] != k) return;
+  const FirstHit before = base_hit(room, objects, o, ray);
+  chunk.rays += 2;
+  if (before.kind != FirstHit::kNothing && before.hit.t <= object.t) return;  // hidden
+  add_hit(room, objects, {FirstHit::kObject, object}, ray, weight, row, scratch, chunk);
+  add_hit(room, objects, before, ray, -weight, row, scratch, chunk);
+}
+
+// Row `row` of object k's cone rows, traced whole; rows of vertices that take their row from
+// proxies stay empty.
+void trace_cone_row(const RuntimeScene& room, const PlacedObjects& objects,
+                    const ObjectTransferSettings& settings, std::size_t k,
+                    std::span<const std::uint8_t> proxied, std::size_t row, RowScratch& scratch,
+                    Chunk& chunk) {
+  const Origin o = origin_of(room, objects, row);
+  if (has_cone_row(room, objects, k, proxied, o, row)) {
+    for_each_cone_ray(settings, o, objects.bounds[k], k, row, [&](Vec3 dir, double weight) {
+      add_cone_ray(room, objects, o, k, dir, weight, static_cast<std::uint32_t>(row), scratch,
+                   chunk);
+    });
+  }
+  scratch.flush(chunk);
+}
+
+// Whether the ray from `origin` along unit `dir` meets one of `spheres`.
+bool meets_any(Vec3 origin, Vec3 dir, std::span<const BoundingSphere> spheres) {
+  for (const BoundingSphere& s : spheres) {
+    if (s.radius <= 0) continue;
+    const Vec3 to_centre = s.centre - origin;
+    const double t = dot(to_centre, dir);
+    const double d2 = dot(to_centre, to_centre);
+    if (d2 <= s.radius * s.radius) return true;
+    if (t > 0 && d2 - t * t <= s.radius * s.radius) return true;
+  }
+  return false;
+}
+
+// Row `row` of unmoved object k's cone rows, from an origin that did not move, after objects
+// moved from their places in `before` (spheres `changed`: where they were and where they are
+// now): the rays that meet none of `changed` see what they saw before, so only the others are
+// traced, once among the objects before (their contribution taken off the row `previous`)
+// and once as placed now (added). Glass hits of equal portal and direction are merged.
+void update_cone_row(const RuntimeScene& room, const PlacedObjects& objects,
+                     const PlacedObjects& before, const ObjectTransferSettings& settings,
+                     std::size_t k, std::span<const std::uint8_t> proxied,
+                     std::span<const BoundingSphere> changed, const ObjectRows& previous,
+                     std::size_t row, RowScratch& scratch, Chunk& chunk) {
+  for (std::size_t e = previous.first[row]; e < previous.first[row + 1]; ++e) {
+    scratch.add(previous.columns[e], previous.values[e]);
+  }
+  const std::size_t glass_from = chunk.glass.size();
+  const auto lo = std::partition_point(previous.glass.begin(), previous.glass.end(),
+                                       [&](const GlassHit& g) { return g.row < row; });
+  const auto hi = std::partition_point(lo, previous.glass.end(),
+                                       [&](const GlassHit& g) { return g.row <= row; });
+  chunk.glass.insert(chunk.glass.end(), lo, hi);
+  const Origin o = origin_of(room, objects, row);
+  if (has_cone_row(room, objects, k, proxied, o, row)) {
+    const auto out_row = static_cast<std::uint32_t>(row);
+    for_each_cone_ray(settings, o, objects.bounds[k], k, row, [&](Vec3 dir, double weight) {
+      if (!meets_any(o.point, dir, changed)) return;
+      add_cone_ray(room, before, o, k, dir, -weight, out_row, scratch, chunk);
+      add_cone_ray(room, objects, o, k, dir, weight, out_row, scratch, chunk);
+    });
+  }
+  // Merge this row's glass hits along the same direction through the same portal.
+  std::vector<GlassHit> merged;
+  for (std::size_t i = glass_from; i < chunk.glass.size(); ++i) {
+    const GlassHit& g = chunk.glass[i];
+    auto same = std::find_if(merged.begin(), merged.end(), [&](const GlassHit& m) {
+      return m.portal == g.portal && m.direction.x == g.direction.x &&
+             m.direction.y == g.direction.y && m.direction.z == g.direction.z;
+    });
+    if (same == merged.end()) {
+      merged.push_back(g);
+    } else {
+      same->weight += g.weight;
+    }
+  }
+  chunk.glass.resize(glass_from);
+  for (const GlassHit& g : merged) {
+    if (std::abs(g.weight) > kNegligible) chunk.glass.push_back(g);
   }
   scratch.flush(chunk);
 }
 
 // The base row of object vertex q: cosine-distributed rays against the room and its own object.
 void trace_base_row(const RuntimeScene& room, const PlacedObjects& objects,
-                    const ObjectTransferSettings& settings, std::size_t q, RowScratch& scratch,
-                    Chunk& chunk) {
+                    const ObjectTransferSettings& settings, const ReceiverProxies& proxies,
+                    std::size_t q, RowScratch& scratch, Chunk& chunk) {
   const Origin o = origin_of(room, objects, room.receivers() + q);
-  if (!objects.visible(o.own)) {  // a hidden object gathers nothing
+  // A hidden object gathers nothing; a vertex that is not a proxy takes its proxies' rows.
+  if (!objects.visible(o.own) || proxies.proxy_of[room.vertex_count() + q] < 0) {
     scratch.flush(chunk);
     return;
   }
@@ -245,9 +339,10 @@ void trace_base_row(const RuntimeScene& room, const PlacedObjects& objects,
 }
 
 // Traces rows `rows` (or [0, count) when `rows` is null) in chunks and joins them in that order.
+// With `by_index`, trace_row gets the index into `rows` instead of the row.
 template <typename TraceRow>
 ObjectRows trace_rows(std::size_t count, const std::vector<std::uint32_t>* rows,
-                      const TraceRow& trace_row, std::uint64_t& rays) {
+                      const TraceRow& trace_row, std::uint64_t& rays, bool by_index = false) {
   if (rows != nullptr) count = rows->size();
   std::vector<Chunk> chunks((count + kChunk - 1) / kChunk);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunks.size()), [&](const auto& range) {
@@ -255,7 +350,7 @@ ObjectRows trace_rows(std::size_t count, const std::vector<std::uint32_t>* rows,
     for (std::size_t c = range.begin(); c != range.end(); ++c) {
       const std::size_t end = std::min(count, (c + 1) * kChunk);
       for (std::size_t i = c * kChunk; i < end; ++i) {
-        trace_row(rows != nullptr ? (*rows)[i] : i, scratch, chunks[c]);
+        trace_row(rows != nullptr && !by_index ? (*rows)[i] : i, scratch, chunks[c]);
       }
     }
   });
@@ -283,7 +378,6 @@ ObjectRows trace_rows(std::size_t count, const std::vector<std::uint32_t>* rows,
 // of `redo`); glass hits likewise.
 ObjectRows splice(const ObjectRows& rows, const std::vector<std::uint32_t>& redo,
                   const ObjectRows& traced) {
-  if (redo.empty()) return rows;
   ObjectRows out;
   out.first.reserve(rows.first.size());
   out.columns.reserve(rows.columns.size() + traced.columns.size());
@@ -299,12 +393,17 @@ ObjectRows splice(const ObjectRows& rows, const std::vector<std::uint32_t>& redo
     out.values.insert(out.values.end(), from.values.begin() + lo, from.values.begin() + hi);
     out.first.push_back(out.columns.size());
   }
+  // Glass hits stay sorted by row (update_cone_row looks a row's up).
   std::vector<bool> again(rows.rows(), false);
   for (const std::uint32_t r : redo) again[r] = true;
+  std::vector<GlassHit> kept;
   for (const GlassHit& g : rows.glass) {
-    if (!again[g.row]) out.glass.push_back(g);
+    if (!again[g.row]) kept.push_back(g);
   }
-  out.glass.insert(out.glass.end(), traced.glass.begin(), traced.glass.end());
+  out.glass.reserve(kept.size() + traced.glass.size());
+  std::merge(kept.begin(), kept.end(), traced.glass.begin(), traced.glass.end(),
+             std::back_inserter(out.glass),
+             [](const GlassHit& a, const GlassHit& b) { return a.row < b.row; });
   return out;
 }
 
@@ -318,24 +417,69 @@ bool cones_overlap(Vec3 o, const BoundingSphere& a, const BoundingSphere& b) {
   return angle <= std::asin(a.radius / la) + std::asin(b.radius / lb);
 }
 
+Vec3 column_point(const RuntimeScene& room, const PlacedObjects& objects, std::size_t column) {
+  const std::size_t v = room.vertex_count();
+  return column < v ? room.ray_point(column) : objects.ray_points[column - v];
+}
+
+// Which vertices (unified columns [lo, hi)) take their row toward object k from proxies, as
+// placed now.
+void mark_proxied(const RuntimeScene& room, const PlacedObjects& objects,
+                  const ObjectTransferSettings& settings, const ReceiverProxies& proxies,
+                  std::size_t k, std::size_t lo, std::size_t hi, std::vector<std::uint8_t>& out) {
+  out.resize(room.vertex_count() + objects.vertex_count(), 0);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(lo, hi, 4096), [&](const auto& range) {
+    for (std::size_t c = range.begin(); c != range.end(); ++c) {
+      out[c] = takes_proxy_row(proxies, c, column_point(room, objects, c), objects.bounds[k],
+                               settings.proxy_distance)
+                   ? 1
+                   : 0;
+    }
+  });
+}
+
+ObjectRows trace_cones(const RuntimeScene& room, const PlacedObjects& objects,
+                       const ObjectTransferSettings& settings, std::size_t k,
+                       std::span<const std::uint8_t> proxied,
+                       const std::vector<std::uint32_t>* rows, std::uint64_t& rays) {
+  return trace_rows(
+      room.receivers() + objects.vertex_count(), rows,
+      [&](std::size_t row, RowScratch& scratch, Chunk& chunk) {
+        trace_cone_row(room, objects, settings, k, proxied, row, scratch, chunk);
+      },
+      rays);
+}
+
 }  // namespace
 
 ObjectTransfer trace_object_transfer(const RuntimeScene& room, const PlacedObjects& objects,
                                      const ObjectTransferSettings& settings) {
   ObjectTransfer t;
   const std::size_t rows = room.receivers() + objects.vertex_count();
+  const std::size_t columns = room.vertex_count() + objects.vertex_count();
+  std::vector<Vec3> points, normals;
+  std::vector<std::uint32_t> group;  // 0: the room; k + 1: object k
+  for (std::size_t c = 0; c < columns; ++c) {
+    const bool in_room = c < room.vertex_count();
+    const std::size_t q = c - room.vertex_count();
+    points.push_back(column_point(room, objects, c));
+    normals.push_back(in_room ? room.normal(c) : objects.normals[q]);
+    group.push_back(in_room ? 0 : static_cast<std::uint32_t>(objects.object_of_vertex(q) + 1));
+  }
+  t.proxies = build_receiver_proxies(
+      points, normals, group,
+      settings.proxy_spacing > 0
+          ? settings.proxy_spacing
+          : default_proxy_spacing(std::span<const Vec3>(points.data(), room.vertex_count())));
+  t.proxied.resize(objects.object_count());
   for (std::size_t k = 0; k < objects.object_count(); ++k) {
-    t.cones.push_back(trace_rows(
-        rows, nullptr,
-        [&](std::size_t row, RowScratch& scratch, Chunk& chunk) {
-          trace_cone_row(room, objects, settings, k, row, scratch, chunk);
-        },
-        t.rays));
+    mark_proxied(room, objects, settings, t.proxies, k, 0, columns, t.proxied[k]);
+    t.cones.push_back(trace_cones(room, objects, settings, k, t.proxied[k], nullptr, t.rays));
   }
   t.base = trace_rows(
       objects.vertex_count(), nullptr,
       [&](std::size_t q, RowScratch& scratch, Chunk& chunk) {
-        trace_base_row(room, objects, settings, q, scratch, chunk);
+        trace_base_row(room, objects, settings, t.proxies, q, scratch, chunk);
       },
       t.rays);
   t.retraced_rows = (objects.object_count() + 1) * rows;
@@ -343,12 +487,18 @@ ObjectTransfer trace_object_transfer(const RuntimeScene& room, const PlacedObjec
 }
 
 void retrace_object_transfer(ObjectTransfer& t, const RuntimeScene& room,
-                             const PlacedObjects& objects, const ObjectTransferSettings& settings,
-                             std::span<const std::uint32_t> moved,
-                             std::span<const BoundingSphere> before) {
+                             const PlacedObjects& objects, const PlacedObjects& before,
+                             const ObjectTransferSettings& settings,
+                             std::span<const std::uint32_t> moved) {
   const std::size_t receivers = room.receivers(), rows = receivers + objects.vertex_count();
+  const std::size_t columns = room.vertex_count() + objects.vertex_count();
   std::vector<bool> is_moved(objects.object_count(), false);
-  for (const std::uint32_t k : moved) is_moved[k] = true;
+  std::vector<BoundingSphere> changed;  // where the moved objects were, and are now
+  for (const std::uint32_t k : moved) {
+    is_moved[k] = true;
+    changed.push_back(before.bounds[k]);
+    changed.push_back(objects.bounds[k]);
+  }
   // Rows whose origin moved: the vertices of moved objects.
   std::vector<bool> origin_moved(rows, false);
   for (std::size_t q = 0; q < objects.vertex_count(); ++q) {
@@ -357,40 +507,79 @@ void retrace_object_transfer(ObjectTransfer& t, const RuntimeScene& room,
   t.rays = 0;
   t.retraced_rows = 0;
   for (std::size_t k = 0; k < objects.object_count(); ++k) {
-    // A moved object's cone rows all; another's where its cone may meet a moved object, before
-    // or now (the first object a ray meets may have changed), or whose origin moved.
-    std::vector<std::uint32_t> redo;
-    for (std::size_t row = 0; row < rows; ++row) {
-      bool again = is_moved[k] || origin_moved[row];
-      if (!again && objects.visible(k)) {
-        const Vec3 o = origin_of(room, objects, row).point;
-        for (std::size_t i = 0; i < moved.size() && !again; ++i) {
-          again = cones_overlap(o, objects.bounds[k], before[i]) ||
-                  cones_overlap(o, objects.bounds[k], objects.bounds[moved[i]]);
-        }
-      }
-      if (again) redo.push_back(static_cast<std::uint32_t>(row));
+    // A moved object's cone rows all, from where it is now.
+    if (is_moved[k]) {
+      mark_proxied(room, objects, settings, t.proxies, k, 0, columns, t.proxied[k]);
+      t.cones[k] = trace_cones(room, objects, settings, k, t.proxied[k], nullptr, t.rays);
+      t.retraced_rows += rows;
+      continue;
     }
+    // Another's: whole where the origin moved; where its cone may meet a moved object, before
+    // or now, the rays that do (which object a ray meets first may have changed).
+    for (const std::uint32_t m : moved) {  // the moved objects' vertices, where they are now
+      mark_proxied(room, objects, settings, t.proxies, k,
+                   room.vertex_count() + objects.first_vertex[m],
+                   room.vertex_count() + objects.first_vertex[m + 1], t.proxied[k]);
+    }
+    // Per row: 0 kept, 1 traced whole, 2 updated where its rays meet a moved sphere.
+    std::vector<std::uint8_t> how(rows, 0);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rows, 1024), [&](const auto& range) {
+      for (std::size_t row = range.begin(); row != range.end(); ++row) {
+        const std::size_t column = column_of_row(room, row);
+        if (origin_moved[row]) {
+          how[row] = 1;
+          continue;
+        }
+        if (!objects.visible(k) || (column < columns && t.proxied[k][column] != 0)) continue;
+        const Origin o = origin_of(room, objects, row);
+        bool overlap = false;
+        for (std::size_t i = 0; i < changed.size() && !overlap; ++i) {
+          overlap = cones_overlap(o.point, objects.bounds[k], changed[i]);
+        }
+        if (!overlap || !has_cone_row(room, objects, k, t.proxied[k], o, row)) continue;
+        bool meets = false;
+        for_each_cone_ray(settings, o, objects.bounds[k], k, row, [&](Vec3 dir, double) {
+          meets = meets || meets_any(o.point, dir, changed);
+        });
+        if (meets) how[row] = 2;
+      }
+    });
+    std::vector<std::uint32_t> redo;
+    std::vector<std::uint8_t> whole;  // per entry of redo
+    for (std::size_t row = 0; row < rows; ++row) {
+      if (how[row] == 0) continue;
+      redo.push_back(static_cast<std::uint32_t>(row));
+      whole.push_back(how[row] == 1 ? 1 : 0);
+    }
+    const ObjectRows& previous = t.cones[k];
     const ObjectRows traced = trace_rows(
         0, &redo,
-        [&](std::size_t row, RowScratch& scratch, Chunk& chunk) {
-          trace_cone_row(room, objects, settings, k, row, scratch, chunk);
+        [&](std::size_t i, RowScratch& scratch, Chunk& chunk) {
+          const std::size_t row = redo[i];
+          if (whole[i] != 0) {
+            trace_cone_row(room, objects, settings, k, t.proxied[k], row, scratch, chunk);
+          } else {
+            update_cone_row(room, objects, before, settings, k, t.proxied[k], changed, previous,
+                            row, scratch, chunk);
+          }
         },
-        t.rays);
-    t.cones[k] = splice(t.cones[k], redo, traced);
+        t.rays, /*by_index=*/true);
+    if (!redo.empty()) t.cones[k] = splice(previous, redo, traced);
     t.retraced_rows += redo.size();
   }
   std::vector<std::uint32_t> redo;
   for (std::size_t q = 0; q < objects.vertex_count(); ++q) {
-    if (origin_moved[receivers + q]) redo.push_back(static_cast<std::uint32_t>(q));
+    if (origin_moved[receivers + q] && t.proxies.proxy_of[room.vertex_count() + q] >= 0) {
+      redo.push_back(static_cast<std::uint32_t>(q));
+    }
   }
   const ObjectRows traced = trace_rows(
       0, &redo,
       [&](std::size_t q, RowScratch& scratch, Chunk& chunk) {
-        trace_base_row(room, objects, settings, q, scratch, chunk);
+        trace_base_row(room, objects, settings, t.proxies, q, scratch, chunk);
       },
       t.rays);
-  t.base = splice(t.base, redo, traced);
+  if (!redo.empty()) t.base = splice(t.base, redo, traced);
   t.retraced_rows += redo.size();
 }
 

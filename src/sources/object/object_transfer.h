@@ -26,7 +26,9 @@
 // Iwasaki et al. 2007 instead make each object a secondary source from PCA basis radiance
 // fields on concentric spheres (§3.1, §4.2–4.3) and shadow the room with occlusion fields;
 // why relight traces instead, and the measurements, are in docs/design-notes.md ("Movable
-// objects"). The paper's culling of small contributions (§5.4) is kept: a receiver spends
+// objects"). Rows of vertices far from an object are not traced but interpolated from
+// sparse proxy vertices (receiver_proxies.h), which stands in for the paper's fields where
+// they are smooth. The paper's culling of small contributions (§5.4) is kept: a receiver spends
 // rays on an object in proportion to the object's cosine-weighted share of its hemisphere,
 // and none when that share is below `cull`. Pinned by
 // tests/runtime/object_transfer_test.cpp.
@@ -38,6 +40,7 @@
 
 #include "engine/runtime_scene.h"
 #include "sources/object/object_mesh.h"
+#include "sources/object/receiver_proxies.h"
 
 namespace relight {
 
@@ -50,6 +53,10 @@ struct ObjectTransferSettings {
   int cone_rays_max = 64;
   double cull = 1e-3;  // a share below this: no rays (the object changes < 0.1 % of the gather)
   int sensor_ray_factor = 8;  // sensors' rows take this many times the rays
+  // Room vertices this many proxy spacings or more outside an object's sphere take their row
+  // toward it from their proxies (receiver_proxies.h); spacing 0: default_proxy_spacing.
+  double proxy_distance = 4;
+  double proxy_spacing = 0;
 };
 
 // A ray that left through a window: its light is the portal's, looked up per frame.
@@ -65,7 +72,7 @@ struct ObjectRows {
   std::vector<std::size_t> first{0};  // per row, then the end: row i is [first[i], first[i+1])
   std::vector<std::uint32_t> columns;
   std::vector<float> values;
-  std::vector<GlassHit> glass;
+  std::vector<GlassHit> glass;  // sorted by row
 
   std::size_t rows() const { return first.size() - 1; }
 };
@@ -77,8 +84,15 @@ struct ObjectTransfer {
   // empty rows for k's own vertices, which see their object in their base row).
   std::vector<ObjectRows> cones;
   // One row per object vertex: its gather of the room and of its own object (traced when the
-  // object moves); the other objects come in through `cones`.
+  // object moves; empty but at proxies, the others take their proxies' rows); the other
+  // objects come in through `cones`.
   ObjectRows base;
+  // Of the room's and the objects' vertices, in unified columns (room vertex v, object vertex
+  // q: V + q).
+  ReceiverProxies proxies;
+  // Per object, per unified column: 1 when that vertex's row toward the object is left empty
+  // and taken from its proxies' rows instead (takes_proxy_row, as placed now).
+  std::vector<std::vector<std::uint8_t>> proxied;
   std::uint64_t rays = 0;         // traced by the last trace or retrace
   std::size_t retraced_rows = 0;  // rows (of cones and base) traced by it
 };
@@ -91,15 +105,16 @@ double sphere_share(Vec3 origin, Vec3 normal, const BoundingSphere& sphere);
 ObjectTransfer trace_object_transfer(const RuntimeScene& room, const PlacedObjects& objects,
                                      const ObjectTransferSettings& settings);
 
-// After objects `moved` moved (or were hidden or shown; `before[i]` the sphere of moved[i]
-// before, radius 0 when it was hidden): retraces what a move can change — every cone row of a
-// moved object, every row whose origin moved (the moved objects' vertices: their cone rows and
-// base rows), and the rows of another object's cone that may meet a moved object's sphere,
-// before or now (which object a ray meets first may have changed) — and keeps the rest. A drag
-// traces about one object's share of the rays, not all of them.
+// After objects `moved` moved (or were hidden or shown) from where `before` placed them:
+// retraces what a move can change — every cone row of a moved object, every row whose origin
+// moved (the moved objects' vertices: their cone rows, and the base rows at proxies), and in
+// the rows of another object's cone the rays that meet a moved object's sphere, before or now
+// (which object a ray meets first may have changed: each such ray is traced among the objects
+// before, its contribution taken off, and as placed now) — and keeps the rest. A drag traces
+// about one object's share of the rays, not all of them.
 void retrace_object_transfer(ObjectTransfer& transfer, const RuntimeScene& room,
-                             const PlacedObjects& objects, const ObjectTransferSettings& settings,
-                             std::span<const std::uint32_t> moved,
-                             std::span<const BoundingSphere> before);
+                             const PlacedObjects& objects, const PlacedObjects& before,
+                             const ObjectTransferSettings& settings,
+                             std::span<const std::uint32_t> moved);
 
 }  // namespace relight
