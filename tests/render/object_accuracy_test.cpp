@@ -37,6 +37,7 @@
 #include "sources/precompute.h"
 #include "sources/transfer_file.h"
 #include "support/daylight_harness.h"
+#include "support/scene_json.h"
 #include "support/temp_dir.h"
 #include "trace/traced_scene.h"
 
@@ -44,26 +45,12 @@ namespace relight {
 namespace {
 
 using nlohmann::json;
+using testing::box;
 using testing::grid;
+using testing::quad;
 
 constexpr int kReferenceSpp = 16384;
 const std::string kIes = RELIGHT_SHARED_DIR "/data/photometry/photometric-viewer/ies/";
-
-json box(Vec3 lo, Vec3 hi, const std::string& material) {
-  return {{"type", "box"},
-          {"min", {lo.x, lo.y, lo.z}},
-          {"max", {hi.x, hi.y, hi.z}},
-          {"material", material}};
-}
-
-// A quad whose front side is u × v.
-json quad(Vec3 corner, Vec3 u, Vec3 v, const std::string& material) {
-  return {{"type", "quad"},
-          {"corner", {corner.x, corner.y, corner.z}},
-          {"u", {u.x, u.y, u.z}},
-          {"v", {v.x, v.y, v.z}},
-          {"material", material}};
-}
 
 // The furnished room, its six faces inward. Sensor sets: work plane (0.8 m), ceiling, back wall (x
 // = 0), side wall (z = 4).

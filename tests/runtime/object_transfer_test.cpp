@@ -14,18 +14,13 @@
 #include "scene/scene_loader.h"
 #include "sources/precompute.h"
 #include "sources/transfer_file.h"
+#include "support/scene_json.h"
 
 namespace relight {
 namespace {
 
 using nlohmann::json;
-
-json box(Vec3 lo, Vec3 hi, const std::string& material) {
-  return {{"type", "box"},
-          {"min", {lo.x, lo.y, lo.z}},
-          {"max", {hi.x, hi.y, hi.z}},
-          {"material", material}};
-}
+using testing::box;
 
 Precomputed precompute(const Scene& scene) {
   PrecomputeOptions options;

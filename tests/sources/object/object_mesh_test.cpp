@@ -7,18 +7,13 @@
 
 #include "scene/scene_loader.h"
 #include "sources/object/object_mesh.h"
+#include "support/scene_json.h"
 
 namespace relight {
 namespace {
 
 using nlohmann::json;
-
-json box(Vec3 lo, Vec3 hi, const std::string& material) {
-  return {{"type", "box"},
-          {"min", {lo.x, lo.y, lo.z}},
-          {"max", {hi.x, hi.y, hi.z}},
-          {"material", material}};
-}
+using testing::box;
 
 TEST(ObjectMesh, PlacementTurnsAboutThePivotThenMovesAndHidingRemovesTheTriangles) {
   const Scene scene = scene_from_json(
