@@ -58,6 +58,7 @@ ObjectLighting::ObjectLighting(const RuntimeScene& room, std::vector<ObjectMesh>
   albedo_.insert(albedo_.end(), placed_.albedo.begin(), placed_.albedo.end());
   const std::size_t rows = room.receivers() + placed_.vertex_count();
   direct_.assign(3 * rows, 0.0f);
+  other_direct_.assign(3 * rows, 0.0f);
   source_.assign(3 * rows, 0.0f);
   indirect_.assign(3 * rows, 0.0f);
   room_delta_.assign(3 * room.receivers(), 0.0f);
@@ -94,54 +95,111 @@ bool ObjectLighting::set_state(std::span<const MovablePlacement> placements) {
 void ObjectLighting::trace_direct(const ObjectLightInputs& in, bool all) {
   const RuntimeScene& room = *room_;
   const std::size_t vertices = room.vertex_count(), objects = placed_.vertex_count();
+  const std::size_t rows = room.receivers() + objects;
   const Occluders with = occluders(), without(room.occluders());
+  // Every solver row's point and normal (room vertices, object vertices, sensors).
+  const auto point = [&](std::size_t u) {
+    return u < vertices ? room.ray_point(u)
+                        : (u < vertices + objects ? placed_.ray_points[u - vertices]
+                                                  : room.ray_point(u - objects));
+  };
+  const auto normal = [&](std::size_t u) {
+    return u < vertices ? room.normal(u)
+                        : (u < vertices + objects ? placed_.normals[u - vertices]
+                                                  : room.normal(u - objects));
+  };
+  const auto is_object = [&](std::size_t u) { return u >= vertices && u < vertices + objects; };
+  // Whether row u must be traced again for a light that a shadow ray reaches through `near`
+  // (near(x, s): a ray from x toward the light may pass sphere s): with `every`, wherever any
+  // object may shadow; else only where a moved object may, where it was or is now, and at
+  // the moved objects' own vertices.
+  const auto redo = [&](std::size_t u, bool every, const auto& near) {
+    const Vec3 x = point(u);
+    if (every) {
+      for (const BoundingSphere& s : placed_.bounds) {
+        if (near(x, s)) return true;
+      }
+      return is_object(u);
+    }
+    for (const std::uint32_t k : moved_) {
+      if (is_object(u) && placed_.object_of_vertex(u - vertices) == k) return true;
+      if (near(x, lit_->bounds[k]) || near(x, placed_.bounds[k])) return true;
+    }
+    return false;
+  };
+
+  // Luminaires: per luminaire and row, what the objects change in its geometry factor (at
+  // room receivers with − without the objects; at object vertices the whole factor), kept
+  // until the luminaire's position or opening changes or an object moves within reach. A
+  // dimmer, colour or aim changes only the evaluation below, not a ray.
+  const bool fine = in.sensor_luminaires.size() == in.luminaires.size();
+  if (luminaire_shadows_.size() != in.luminaires.size()) {
+    luminaire_shadows_.assign(in.luminaires.size(), {});
+  }
+  for (std::size_t j = 0; j < in.luminaires.size(); ++j) {
+    const LuminaireLight& l = in.luminaires[j];
+    const std::vector<Vec3>& sensor_opening = fine ? in.sensor_luminaires[j].opening : l.opening;
+    LuminaireShadows& cache = luminaire_shadows_[j];
+    const bool stale = cache.factor.size() != rows || cache.position != l.position ||
+                       cache.opening != l.opening || cache.sensor_opening != sensor_opening;
+    if (stale) {
+      cache = {l.position, l.opening, sensor_opening, std::vector<float>(rows, 0.0f)};
+    }
+    double reach = 0;
+    for (const Vec3& o : l.opening) reach = std::max(reach, length(o));
+    const auto near = [&](Vec3 x, const BoundingSphere& s) {
+      return s.radius > 0 && segment_near_sphere(x, l.position, s, reach);
+    };
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rows, 256), [&](const auto& range) {
+      std::uint64_t rays = 0;
+      for (std::size_t u = range.begin(); u != range.end(); ++u) {
+        if (!redo(u, stale, near)) continue;
+        const Vec3 x = point(u), n = normal(u);
+        const std::vector<Vec3>& opening = u >= vertices + objects ? sensor_opening : l.opening;
+        double f = 0;
+        if (is_object(u)) {
+          if (placed_.visible(placed_.object_of_vertex(u - vertices))) {
+            f = direct_factor(with, x, n, l.position, opening, rays).factor;
+          }
+        } else {
+          f = direct_factor(with, x, n, l.position, opening, rays).factor -
+              direct_factor(without, x, n, l.position, opening, rays).factor;
+        }
+        cache.factor[u] = static_cast<float>(f);
+      }
+    });
+  }
+
+  // Suns and near-field emitters: traced again where any object may shadow them whenever the
+  // light changed, else where a moved object may.
   std::optional<SunGeometry> sun_with;
   if (in.sun_geometry)
     sun_with.emplace(SunGeometry{with, in.sun_geometry->glass, in.sun_geometry->portals});
   const bool suns = in.sun_geometry.has_value() && !in.suns.empty();
+  const bool emitters = in.emitters != nullptr && !in.emitters->positions.empty();
   // Spheres around each near-field emitter's triangles (its shadow rays end on them).
   std::vector<BoundingSphere> emitter_spheres;
-  if (in.emitters != nullptr && !in.emitters->positions.empty()) {
-    for (std::size_t e = 0; e < in.emitters->radiance.size(); ++e) {
-      std::vector<Vec3> points;
-      for (std::size_t t = 0; t < in.emitters->triangles.size(); ++t) {
-        if (in.emitters->emitter_of_triangle[t] != e) continue;
-        for (const std::uint32_t v : in.emitters->triangles[t]) {
-          points.push_back(in.emitters->positions[v]);
-        }
+  for (std::size_t e = 0; emitters && e < in.emitters->radiance.size(); ++e) {
+    std::vector<Vec3> points;
+    for (std::size_t t = 0; t < in.emitters->triangles.size(); ++t) {
+      if (in.emitters->emitter_of_triangle[t] != e) continue;
+      for (const std::uint32_t v : in.emitters->triangles[t]) {
+        points.push_back(in.emitters->positions[v]);
       }
-      if (!points.empty()) emitter_spheres.push_back(sphere_around(points));
     }
+    if (!points.empty()) emitter_spheres.push_back(sphere_around(points));
   }
-  // How far each luminaire's opening reaches from its centre.
-  std::vector<double> reach;
-  for (const LuminaireLight& l : in.luminaires) {
-    double r = 0;
-    for (const Vec3& o : l.opening) r = std::max(r, length(o));
-    reach.push_back(r);
-  }
-  // A sensor's penumbrae are sampled finer (256 points on each luminous opening and emitter
-  // triangle, 16 at vertices): its reading is not averaged between vertices.
-  const auto direct_at = [&](const Occluders& occluders, const std::optional<SunGeometry>& sun,
-                             Vec3 p, Vec3 n, bool sensor) {
-    const bool fine = sensor && in.sensor_luminaires.size() == in.luminaires.size();
-    Rgb e =
-        luminaire_direct_irradiance(occluders, fine ? in.sensor_luminaires : in.luminaires, p, n);
+  // A sensor's penumbrae are sampled finer (256 points on each emitter triangle, 16 at
+  // vertices): its reading is not averaged between vertices.
+  const auto other_at = [&](const Occluders& occluders, const std::optional<SunGeometry>& sun,
+                            Vec3 p, Vec3 n, bool sensor) {
+    Rgb e;
     if (suns) e += sun_irradiance(*sun, in.suns, p, n);
-    if (in.emitters != nullptr) {
-      e += emitter_direct_irradiance(*in.emitters, &occluders, p, n, sensor ? 256 : 16);
-    }
+    if (emitters) e += emitter_direct_irradiance(*in.emitters, &occluders, p, n, sensor ? 256 : 16);
     return e;
   };
-  // Whether a shadow ray from x toward a light may pass the sphere s.
-  const auto may_shadow = [&](Vec3 x, const BoundingSphere& s) {
+  const auto near_other = [&](Vec3 x, const BoundingSphere& s) {
     if (s.radius <= 0) return false;
-    for (std::size_t j = 0; j < in.luminaires.size(); ++j) {
-      if (max_component(in.luminaires[j].rgb) > 0 &&
-          segment_near_sphere(x, in.luminaires[j].position, s, reach[j])) {
-        return true;
-      }
-    }
     for (std::size_t j = 0; suns && j < in.suns.size(); ++j) {
       if (ray_near_sphere(x, in.suns[j].disc.direction, s, 1e-3 + 0.01 * s.radius)) return true;
     }
@@ -150,56 +208,43 @@ void ObjectLighting::trace_direct(const ObjectLightInputs& in, bool all) {
     }
     return false;
   };
-  // What must be traced again: with `all`, wherever any object may shadow; otherwise only where
-  // a moved object may, where it was or where it is now (the rest is kept from the last frame).
-  const auto redo = [&](Vec3 x) {
-    if (all) {
-      for (const BoundingSphere& s : placed_.bounds) {
-        if (may_shadow(x, s)) return true;
+  if (all || !(suns || emitters)) std::fill(other_direct_.begin(), other_direct_.end(), 0.0f);
+  if (suns || emitters) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rows, 256), [&](const auto& range) {
+      for (std::size_t u = range.begin(); u != range.end(); ++u) {
+        if (!redo(u, all, near_other)) continue;
+        const Vec3 x = point(u), n = normal(u);
+        const bool sensor = u >= vertices + objects;
+        Rgb e;
+        if (is_object(u)) {
+          if (placed_.visible(placed_.object_of_vertex(u - vertices))) {
+            e = other_at(with, sun_with, x, n, false);
+          }
+        } else {
+          e = other_at(with, sun_with, x, n, sensor) -
+              other_at(without, in.sun_geometry, x, n, sensor);
+        }
+        put(other_direct_, u, e);
       }
-      return false;
-    }
-    for (std::size_t i = 0; i < moved_.size(); ++i) {
-      if (may_shadow(x, lit_->bounds[moved_[i]]) || may_shadow(x, placed_.bounds[moved_[i]])) {
-        return true;
+    });
+  }
+
+  // ΔE_d: the luminaires' factors evaluated for their current output and aim, and the rest.
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rows, 1024), [&](const auto& range) {
+    for (std::size_t u = range.begin(); u != range.end(); ++u) {
+      Rgb e{other_direct_[3 * u], other_direct_[3 * u + 1], other_direct_[3 * u + 2]};
+      for (std::size_t j = 0; j < in.luminaires.size(); ++j) {
+        const LuminaireLight& l = in.luminaires[j];
+        const float f = luminaire_shadows_[j].factor[u];
+        if (f == 0 || max_component(l.rgb) <= 0) continue;
+        const Vec3 d = point(u) - l.position;
+        const double dist = length(d);
+        if (dist <= 0) continue;
+        e += l.rgb * (l.distribution->intensity(l.frame.to_photometric(d / dist)) * f);
       }
-    }
-    return false;
-  };
-  // Room receivers: the light the objects' shadows take away, where a shadow ray may pass an
-  // object.
-  if (all) std::fill(direct_.begin(), direct_.end(), 0.0f);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, room.receivers(), 256), [&](const auto& rr) {
-    for (std::size_t r = rr.begin(); r != rr.end(); ++r) {
-      const Vec3 x = room.ray_point(r), n = room.normal(r);
-      if (!redo(x)) continue;
-      // A sensor's penumbra is sampled finer: its reading is not averaged between vertices.
-      const bool sensor = r >= vertices;
-      const Rgb e = direct_at(with, sun_with, x, n, sensor) -
-                    direct_at(without, in.sun_geometry, x, n, sensor);
-      put(direct_, r < vertices ? r : r + objects, e);
+      put(direct_, u, e);
     }
   });
-  // Object vertices: their whole direct light.
-  tbb::parallel_for(
-      tbb::blocked_range<std::size_t>(0, placed_.object_count()), [&](const auto& kr) {
-        for (std::size_t k = kr.begin(); k != kr.end(); ++k) {
-          const bool moved = all || std::find(moved_.begin(), moved_.end(), k) != moved_.end();
-          tbb::parallel_for(tbb::blocked_range<std::size_t>(placed_.first_vertex[k],
-                                                            placed_.first_vertex[k + 1], 64),
-                            [&](const auto& qr) {
-                              for (std::size_t q = qr.begin(); q != qr.end(); ++q) {
-                                if (!placed_.visible(k)) {
-                                  put(direct_, vertices + q, Rgb{});
-                                } else if (moved || redo(placed_.ray_points[q])) {
-                                  put(direct_, vertices + q,
-                                      direct_at(with, sun_with, placed_.ray_points[q],
-                                                placed_.normals[q], false));
-                                }
-                              }
-                            });
-        }
-      });
 }
 
 void ObjectLighting::update(const ObjectLightInputs& in, bool light_changed) {
@@ -215,6 +260,9 @@ void ObjectLighting::update(const ObjectLightInputs& in, bool light_changed) {
     transfer_valid_ = true;
   } else if (!moved_.empty()) {
     retrace_object_transfer(transfer_, room, placed_, *lit_, settings_, moved_);
+  } else {  // nothing moved: nothing traced
+    transfer_.rays = 0;
+    transfer_.retraced_rows = 0;
   }
   timings_.rays = transfer_.rays;
   proxy_values_.resize(3 * (transfer_.cones.size() + 1) * transfer_.proxies.proxies.size());

@@ -77,9 +77,11 @@ class ObjectLighting {
   // Places the objects (scene order); returns whether any placement changed.
   bool set_state(std::span<const MovablePlacement> placements);
   // Recomputes ΔE and the objects' light: the transfer where objects moved since the last
-  // update (object_transfer.h retrace_object_transfer), the direct light wherever an object
-  // may shadow when `light_changed` (any other term's light, E0, changed) or else only where a
-  // moved object may, and the bounce always.
+  // update (object_transfer.h retrace_object_transfer); the luminaires' shadow factors where
+  // a moved object may shadow or a luminaire moved or changed its opening (a dimmer, colour or
+  // aim only re-evaluates them); the suns' and emitters' direct light wherever an object may
+  // shadow when `light_changed` (any other term's light, E0, changed) or else only where a
+  // moved object may; and the bounce always.
   void update(const ObjectLightInputs& inputs, bool light_changed);
 
   // Adds ΔE to `out` (3 per room receiver); without direct light, ΔE less ΔE_d (what
@@ -117,11 +119,20 @@ class ObjectLighting {
   // Objects moved since the last update, and every object as placed then (set while any is).
   std::vector<std::uint32_t> moved_;
   std::optional<PlacedObjects> lit_;
-  std::vector<float> albedo_;        // 3 per unified row that reflects: room vertices, objects
-  std::vector<float> direct_;        // ΔE_d: 3 per unified row (room vertices, objects, sensors)
-  std::vector<float> source_;        // D, likewise
-  std::vector<float> indirect_;      // the bounce, likewise
-  std::vector<float> proxy_values_;  // 3 per proxy per layer: each object's cones, the base
+  std::vector<float> albedo_;  // 3 per unified row that reflects: room vertices, objects
+  std::vector<float> direct_;  // ΔE_d: 3 per unified row (room vertices, objects, sensors)
+  // Per luminaire: where its shadow rays started from and ended on, and per unified row what
+  // the objects change in its geometry factor (luminaire_direct.h direct_factor).
+  struct LuminaireShadows {
+    Vec3 position;
+    std::vector<Vec3> opening, sensor_opening;
+    std::vector<float> factor;
+  };
+  std::vector<LuminaireShadows> luminaire_shadows_;
+  std::vector<float> other_direct_;         // the suns' and emitters' part of ΔE_d, likewise
+  std::vector<float> source_;               // D, likewise
+  std::vector<float> indirect_;             // the bounce, likewise
+  std::vector<float> proxy_values_;         // 3 per proxy per layer: each object's cones, the base
   std::vector<std::uint8_t> base_proxied_;  // per unified column: base row from proxies
   // Per layer, per unified column: whether that row is taken from proxies.
   std::vector<std::span<const std::uint8_t>> proxy_layers_;

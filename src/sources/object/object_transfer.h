@@ -93,7 +93,7 @@ struct ObjectTransfer {
   // Per object, per unified column: 1 when that vertex's row toward the object is left empty
   // and taken from its proxies' rows instead (takes_proxy_row, as placed now).
   std::vector<std::vector<std::uint8_t>> proxied;
-  std::uint64_t rays = 0;         // traced by the last trace or retrace
+  std::uint64_t rays = 0;         // traced by the last update (trace or retrace; 0: none)
   std::size_t retraced_rows = 0;  // rows (of cones and base) traced by it
 };
 
