@@ -216,7 +216,6 @@ int solve_bounces_rgb(const RgbGather& op, std::span<const float> direct, std::s
         reflected[i] = op.albedo[i] * (direct[i] + gathered[i]);
       }
     });
-    if (op.prepare) op.prepare(reflected);
   };
   const double tolerance =
       warm ? std::max(settings.tolerance, kWarmBounceTolerance) : settings.tolerance;
@@ -224,6 +223,7 @@ int solve_bounces_rgb(const RgbGather& op, std::span<const float> direct, std::s
   if (settings.max_bounces > 0) {
     reflect();
     while (bounces < settings.max_bounces) {
+      if (op.prepare) op.prepare(reflected, false);
       // Per channel: Σ (E(n+1) − E(n))² and Σ E(n+1)²; the slowest channel decides.
       using Change = std::array<double, 6>;
       const Change change = tbb::parallel_deterministic_reduce(
@@ -257,6 +257,7 @@ int solve_bounces_rgb(const RgbGather& op, std::span<const float> direct, std::s
   }
   // The reflecting rows' interreflected light, and the rest gathered once from the last light.
   std::copy(gathered.begin(), gathered.end(), indirect.begin());
+  if (op.prepare && bounces > 0 && n > vertices) op.prepare(reflected, true);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(vertices, n, 256), [&](const auto& range) {
     for (std::size_t r = range.begin(); r != range.end(); ++r) {
       float sum[3] = {0, 0, 0};

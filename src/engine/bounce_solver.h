@@ -70,14 +70,15 @@ int solve_bounces_rgb(const GatherOperator& gather, const Receivers& receivers,
 // rows [0, reflecting) reflect with `albedo` (3 per row) and are solved for; rows
 // [reflecting, rows) (sensors) are gathered once from the converged light. gather_row(i,
 // reflected, sum) sets sum to Σ_j A_ij · reflected[3j … 3j+2] (RGB), j < reflecting; it is
-// called from many threads at once. `prepare(reflected)`, when set, is called once before each
-// sweep of gather_row over a new reflected light (what rows share: values at proxies).
+// called from many threads at once. `prepare(reflected, last)`, when set, is called once before
+// each sweep of gather_row over a new reflected light (what rows share: values at proxies);
+// with `last`, before the one pass over rows [reflecting, rows) alone.
 struct RgbGather {
   std::size_t reflecting = 0, rows = 0;
   std::span<const float> albedo;
   std::function<void(std::size_t row, std::span<const float> reflected, float (&sum)[3])>
       gather_row;
-  std::function<void(std::span<const float> reflected)> prepare;
+  std::function<void(std::span<const float> reflected, bool last)> prepare;
 };
 
 // The iteration of the solve_bounces_rgb above over such an operator: `direct` and

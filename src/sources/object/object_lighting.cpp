@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include <tbb/blocked_range.h>
@@ -143,7 +145,8 @@ void ObjectLighting::trace_direct(const ObjectLightInputs& in, bool all) {
     const bool stale = cache.factor.size() != rows || cache.position != l.position ||
                        cache.opening != l.opening || cache.sensor_opening != sensor_opening;
     if (stale) {
-      cache = {l.position, l.opening, sensor_opening, std::vector<float>(rows, 0.0f)};
+      cache = {l.position, l.opening, sensor_opening, std::vector<float>(rows, 0.0f),
+               std::vector<float>(rows, std::numeric_limits<float>::quiet_NaN())};
     }
     double reach = 0;
     for (const Vec3& o : l.opening) reach = std::max(reach, length(o));
@@ -162,8 +165,11 @@ void ObjectLighting::trace_direct(const ObjectLightInputs& in, bool all) {
             f = direct_factor(with, x, n, l.position, opening, rays).factor;
           }
         } else {
-          f = direct_factor(with, x, n, l.position, opening, rays).factor -
-              direct_factor(without, x, n, l.position, opening, rays).factor;
+          if (std::isnan(cache.room_factor[u])) {  // the empty room's: traced once
+            cache.room_factor[u] =
+                static_cast<float>(direct_factor(without, x, n, l.position, opening, rays).factor);
+          }
+          f = direct_factor(with, x, n, l.position, opening, rays).factor - cache.room_factor[u];
         }
         cache.factor[u] = static_cast<float>(f);
       }
@@ -291,14 +297,14 @@ void ObjectLighting::update(const ObjectLightInputs& in, bool light_changed) {
   std::fill(static_light_.begin(), static_light_.end(), 0.0f);
   for (std::size_t i = 0; i < 3 * vertices; ++i) static_light_[i] = albedo_[i] * in.room[i];
   std::copy(direct_.begin(), direct_.end(), source_.begin());
-  apply_object_rows(static_light_, source_);
+  apply_object_rows(static_light_, source_, false);
   if (in.glass) add_glass_light(in.glass, source_);
   // ΔE = D + [G + C; H] · ρ ΔE over room vertices and object vertices; sensors gathered once:
   // the objects' rows applied once per sweep, the room's G row by row.
   const auto& g = room.gather().matrix;
-  const auto prepare = [&](std::span<const float> reflected) {
+  const auto prepare = [&](std::span<const float> reflected, bool sensors_only) {
     std::fill(object_gather_.begin(), object_gather_.end(), 0.0f);
-    apply_object_rows(reflected, object_gather_);
+    apply_object_rows(reflected, object_gather_, sensors_only);
   };
   const RgbGather op{vertices + objects, receivers + objects, albedo_,
                      [&](std::size_t u, std::span<const float> reflected, float(&sum)[3]) {
@@ -347,7 +353,8 @@ void add_row(const ObjectRows& rows, std::size_t i, std::span<const float> light
 
 }  // namespace
 
-void ObjectLighting::apply_object_rows(std::span<const float> light, std::span<float> out) {
+void ObjectLighting::apply_object_rows(std::span<const float> light, std::span<float> out,
+                                       bool sensors_only) {
   const RuntimeScene& room = *room_;
   const std::size_t vertices = room.vertex_count(), receivers = room.receivers();
   const std::size_t objects = placed_.vertex_count();
@@ -355,7 +362,15 @@ void ObjectLighting::apply_object_rows(std::span<const float> light, std::span<f
     return row < vertices ? row : (row < receivers ? row + objects : row - receivers + vertices);
   };
   // Every object's cone rows (rows of different objects are the same receivers: one object at
-  // a time), then the base rows.
+  // a time), then the base rows. Sensors take no rows from proxies.
+  if (sensors_only) {
+    for (const ObjectRows& cone : transfer_.cones) {
+      for (std::size_t row = vertices; row < receivers; ++row) {
+        add_row(cone, row, light, &out[3 * unified(row)]);
+      }
+    }
+    return;
+  }
   for (const ObjectRows& cone : transfer_.cones) {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, cone.rows(), 1024), [&](const auto& rr) {
       for (std::size_t row = rr.begin(); row != rr.end(); ++row) {

@@ -104,8 +104,8 @@ class ObjectLighting {
  private:
   void trace_direct(const ObjectLightInputs& inputs, bool all);
   // out (3 per solver row: room vertices, object vertices, sensors) += [C; H] · light (3 per
-  // unified column), proxies included.
-  void apply_object_rows(std::span<const float> light, std::span<float> out);
+  // unified column), proxies included; with `sensors_only`, at the sensors' rows alone.
+  void apply_object_rows(std::span<const float> light, std::span<float> out, bool sensors_only);
   // out += the light through windows that the objects' rows gain or hide.
   void add_glass_light(const GlassLuminance& glass, std::span<float> out);
 
@@ -122,11 +122,12 @@ class ObjectLighting {
   std::vector<float> albedo_;  // 3 per unified row that reflects: room vertices, objects
   std::vector<float> direct_;  // ΔE_d: 3 per unified row (room vertices, objects, sensors)
   // Per luminaire: where its shadow rays started from and ended on, and per unified row what
-  // the objects change in its geometry factor (luminaire_direct.h direct_factor).
+  // the objects change in its geometry factor (luminaire_direct.h direct_factor) and the empty
+  // room's factor (NaN until traced).
   struct LuminaireShadows {
     Vec3 position;
     std::vector<Vec3> opening, sensor_opening;
-    std::vector<float> factor;
+    std::vector<float> factor, room_factor;
   };
   std::vector<LuminaireShadows> luminaire_shadows_;
   std::vector<float> other_direct_;         // the suns' and emitters' part of ΔE_d, likewise
