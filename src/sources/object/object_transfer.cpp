@@ -35,14 +35,20 @@ struct RowScratch {
   void add(std::uint32_t column, double weight) {
     if (weight != 0) entries.emplace_back(column, static_cast<float>(weight));
   }
-  // Sorts, merges and appends the row to `chunk`.
-  void flush(Chunk& chunk) {
+  // Sorts, merges and appends the row to `chunk`, added to a row given sorted by column
+  // (`columns`, `values`: a previous row being updated; empty for a new row).
+  void flush(Chunk& chunk, std::span<const std::uint32_t> columns = {},
+             std::span<const float> values = {}) {
     std::sort(entries.begin(), entries.end(),
               [](const auto& a, const auto& b) { return a.first < b.first; });
     std::uint32_t count = 0;
-    for (std::size_t i = 0; i < entries.size();) {
-      const std::uint32_t column = entries[i].first;
+    std::size_t i = 0, j = 0;
+    while (i < entries.size() || j < columns.size()) {
+      const std::uint32_t column =
+          std::min(i < entries.size() ? entries[i].first : ~std::uint32_t{0},
+                   j < columns.size() ? columns[j] : ~std::uint32_t{0});
       float sum = 0;
+      for (; j < columns.size() && columns[j] == column; ++j) sum += values[j];
       for (; i < entries.size() && entries[i].first == column; ++i) sum += entries[i].second;
       if (std::abs(sum) <= kNegligible) continue;  // what a ray added and took off again
       chunk.columns.push_back(column);
@@ -272,9 +278,6 @@ void update_cone_row(const RuntimeScene& room, const PlacedObjects& objects,
                      std::size_t k, std::span<const std::uint8_t> proxied,
                      std::span<const BoundingSphere> changed, const ObjectRows& previous,
                      std::size_t row, RowScratch& scratch, Chunk& chunk) {
-  for (std::size_t e = previous.first[row]; e < previous.first[row + 1]; ++e) {
-    scratch.add(previous.columns[e], previous.values[e]);
-  }
   const std::size_t glass_from = chunk.glass.size();
   const auto lo = std::partition_point(previous.glass.begin(), previous.glass.end(),
                                        [&](const GlassHit& g) { return g.row < row; });
@@ -308,7 +311,9 @@ void update_cone_row(const RuntimeScene& room, const PlacedObjects& objects,
   for (const GlassHit& g : merged) {
     if (std::abs(g.weight) > kNegligible) chunk.glass.push_back(g);
   }
-  scratch.flush(chunk);
+  const std::size_t from = previous.first[row], size = previous.first[row + 1] - from;
+  scratch.flush(chunk, std::span(previous.columns).subspan(from, size),
+                std::span(previous.values).subspan(from, size));
 }
 
 // The base row of object vertex q: cosine-distributed rays against the room and its own object.
@@ -536,12 +541,7 @@ void retrace_object_transfer(ObjectTransfer& t, const RuntimeScene& room,
         for (std::size_t i = 0; i < changed.size() && !overlap; ++i) {
           overlap = cones_overlap(o.point, objects.bounds[k], changed[i]);
         }
-        if (!overlap || !has_cone_row(room, objects, k, t.proxied[k], o, row)) continue;
-        bool meets = false;
-        for_each_cone_ray(settings, o, objects.bounds[k], k, row, [&](Vec3 dir, double) {
-          meets = meets || meets_any(o.point, dir, changed);
-        });
-        if (meets) how[row] = 2;
+        if (overlap && has_cone_row(room, objects, k, t.proxied[k], o, row)) how[row] = 2;
       }
     });
     std::vector<std::uint32_t> redo;
