@@ -1,0 +1,63 @@
+// The glTF 2.0 metallic–roughness BRDF (issue 13; Khronos, glTF 2.0 specification, 2021,
+// Appendix B "BRDF Implementation"), the surface model of a material with a `metallic` or
+// `roughness` key (a material with neither stays Lambertian: lambert.h):
+//
+//   f = F · D · V  +  diffuse,
+//   D = α² / (π ((n·h)² (α² − 1) + 1)²)                        (Trowbridge–Reitz / GGX, α =
+//   roughness²) V = 1 / (|n·l| √(α² + (1 − α²)(n·v)²) + |n·v| √(α² + (1 − α²)(n·l)²))
+//                                                              (height-correlated Smith, G /
+//                                                              4|n·l||n·v|)
+//   F = F0 + (1 − F0)(1 − |v·h|)⁵,  F0 = mix(0.04, albedo, metallic)   (Schlick),
+//
+// with l and v on the normal's side (0 otherwise: light reaches a surface's front only).
+//
+// The diffuse layer: the specification's (1 − F(v·h)) · (1 − metallic) · albedo / π reflects
+// more than it receives at grazing view (a white dielectric: 1.35 at 80° for roughness 0.05,
+// 1.08 for 0.5, measured by quadrature), so the diffuse layer here gets what the specular lobe
+// leaves, coupled reciprocally (Kelemen and Szirmay-Kalos 2001, "A microfacet based coupled
+// specular-matte BRDF model with importance sampling"):
+//   diffuse = (1 − E_s(v)) (1 − E_s(l)) / (1 − Ē_s) · (1 − metallic) · albedo / π,
+// E_s the specular lobe's directional albedo (tabulated, specular_directional_albedo) and Ē_s
+// its cosine-weighted mean: a white dielectric then reflects exactly 1 at every angle, and
+// the layer is the specification's where the lobe's Fresnel is the same in all directions. It
+// is reciprocal (f(l, v) = f(v, l): h, |v·h| = |l·h|, V and the coupling are symmetric).
+//
+// Sampling for Monte Carlo (the reference tracer): with probability p_s (the specular lobe's
+// share of the albedo at normal incidence, clamped to [0.1, 0.9]) a GGX visible normal (Heitz
+// 2018, "Sampling the GGX Distribution of Visible Normals", JCGT 7(4), §4) reflected about
+// it, else a cosine-distributed direction; the pdf is the mixture's, so either choice weights
+// every direction alike. Pinned by tests/material/metallic_roughness_test.cpp: directional
+// albedo against numerical integration, the white furnace, reciprocity, the pdf.
+#pragma once
+
+#include "math/rgb.h"
+#include "math/vec3.h"
+
+namespace relight {
+
+struct MetallicRoughness {
+  Rgb albedo;  // glTF baseColor: the diffuse colour of a dielectric, F0 of a metal
+  double metallic = 0, roughness = 1;
+};
+
+// f(l, v) per channel (1/sr) at a surface of unit normal n; l toward the light, v toward the
+// viewer, both unit.
+Rgb metallic_roughness_brdf(const MetallicRoughness& m, Vec3 n, Vec3 l, Vec3 v);
+
+// The specular lobe's directional albedo ∫ F D V cos θ_l dω_l per channel at n·v = `n_dot_v`
+// (a table over n·v and roughness, bilinear; within 1e-3 of quadrature).
+Rgb specular_directional_albedo(const MetallicRoughness& m, double n_dot_v);
+
+struct BrdfSample {
+  Vec3 l;          // unit; below the surface when the sample is lost (weight 0)
+  double pdf = 0;  // per steradian
+};
+
+// A direction l for viewer direction v from three uniform numbers in [0, 1).
+BrdfSample sample_metallic_roughness(const MetallicRoughness& m, Vec3 n, Vec3 v, double u0,
+                                     double u1, double u2);
+
+// The density sample_metallic_roughness draws l with.
+double metallic_roughness_pdf(const MetallicRoughness& m, Vec3 n, Vec3 l, Vec3 v);
+
+}  // namespace relight
