@@ -52,6 +52,7 @@ pid_t start_precompute(const fs::path& scene, const fs::path& out) {
   std::vector<std::string> args{binary, "precompute", scene.string(),
                                 "-o",   out.string(), "--no-progress"};
   std::vector<char*> argv;
+  argv.reserve(args.size() + 1);
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
   posix_spawn_file_actions_t actions;
