@@ -20,11 +20,13 @@ struct CommandResult {
   std::string out, err;
 };
 
-inline CommandResult run_relight(const std::string& arguments) {
+// `shell` runs before the command in the same shell (a ulimit, say).
+inline CommandResult run_relight(const std::string& arguments, const std::string& shell = "") {
   TempDir capture;
   const auto out = capture.path() / "stdout", err = capture.path() / "stderr";
-  const std::string command = std::string("'") + RELIGHT_BINARY + "' " + arguments + " >'" +
-                              out.string() + "' 2>'" + err.string() + "' </dev/null";
+  const std::string command = (shell.empty() ? "" : shell + " && ") + "'" + RELIGHT_BINARY + "' " +
+                              arguments + " >'" + out.string() + "' 2>'" + err.string() +
+                              "' </dev/null";
   const int status = std::system(command.c_str());
   CommandResult r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

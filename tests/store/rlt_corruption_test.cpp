@@ -1,6 +1,7 @@
 // A .rlt file that is not exactly what RltWriter wrote is refused with InputError naming
 // the file and the reason: cut short anywhere, any byte of the header, table, payloads
-// or padding changed, another file type, another format version or byte order.
+// or padding changed, another file type, another format version or byte order, a section
+// that claims more than the file holds although every checksum matches.
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -112,6 +113,20 @@ TEST_F(RltCorruption, AnyChangedHeaderOrTableByteIsRefused) {
   bytes = bytes_;
   bytes[64 + 64 + 8] ^= std::byte{1};  // receivers' offset
   open_error(bytes, {"section table is corrupted (checksum mismatch)"});
+}
+
+// A hostile file whose checksums are all right but whose section claims 2^40 bytes: refused by
+// the bounds check, before anything reads or allocates that much (issue 16).
+TEST_F(RltCorruption, ASectionClaimingMoreThanTheFileHoldsIsRefusedThoughItsChecksumsMatch) {
+  std::vector<std::byte> bytes = bytes_;
+  const auto put_u64 = [&](std::size_t at, std::uint64_t value) {
+    std::memcpy(bytes.data() + at, &value, sizeof value);
+  };
+  put_u64(64 + 64 + 16, std::uint64_t{1} << 40);  // receivers' size
+  const std::size_t sections = 3;
+  put_u64(32, xxh64(std::span(bytes).subspan(64, 64 * sections)));  // table checksum
+  put_u64(56, xxh64(std::span(bytes).subspan(0, 56)));              // header checksum
+  open_error(bytes, {"section receivers", "past the end of the file"});
 }
 
 TEST_F(RltCorruption, ChangedPaddingIsRefused) {
