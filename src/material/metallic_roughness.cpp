@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -146,39 +147,45 @@ class SpecularAlbedoTable {
     }
   }
   static std::pair<double, double> integrate(double alpha, Vec3 v) {
-    constexpr int kTheta = 32, kPhi = 32;
-    std::array<double, 8> breaks{0};
-    const std::array<double, 6> k{0.1, 0.3, 1.0, 3.0, 10.0, 30.0};
-    for (std::size_t i = 0; i < k.size(); ++i) breaks[i + 1] = std::atan(k[i] * alpha);
-    breaks[7] = kPi / 2;
     double a = 0, b = 0;
-    for (std::size_t piece = 0; piece + 1 < breaks.size(); ++piece) {
-      const double dt = (breaks[piece + 1] - breaks[piece]) / kTheta;
-      for (int t = 0; t < kTheta; ++t) {
-        const double theta = breaks[piece] + (t + 0.5) * dt;
-        // Symmetric in φ about the plane of v: half the circle, twice.
-        for (int p = 0; p < kPhi; ++p) {
-          const double phi = (p + 0.5) * kPi / kPhi;
-          const Vec3 h{std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
-                       std::cos(theta)};
-          const double v_dot_h = dot(v, h);
-          if (v_dot_h <= 0) continue;
-          const Vec3 l = h * (2 * v_dot_h) - v;
-          if (l.z <= 0) continue;
-          const double w = ggx_d(alpha, h.z) * smith_v(alpha, l.z, v.z) * l.z * 4 * v_dot_h *
-                           std::sin(theta) * dt * (2 * kPi / kPhi);
-          const double x = 1 - v_dot_h, x5 = x * x * x * x * x;
-          a += w * (1 - x5);
-          b += w * x5;
-        }
-      }
-    }
+    for_each_reflection_node(v, alpha, 32, [&](Vec3 l, double w) {
+      const Vec3 h = normalize(l + v);
+      const double x = 1 - dot(v, h), x5 = x * x * x * x * x;
+      const double lobe = ggx_d(alpha, h.z) * smith_v(alpha, l.z, v.z) * l.z * w;
+      a += lobe * (1 - x5);
+      b += lobe * x5;
+    });
     return {a, b};
   }
   std::vector<double> a_, b_, a_mean_, b_mean_;
 };
 
 }  // namespace
+
+void for_each_reflection_node(Vec3 v, double alpha, int points,
+                              const std::function<void(Vec3 l, double weight)>& visit) {
+  std::array<double, 8> breaks{0};
+  const std::array<double, 6> k{0.1, 0.3, 1.0, 3.0, 10.0, 30.0};
+  for (std::size_t i = 0; i < k.size(); ++i) breaks[i + 1] = std::atan(k[i] * alpha);
+  breaks[7] = kPi / 2;
+  for (std::size_t piece = 0; piece + 1 < breaks.size(); ++piece) {
+    const double dt = (breaks[piece + 1] - breaks[piece]) / points;
+    for (int t = 0; t < points; ++t) {
+      const double theta = breaks[piece] + (t + 0.5) * dt;
+      // Symmetric about the plane of v: half the circle, counted twice.
+      for (int p = 0; p < points; ++p) {
+        const double phi = (p + 0.5) * kPi / points;
+        const Vec3 h{std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
+                     std::cos(theta)};
+        const double v_dot_h = dot(v, h);
+        if (v_dot_h <= 0) continue;
+        const Vec3 l = h * (2 * v_dot_h) - v;
+        if (l.z <= 0) continue;
+        visit(l, 4 * v_dot_h * std::sin(theta) * dt * (2 * kPi / points));
+      }
+    }
+  }
+}
 
 Rgb specular_directional_albedo(const MetallicRoughness& m, double n_dot_v) {
   const auto [a, b] = SpecularAlbedoTable::get().at(n_dot_v, m.roughness);

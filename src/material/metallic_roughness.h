@@ -30,6 +30,8 @@
 // albedo against numerical integration, the white furnace, reciprocity, the pdf.
 #pragma once
 
+#include <functional>
+
 #include "math/rgb.h"
 #include "math/vec3.h"
 
@@ -47,6 +49,16 @@ Rgb metallic_roughness_brdf(const MetallicRoughness& m, Vec3 n, Vec3 l, Vec3 v);
 // The specular lobe's directional albedo ∫ F D V cos θ_l dω_l per channel at n·v = `n_dot_v`
 // (a table over n·v and roughness, bilinear; within 1e-3 of quadrature).
 Rgb specular_directional_albedo(const MetallicRoughness& m, double n_dot_v);
+
+// Quadrature nodes over the hemisphere of l about the normal (0, 0, 1), for a viewer v in the
+// xz-plane and integrands symmetric about that plane (as f, its pdf and cos θ_l are):
+// visit(l, w) per node, Σ w g(l) ≈ ∫ g(l) dω_l. Nodes are laid in half-vector space
+// (dω_l = 4 (v·h) dω_h), θ_h in pieces broken at atan(kα), k = 0.1 … 30, so that a narrow GGX
+// peak and the broad diffuse lobe are both resolved; `points` midpoints per piece in θ_h and
+// over the half circle in φ. The specular albedo table is built with it (32 points); the
+// tests integrate with it as their oracle (200), checked in turn against sampling.
+void for_each_reflection_node(Vec3 v, double alpha, int points,
+                              const std::function<void(Vec3 l, double weight)>& visit);
 
 struct BrdfSample {
   Vec3 l;          // unit; below the surface when the sample is lost (weight 0)

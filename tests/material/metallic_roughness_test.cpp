@@ -24,32 +24,10 @@ Vec3 view_at(double theta_deg) {
   return {std::sin(t), 0, std::cos(t)};
 }
 
-// ∫ g(l) dω_l over the hemisphere of l about the normal, for viewer v: in half-vector space
-// (dω_l = 4 (v·h) dω_h), θ_h in pieces broken at atan(kα) so that a narrow GGX peak and the
-// broad diffuse lobe are both resolved; midpoints, 200 per piece in θ_h and 256 in φ.
+// ∫ g(l) dω_l over the hemisphere of l about the normal for viewer v, at 200 points per piece.
 double quadrature(const std::function<double(Vec3)>& g, Vec3 v, double alpha) {
-  std::vector<double> breaks{0};
-  for (const double k : {0.1, 0.3, 1.0, 3.0, 10.0, 30.0}) breaks.push_back(std::atan(k * alpha));
-  breaks.push_back(kPi / 2);
-  constexpr int kTheta = 200, kPhi = 256;
   double sum = 0;
-  for (std::size_t piece = 0; piece + 1 < breaks.size(); ++piece) {
-    const double a = breaks[piece], b = breaks[piece + 1];
-    const double dt = (b - a) / kTheta;
-    for (int i = 0; i < kTheta; ++i) {
-      const double theta = a + (i + 0.5) * dt;
-      for (int j = 0; j < kPhi; ++j) {
-        const double phi = (j + 0.5) * 2 * kPi / kPhi;
-        const Vec3 h{std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
-                     std::cos(theta)};
-        const double v_dot_h = dot(v, h);
-        if (v_dot_h <= 0) continue;
-        const Vec3 l = h * (2 * v_dot_h) - v;
-        if (l.z <= 0) continue;
-        sum += g(l) * 4 * v_dot_h * std::sin(theta) * dt * (2 * kPi / kPhi);
-      }
-    }
-  }
+  for_each_reflection_node(v, alpha, 200, [&](Vec3 l, double w) { sum += g(l) * w; });
   return sum;
 }
 
