@@ -168,8 +168,7 @@ TEST(ReferencePortal, OverhangOutsideTheWindowRemovesTheSkyAndSunItBlocks) {
   json open = testing::window_room_json(window_room());
   open["sensors"] = floor_sensors(points);
   json shaded = open;
-  shaded["geometry"].push_back(
-      testing::quad_json({-20, 2.1, 5}, {0, 0, overhang}, {44, 0, 0}, "room"));
+  shaded["geometry"].push_back(testing::quad({-20, 2.1, 5}, {0, 0, overhang}, {44, 0, 0}, "room"));
   const std::vector<Rgb> e_open = trace_sensors(open, {sunny_sky(altitude, e_sun)});
   const std::vector<Rgb> e_shaded = trace_sensors(shaded, {sunny_sky(altitude, e_sun)});
   const double sun = e_sun * std::sin(altitude * kPi / 180);
@@ -224,7 +223,7 @@ TEST(ReferencePortal, ReflectedDaylightIsCountedOnce) {
        {{"floor", {{"albedo", {rho, rho, rho}}}},
         {"glass", {{"albedo", {0, 0, 0}}, {"portal", true}}}}},
       {"geometry",
-       {testing::quad_json({-2, 0, -2}, {0, 0, 4}, {4, 0, 0}, "floor"),
+       {testing::quad({-2, 0, -2}, {0, 0, 4}, {4, 0, 0}, "floor"),
         {{"type", "sphere"},
          {"center", {0, 0, 0}},
          {"radius", 3},

@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "math/vec3.h"
+#include "support/scene_json.h"
 
 namespace relight::testing {
 
@@ -77,14 +78,6 @@ inline double window_factor(Vec3 p) {
                                    kWindow.v1 - p.y, 5 - p.z);
 }
 
-inline nlohmann::json quad_json(Vec3 corner, Vec3 u, Vec3 v, const std::string& material) {
-  return {{"type", "quad"},
-          {"corner", {corner.x, corner.y, corner.z}},
-          {"u", {u.x, u.y, u.z}},
-          {"v", {v.x, v.y, v.z}},
-          {"material", material}};
-}
-
 // The rectangle corner + s·U + t·V (U, V unit; s in [0, lu], t in [0, lv]) as quads whose
 // normal is U × V (or V × U when flipped), with `hole` cut out and filled with `glass`.
 inline void add_pierced_rect(nlohmann::json& geometry, Vec3 corner, Vec3 U, double lu, Vec3 V,
@@ -93,7 +86,7 @@ inline void add_pierced_rect(nlohmann::json& geometry, Vec3 corner, Vec3 U, doub
   const auto add = [&](double s0, double s1, double t0, double t1, const std::string& m) {
     if (s1 <= s0 || t1 <= t0) return;
     const Vec3 c = corner + U * s0 + V * t0, u = U * (s1 - s0), v = V * (t1 - t0);
-    geometry.push_back(flip ? quad_json(c, v, u, m) : quad_json(c, u, v, m));
+    geometry.push_back(flip ? quad(c, v, u, m) : quad(c, u, v, m));
   };
   if (!hole) {
     add(0, lu, 0, lv, wall);
