@@ -78,8 +78,9 @@ bool ObjectLighting::set_state(std::span<const MovablePlacement> placements) {
   if (std::equal(placements.begin(), placements.end(), placements_.begin())) return false;
   for (std::size_t k = 0; k < placements.size(); ++k) {
     const bool pending = std::find(moved_.begin(), moved_.end(), k) != moved_.end();
-    if (placements[k] != placements_[k] && !pending)
+    if (placements[k] != placements_[k] && !pending) {
       moved_.push_back(static_cast<std::uint32_t>(k));
+    }
   }
   placements_.assign(placements.begin(), placements.end());
   if (!lit_) lit_ = std::move(placed_);  // where the objects were when last lit
