@@ -4,7 +4,7 @@ BUILD ?= build
 JOBS  ?= 2
 DEMO_OUT ?= out/demo
 
-.PHONY: all bootstrap build demo test bench install format clean
+.PHONY: all bootstrap build demo test bench fuzz install format clean
 
 all: build
 
@@ -38,6 +38,13 @@ bench: build
 	@BUILD=$(BUILD) scripts/bench-dragon.sh
 	@BUILD=$(BUILD) scripts/bench-dragon.sh dragon-window
 	@BUILD=$(BUILD) scripts/bench-nearfield.sh
+
+# Fuzzing (issue 16): libFuzzer targets built with clang, ASan and UBSan in build-fuzz, each run
+# FUZZ_SECONDS (60) from its seed corpus; exits non-zero on any crash. Not part of `make test`,
+# which replays the corpora (seeds and regression inputs) through the normal build.
+FUZZ_SECONDS ?= 60
+fuzz:
+	@FUZZ_SECONDS=$(FUZZ_SECONDS) JOBS=$(JOBS) scripts/fuzz.sh
 
 format:
 	@clang-format -i $$(git ls-files 'src/*.cpp' 'src/*.h' 'tests/*.cpp' 'tests/*.h' 'bench/*.cpp')

