@@ -288,12 +288,9 @@ void ObjectLighting::update(const ObjectLightInputs& in, bool light_changed) {
   timings_.direct_seconds = seconds_since(start);
 
   start = std::chrono::steady_clock::now();
-  // D = ΔE_d + [C; H] · ρE0 + the windows' light the objects gain or hide. Transfer rows:
-  // room receiver r is row r, object vertex q row R + q (object_transfer.h); solver rows: room
-  // vertices, object vertices, sensors — the first two also the unified columns.
-  const auto unified = [&](std::size_t row) {
-    return row < vertices ? row : (row < receivers ? row + objects : row - receivers + vertices);
-  };
+  // D = ΔE_d + [C; H] · ρE0 + the windows' light the objects gain or hide (rows, columns and
+  // solver rows: ObjectIndexing).
+  const ObjectIndexing indexing(room, placed_);
   // ρE0 per column (objects have no light in E0).
   std::fill(static_light_.begin(), static_light_.end(), 0.0f);
   for (std::size_t i = 0; i < 3 * vertices; ++i) static_light_[i] = albedo_[i] * in.room[i];
@@ -324,7 +321,7 @@ void ObjectLighting::update(const ObjectLightInputs& in, bool light_changed) {
   timings_.bounces = solve_bounces_rgb(op, source_, indirect_, warm_, bounce);
   warm_ = true;
   for (std::size_t r = 0; r < receivers; ++r) {
-    const std::size_t u = unified(r);
+    const std::size_t u = indexing.solver_row(r);
     for (std::size_t k = 0; k < 3; ++k) {
       room_delta_[3 * r + k] = source_[3 * u + k] + indirect_[3 * u + k];
       room_delta_direct_[3 * r + k] = direct_[3 * u + k];
@@ -359,15 +356,13 @@ void ObjectLighting::apply_object_rows(std::span<const float> light, std::span<f
   const RuntimeScene& room = *room_;
   const std::size_t vertices = room.vertex_count(), receivers = room.receivers();
   const std::size_t objects = placed_.vertex_count();
-  const auto unified = [&](std::size_t row) {
-    return row < vertices ? row : (row < receivers ? row + objects : row - receivers + vertices);
-  };
+  const ObjectIndexing indexing(room, placed_);
   // Every object's cone rows (rows of different objects are the same receivers: one object at
   // a time), then the base rows. Sensors take no rows from proxies.
   if (sensors_only) {
     for (const ObjectRows& cone : transfer_.cones) {
       for (std::size_t row = vertices; row < receivers; ++row) {
-        add_row(cone, row, light, &out[3 * unified(row)]);
+        add_row(cone, row, light, &out[3 * indexing.solver_row(row)]);
       }
     }
     return;
@@ -376,7 +371,7 @@ void ObjectLighting::apply_object_rows(std::span<const float> light, std::span<f
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, cone.rows(), 1024), [&](const auto& rr) {
       for (std::size_t row = rr.begin(); row != rr.end(); ++row) {
         if (cone.first[row] != cone.first[row + 1]) {
-          add_row(cone, row, light, &out[3 * unified(row)]);
+          add_row(cone, row, light, &out[3 * indexing.solver_row(row)]);
         }
       }
     });
@@ -396,7 +391,7 @@ void ObjectLighting::apply_object_rows(std::span<const float> light, std::span<f
         float* sum = &proxy_values_[3 * (l * count + j)];
         sum[0] = sum[1] = sum[2] = 0;
         if (l + 1 < layers) {
-          add_row(transfer_.cones[l], c < vertices ? c : receivers + (c - vertices), light, sum);
+          add_row(transfer_.cones[l], indexing.row(c), light, sum);
         } else if (c >= vertices) {
           add_row(transfer_.base, c - vertices, light, sum);
         }
@@ -413,12 +408,11 @@ void ObjectLighting::add_glass_light(const GlassLuminance& glass, std::span<floa
   const std::size_t objects = placed_.vertex_count();
   const ReceiverProxies& proxies = transfer_.proxies;
   const std::size_t layers = transfer_.cones.size() + 1, count = proxies.proxies.size();
-  // Solver row and proxy (−1: none) of a transfer row.
-  const auto unified = [&](std::size_t row) {
-    return row < vertices ? row : (row < receivers ? row + objects : row - receivers + vertices);
-  };
+  const ObjectIndexing indexing(room, placed_);
+  // The proxy (−1: none) of a transfer row's vertex.
   const auto proxy = [&](std::size_t row) {
-    return row >= vertices && row < receivers ? -1 : proxies.proxy_of[unified(row)];
+    const std::size_t c = indexing.column(row);
+    return c == ObjectIndexing::kNone ? -1 : proxies.proxy_of[c];
   };
   std::fill(proxy_values_.begin(), proxy_values_.end(), 0.0f);
   const auto add = [&](const GlassHit& g, std::size_t row, std::size_t layer) {
@@ -427,7 +421,7 @@ void ObjectLighting::add_glass_light(const GlassLuminance& glass, std::span<floa
                             static_cast<float>(l.b)};
     const std::int32_t j = proxy(row);
     for (std::size_t k = 0; k < 3; ++k) {
-      out[3 * unified(row) + k] += light[k];
+      out[3 * indexing.solver_row(row) + k] += light[k];
       if (j >= 0) proxy_values_[3 * (layer * count + static_cast<std::size_t>(j)) + k] += light[k];
     }
   };

@@ -158,18 +158,11 @@ FirstHit base_hit(const RuntimeScene& room, const PlacedObjects& objects, const 
   return h;
 }
 
-// The unified column of row `row`'s vertex (object_transfer.h); a sensor has none.
-std::size_t column_of_row(const RuntimeScene& room, std::size_t row) {
-  if (row < room.vertex_count()) return row;
-  if (row < room.receivers()) return ~std::size_t{0};
-  return room.vertex_count() + (row - room.receivers());
-}
-
 // Whether row `row` has rays toward object k: k visible, the origin not on k nor on a hidden
 // object, the row not taken from proxies.
 bool has_cone_row(const RuntimeScene& room, const PlacedObjects& objects, std::size_t k,
                   std::span<const std::uint8_t> proxied, const Origin& o, std::size_t row) {
-  const std::size_t column = column_of_row(room, row);
+  const std::size_t column = ObjectIndexing(room, objects).column(row);
   return objects.visible(k) && o.own != k && (o.own == Origin::kNone || objects.visible(o.own)) &&
          !(column < proxied.size() && proxied[column] != 0);
 }
@@ -497,6 +490,7 @@ void retrace_object_transfer(ObjectTransfer& t, const RuntimeScene& room,
                              std::span<const std::uint32_t> moved) {
   const std::size_t receivers = room.receivers(), rows = receivers + objects.vertex_count();
   const std::size_t columns = room.vertex_count() + objects.vertex_count();
+  const ObjectIndexing indexing(room, objects);
   std::vector<bool> is_moved(objects.object_count(), false);
   std::vector<BoundingSphere> changed;  // where the moved objects were, and are now
   for (const std::uint32_t k : moved) {
@@ -530,7 +524,7 @@ void retrace_object_transfer(ObjectTransfer& t, const RuntimeScene& room,
     std::vector<std::uint8_t> how(rows, 0);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rows, 1024), [&](const auto& range) {
       for (std::size_t row = range.begin(); row != range.end(); ++row) {
-        const std::size_t column = column_of_row(room, row);
+        const std::size_t column = indexing.column(row);
         if (origin_moved[row]) {
           how[row] = 1;
           continue;

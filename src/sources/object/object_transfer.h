@@ -77,6 +77,32 @@ struct ObjectRows {
   std::size_t rows() const { return first.size() - 1; }
 };
 
+// The three numberings of the objects' term: transfer rows — the room's receivers (vertices,
+// then sensors), then the object vertices (row R + q for vertex q); unified columns — room
+// vertices, then object vertices (column V + q); and the bounce solver's rows — room vertices,
+// object vertices, sensors (the columns first).
+struct ObjectIndexing {
+  std::size_t vertices = 0, receivers = 0, object_vertices = 0;  // V, R, Q
+  static constexpr std::size_t kNone = ~std::size_t{0};
+
+  ObjectIndexing(const RuntimeScene& room, const PlacedObjects& objects)
+      : vertices(room.vertex_count()),
+        receivers(room.receivers()),
+        object_vertices(objects.vertex_count()) {}
+  // The unified column of transfer row `row`'s vertex; kNone for a sensor.
+  std::size_t column(std::size_t row) const {
+    if (row < vertices) return row;
+    return row < receivers ? kNone : vertices + (row - receivers);
+  }
+  // The transfer row of unified column c.
+  std::size_t row(std::size_t c) const { return c < vertices ? c : receivers + (c - vertices); }
+  // The solver row of transfer row `row`.
+  std::size_t solver_row(std::size_t row) const {
+    if (row < vertices) return row;
+    return row < receivers ? row + object_vertices : vertices + (row - receivers);
+  }
+};
+
 // Rows are numbered over every receiver that gathers: the room's receivers (vertices, then
 // sensors), then the object vertices (PlacedObjects order): row R + q for vertex q.
 struct ObjectTransfer {
