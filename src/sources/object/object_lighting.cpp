@@ -19,20 +19,6 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// Whether a sphere comes within `margin` of the segment from a to b.
-bool segment_near_sphere(Vec3 a, Vec3 b, const BoundingSphere& s, double margin) {
-  const Vec3 ab = b - a;
-  const double len2 = dot(ab, ab);
-  const double t = len2 > 0 ? std::clamp(dot(s.centre - a, ab) / len2, 0.0, 1.0) : 0.0;
-  return length(a + ab * t - s.centre) <= s.radius + margin;
-}
-
-// Whether a sphere comes within `margin` of the ray from a along unit d.
-bool ray_near_sphere(Vec3 a, Vec3 d, const BoundingSphere& s, double margin) {
-  const double t = std::max(0.0, dot(s.centre - a, d));
-  return length(a + d * t - s.centre) <= s.radius + margin;
-}
-
 void put(std::vector<float>& v, std::size_t row, Rgb e) {
   v[3 * row] = static_cast<float>(e.r);
   v[3 * row + 1] = static_cast<float>(e.g);

@@ -60,6 +60,11 @@ bool passes_through(const PlacedObjects& objects, std::size_t k, const RayTracer
 // the farthest one.
 BoundingSphere sphere_around(std::span<const Vec3> points);
 
+// Whether a sphere comes within `margin` of the segment from a to b.
+bool segment_near_sphere(Vec3 a, Vec3 b, const BoundingSphere& s, double margin);
+// Whether a sphere comes within `margin` of the ray from a along unit d (a inside it counts).
+bool ray_near_sphere(Vec3 a, Vec3 d, const BoundingSphere& s, double margin);
+
 // Throws std::invalid_argument when the placements are not one per object.
 PlacedObjects place_objects(std::span<const ObjectMesh> objects,
                             std::span<const MovablePlacement> placements);

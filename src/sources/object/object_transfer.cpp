@@ -250,15 +250,9 @@ void trace_cone_row(const RuntimeScene& room, const PlacedObjects& objects,
 
 // Whether the ray from `origin` along unit `dir` meets one of `spheres`.
 bool meets_any(Vec3 origin, Vec3 dir, std::span<const BoundingSphere> spheres) {
-  for (const BoundingSphere& s : spheres) {
-    if (s.radius <= 0) continue;
-    const Vec3 to_centre = s.centre - origin;
-    const double t = dot(to_centre, dir);
-    const double d2 = dot(to_centre, to_centre);
-    if (d2 <= s.radius * s.radius) return true;
-    if (t > 0 && d2 - t * t <= s.radius * s.radius) return true;
-  }
-  return false;
+  return std::any_of(spheres.begin(), spheres.end(), [&](const BoundingSphere& s) {
+    return s.radius > 0 && ray_near_sphere(origin, dir, s, 0);
+  });
 }
 
 // Row `row` of unmoved object k's cone rows, from an origin that did not move, after objects
