@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "engine/material_reflectance.h"
+
 namespace relight {
 
 Receivers make_receivers(const Scene& scene, const PreparedMesh& mesh) {
@@ -13,8 +15,7 @@ Receivers make_receivers(const Scene& scene, const PreparedMesh& mesh) {
   r.normals = mesh.normals;
   r.albedo.reserve(r.vertex_count + r.sensor_count);
   for (std::uint32_t m : mesh.vertex_material) {
-    const Material& material = scene.materials.at(m);
-    r.albedo.push_back(material.portal ? Rgb{} : material.albedo);
+    r.albedo.push_back(bounce_albedo(scene.materials.at(m)));
   }
   for (const SensorSet& s : scene.sensors) {
     for (const Vec3& p : s.points) {

@@ -36,6 +36,8 @@
 
 namespace relight {
 
+inline constexpr std::uint32_t kNoMaterial = 0xffffffffu;
+
 // The stored scene as the run time reads it (sources/transfer_file.h fills it from a .rlt or
 // from a precompute in memory).
 struct RuntimeSceneView {
@@ -48,6 +50,9 @@ struct RuntimeSceneView {
   std::vector<Triangle> glass_triangles;    // the portals' glass
   std::vector<std::uint32_t> glass_portal;  // per glass triangle: its portal (scene order)
   std::vector<float> vertex_albedo;         // 3 per vertex
+  // Per vertex its material (scene order), for live material edits; empty when the file
+  // predates MMAT; kNoMaterial for a vertex no triangle uses.
+  std::vector<std::uint32_t> vertex_material;
   // The gather operator in compressed rows (receivers × vertices), empty when the precompute
   // did not keep it: row r's entries are [rows[r], rows[r + 1]).
   std::span<const std::uint32_t> gather_rows, gather_columns;

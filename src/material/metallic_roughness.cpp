@@ -193,6 +193,16 @@ Rgb specular_directional_albedo(const MetallicRoughness& m, double n_dot_v) {
   return f0 * a + Rgb{b, b, b};
 }
 
+Rgb hemispherical_albedo(const MetallicRoughness& m) {
+  const auto [a, b] = SpecularAlbedoTable::get().mean(m.roughness);
+  const Rgb f0 = f0_of(m);
+  const auto channel = [&](double f0c, double albedo) {
+    const double mean = f0c * a + b;
+    return mean + (1 - mean) * (1 - m.metallic) * albedo;
+  };
+  return {channel(f0.r, m.albedo.r), channel(f0.g, m.albedo.g), channel(f0.b, m.albedo.b)};
+}
+
 Rgb metallic_roughness_brdf(const MetallicRoughness& m, Vec3 n, Vec3 l, Vec3 v) {
   const double n_dot_l = dot(n, l), n_dot_v = dot(n, v);
   if (n_dot_l <= 0 || n_dot_v <= 0) return {};

@@ -50,6 +50,12 @@ Rgb metallic_roughness_brdf(const MetallicRoughness& m, Vec3 n, Vec3 l, Vec3 v);
 // (a table over n·v and roughness, bilinear; within 1e-3 of quadrature).
 Rgb specular_directional_albedo(const MetallicRoughness& m, double n_dot_v);
 
+// The hemispherical–hemispherical albedo per channel: the cosine-weighted mean over incident
+// directions of the directional albedo, Ē_s + (1 − Ē_s)(1 − metallic) ρ (the coupled diffuse
+// layer reflects (1 − E_s(v))(1 − metallic) ρ of light from v). What a Lambertian surface of
+// the same flux budget would reflect.
+Rgb hemispherical_albedo(const MetallicRoughness& m);
+
 // Quadrature nodes over the hemisphere of l about the normal (0, 0, 1), for a viewer v in the
 // xz-plane and integrands symmetric about that plane (as f, its pdf and cos θ_l are):
 // visit(l, w) per node, Σ w g(l) ≈ ∫ g(l) dω_l. Nodes are laid in half-vector space

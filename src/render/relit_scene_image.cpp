@@ -18,9 +18,10 @@ struct ShownScene {
   std::optional<RayTracer> tracer;  // room's opaque triangles and the objects'; ids: triangles
 };
 
-ShownScene shown_with_objects(const TransferFile& t, const ObjectLighting& objects) {
+ShownScene shown_with_objects(const TransferFile& t, std::span<const float> room_albedo,
+                              const ObjectLighting& objects) {
   const PlacedObjects& placed = objects.placed();
-  ShownScene s{t.positions, t.triangles, {t.vertex_albedo.begin(), t.vertex_albedo.end()}, {}};
+  ShownScene s{t.positions, t.triangles, {room_albedo.begin(), room_albedo.end()}, {}};
   const auto base = static_cast<std::uint32_t>(t.positions.size());
   s.positions.insert(s.positions.end(), placed.positions.begin(), placed.positions.end());
   s.albedo.insert(s.albedo.end(), placed.albedo.begin(), placed.albedo.end());
@@ -59,12 +60,13 @@ ShadedImages render_relit_scene(RelitScene& scene, const Camera& camera, int wid
   const Relighter& lit = scene.relighter();
   const ObjectLighting* objects = lit.objects();
   const std::optional<ShownScene> shown =
-      objects != nullptr ? std::optional(shown_with_objects(t, *objects)) : std::nullopt;
+      objects != nullptr ? std::optional(shown_with_objects(t, lit.vertex_albedo(), *objects))
+                         : std::nullopt;
   const RayTracer& visible = shown ? *shown->tracer : room;
   const std::vector<Vec3>& positions = shown ? shown->positions : t.positions;
   const std::vector<Triangle>& triangles = shown ? shown->triangles : t.triangles;
   const std::span<const float> albedo =
-      shown ? std::span<const float>(shown->albedo) : t.vertex_albedo;
+      shown ? std::span<const float>(shown->albedo) : lit.vertex_albedo();
   const Occluders occluders = objects != nullptr ? objects->occluders() : Occluders(room);
   const auto background = [&](Vec3 origin, Vec3 dir) {
     const RayHit hit = windows.intersect({origin, dir});

@@ -20,6 +20,7 @@ LightingState default_lighting_state(const Scene& scene) {
   }
   for (const Emitter& e : scene.emitters) s.emitters.push_back(emitter_state(e));
   s.objects.resize(scene.objects.size());
+  s.materials = scene.materials;
   return s;
 }
 
@@ -131,6 +132,23 @@ std::size_t emitter_index(const Scene& scene, const JsonNode& where, const std::
   where.fail("no emitter named \"" + name + "\" in the precomputed scene");
 }
 
+std::size_t material_index(const Scene& scene, const JsonNode& where, const std::string& name) {
+  for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+    if (scene.materials[i].name == name) return i;
+  }
+  where.fail("no material named \"" + name + "\" in the precomputed scene");
+}
+
+// A material edit: the scene's own keys and rules (scene/scene_loader.h read_reflectance).
+void apply_material(Material& m, const JsonNode& node) {
+  if (!node.is_object()) node.fail("expected a material: albedo, metallic, roughness");
+  node.expect_keys({"albedo", "metallic", "roughness"});
+  if (m.portal) {
+    node.fail("\"" + m.name + "\" is window glass: its look is its portal's tint and frost");
+  }
+  read_reflectance(node, m);
+}
+
 void apply_emitter(EmitterState& e, const JsonNode& node) {
   node.expect_keys({"translate", "rotate_deg", "luminance", "color", "on"});
   apply_placement(e, node);
@@ -155,7 +173,16 @@ void apply_portal(PortalState& s, const Scene& scene, const JsonNode& node,
 void apply_lighting_state(LightingState& state, const Scene& scene, const nlohmann::json& document,
                           const std::string& where, const std::filesystem::path& base_dir) {
   const JsonNode root(document, where, "/");
-  root.expect_keys({"luminaires", "portals", "exterior", "emitters", "objects"});
+  root.expect_keys({"luminaires", "portals", "exterior", "emitters", "objects", "materials"});
+  if (state.materials.size() != scene.materials.size()) state.materials = scene.materials;
+  if (const auto materials = root.find("materials")) {
+    if (!materials->is_object())
+      materials->fail("expected an object mapping material names to materials");
+    for (const auto& [name, unused] : materials->value().items()) {
+      const JsonNode node = materials->at(name);
+      apply_material(state.materials[material_index(scene, node, name)], node);
+    }
+  }
   if (const auto lums = root.find("luminaires")) {
     if (!lums->is_object()) lums->fail("expected an object mapping luminaire names to states");
     for (const auto& [name, unused] : lums->value().items()) {
@@ -229,6 +256,7 @@ Scene scene_with_state(const Scene& scene, const LightingState& state) {
     }
   }
   out.objects.clear();
+  if (state.materials.size() == scene.materials.size()) out.materials = state.materials;
   for (std::size_t p = 0; p < out.portals.size(); ++p) {
     out.portals[p].environment = state.portals[p].environment;
     out.portals[p].tint = state.portals[p].tint;

@@ -22,6 +22,9 @@ struct LightingState {
   std::vector<PortalState> portals;        // scene order
   std::vector<EmitterState> emitters;      // scene order
   std::vector<MovablePlacement> objects;   // movable objects, scene order
+  // The scene's materials with the state's edits (albedo, metallic, roughness; issue 13),
+  // scene order. Window glass is not edited here (its look is its portal's tint and frost).
+  std::vector<Material> materials;
 };
 
 LightingState default_lighting_state(const Scene& scene);
@@ -37,7 +40,7 @@ LightingState load_lighting_state(const Scene& scene, const std::filesystem::pat
 // luminaire's aim, C0, distribution, colour and dimmer (0 when off), each portal's environment,
 // tint and frost; the movable objects placed into `geometry` (hidden ones left out, the
 // scene's `objects` then empty). Emitters and exterior objects keep the scene's geometry: their
-// placements are the state's (place_emitters, placed_exterior).
+// placements are the state's (place_emitters, placed_exterior); the materials as edited.
 Scene scene_with_state(const Scene& scene, const LightingState& state);
 
 }  // namespace relight

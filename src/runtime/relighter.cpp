@@ -7,18 +7,23 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "engine/material_reflectance.h"
 #include "engine/transfer_blocks.h"
 
 namespace relight {
 
 namespace {
 
-std::optional<RuntimeScene> make_runtime_scene(const TransferView& transfer, const Scene& scene) {
-  if (scene.portals.empty() && scene.emitters.empty() && scene.objects.empty()) return std::nullopt;
+BounceSettings bounce_settings(const Scene& scene) {
   BounceSettings bounce;
   bounce.tolerance = scene.precompute.tolerance;
   bounce.max_bounces = scene.precompute.max_bounces;
-  return std::optional<RuntimeScene>(std::in_place, transfer.scene, bounce);
+  return bounce;
+}
+
+std::optional<RuntimeScene> make_runtime_scene(const TransferView& transfer, const Scene& scene) {
+  if (scene.portals.empty() && scene.emitters.empty() && scene.objects.empty()) return std::nullopt;
+  return std::optional<RuntimeScene>(std::in_place, transfer.scene, bounce_settings(scene));
 }
 
 }  // namespace
@@ -32,7 +37,9 @@ Relighter::Relighter(TransferView transfer, const Scene& scene, RelighterSetting
           scene, settings.window),
       portals_({transfer_.portals, transfer_.receivers, transfer_.portal_sh_order},
                runtime_ ? &*runtime_ : nullptr, scene),
-      state_(default_lighting_state(scene)) {
+      state_(default_lighting_state(scene)),
+      bounce_(bounce_settings(scene)),
+      vertex_albedo_(transfer_.scene.vertex_albedo) {
   terms_.push_back({&luminaires_, {}});
   terms_.push_back({&portals_, {}});
   if (!scene.emitters.empty()) {
@@ -64,15 +71,78 @@ void Relighter::set_state(const LightingState& state) {
     if (changed[t]) terms_[t].sums[0].valid = terms_[t].sums[1].valid = false;
   }
   if (objects_ && objects_->set_state(state.objects)) objects_dirty_ = true;
+  // A state made without materials (LightingState{} filled by hand) keeps the scene's.
+  const std::vector<Material> materials =
+      state.materials.empty() ? state_.materials : state.materials;
+  set_materials(materials);
   state_ = state;
+  state_.materials = materials;
+}
+
+void Relighter::set_materials(const std::vector<Material>& materials) {
+  if (materials.size() != state_.materials.size()) {
+    throw std::invalid_argument("Relighter: the state's materials are not the scene's");
+  }
+  if (materials == state_.materials) return;
+  const std::vector<std::uint32_t>& material_of = transfer_.scene.vertex_material;
+  if (material_of.empty()) {
+    throw std::invalid_argument(
+        "Relighter: this transfer file does not record the vertices' materials, which live "
+        "material edits need (run relight precompute again)");
+  }
+  // The vertices' albedo under the edited materials; a vertex no triangle uses keeps its own.
+  const std::span<const float> stored = transfer_.scene.vertex_albedo;
+  for (std::size_t v = 0; v < material_of.size(); ++v) {
+    const Rgb a = material_of[v] == kNoMaterial
+                      ? Rgb{stored[3 * v], stored[3 * v + 1], stored[3 * v + 2]}
+                      : bounce_albedo(materials.at(material_of[v]));
+    vertex_albedo_[3 * v] = static_cast<float>(a.r);
+    vertex_albedo_[3 * v + 1] = static_cast<float>(a.g);
+    vertex_albedo_[3 * v + 2] = static_cast<float>(a.b);
+  }
+  if (!albedo_edit_) {
+    if (transfer_.scene.gather_rows.empty()) {
+      throw std::invalid_argument(
+          "Relighter: live material edits need the gather operator in the transfer file (run "
+          "relight precompute again)");
+    }
+    if (!runtime_) runtime_.emplace(transfer_.scene, bounce_);
+    albedo_edit_.emplace(runtime_->gather(), stored, bounce_);
+    edit_total_.assign(3 * transfer_.receivers, 0.0f);
+    edit_delta_.assign(3 * transfer_.receivers, 0.0f);
+  }
+  albedo_edit_->set_albedo(vertex_albedo_);
+  edit_dirty_ = true;
+  if (objects_) {
+    objects_->set_albedo(vertex_albedo_, materials);
+    objects_dirty_ = true;
+  }
 }
 
 // Points on a luminous opening for the objects' shadows at sensors (vertices take 16).
 constexpr int kSensorOpeningSamples = 256;
 
+bool Relighter::sum_edited(std::span<float> total) {
+  bool changed = sum_terms(1, total);
+  if (!albedo_edit_) return changed;
+  // A converged edit needs solving again after the light or the edit changed, or after an
+  // approximate frame; an approximate one only after a change.
+  const bool approximate = material_bounces_ >= 0;
+  if (changed || edit_dirty_ || (!approximate && !edit_final_)) {
+    // After a converged solve X starts from it (a dragged colour slider, a dimmer moved).
+    albedo_edit_->solve(total, edit_delta_, material_bounces_, edit_solved_ && edit_final_);
+    edit_solved_ = true;
+    edit_final_ = !approximate || !albedo_edit_->active();
+    edit_dirty_ = false;
+    changed = true;
+  }
+  for (std::size_t i = 0; i < total.size(); ++i) total[i] += edit_delta_[i];
+  return changed;
+}
+
 void Relighter::update_objects() {
   // E0 with direct light, summed again when a term's state changed.
-  const bool light_changed = sum_terms(1, room_light_);
+  const bool light_changed = sum_edited(room_light_);
   if (!light_changed && !objects_dirty_) return;
   const std::vector<LuminaireLight> lights = luminaires_.lights(luminaire_specs_);
   const std::vector<LuminaireLight> sensor_lights =
@@ -95,7 +165,15 @@ void Relighter::relight(std::span<float> out, bool include_direct) {
   if (out.size() != 3 * n) throw std::invalid_argument("Relighter: output size mismatch");
   if (emitters_) emitters_->update();  // its sampling and bounce, if its state changed
   if (!objects_) {
-    sum_terms(include_direct ? 1 : 0, out);
+    if (!albedo_edit_) {
+      sum_terms(include_direct ? 1 : 0, out);
+    } else if (include_direct) {
+      sum_edited(out);
+    } else {
+      sum_edited(edit_total_);
+      sum_terms(0, out);
+      for (std::size_t i = 0; i < out.size(); ++i) out[i] += edit_delta_[i];
+    }
     return;
   }
   update_objects();
@@ -103,6 +181,9 @@ void Relighter::relight(std::span<float> out, bool include_direct) {
     std::copy(room_light_.begin(), room_light_.end(), out.begin());
   } else {
     sum_terms(0, out);
+    if (albedo_edit_) {
+      for (std::size_t i = 0; i < out.size(); ++i) out[i] += edit_delta_[i];
+    }
   }
   objects_->add_to_room(out, include_direct);
 }

@@ -13,6 +13,7 @@
 #include <span>
 #include <vector>
 
+#include "engine/albedo_edit.h"
 #include "light/distribution.h"
 #include "math/sh_window.h"
 #include "runtime/lighting_state.h"
@@ -41,7 +42,10 @@ class Relighter {
   void set_state(const LightingState& state);
   const LightingState& state() const { return state_; }
 
-  // Irradiance per receiver, RGB interleaved: out.size() == 3 · receivers. Without
+  // Irradiance per receiver, RGB interleaved: out.size() == 3 · receivers. With the
+  // state's material edits (engine/albedo_edit.h), the interreflected light of the edited
+  // room: converged, or after set_material_bounces(n ≥ 0), n bounces of the edit's light (a
+  // first, approximate frame; material_edit_final() says which the last relight() gave). Without
   // direct light, what renderers that evaluate direct light per pixel still need: the
   // interreflected light and the portals' direct skylight, but not the luminaires' direct
   // light, the portals' exact suns (see suns()) nor the emitters' direct light (see
@@ -54,6 +58,13 @@ class Relighter {
   std::span<const PortalSun> suns() const { return portals_.suns(); }
   SunGeometry sun_geometry() const { return portals_.sun_geometry(); }
   const PortalSetLighting& portals() const { return portals_; }
+  // The light a material edit bounces: −1 converged (the default), n ≥ 0 that many bounces.
+  void set_material_bounces(int bounces) { material_bounces_ = bounces; }
+  // Whether the last relight() gave the edited materials' converged light (true without edits).
+  bool material_edit_final() const { return edit_final_; }
+  // What each vertex reflects under the state's materials, 3 per vertex (ρE/π shading).
+  std::span<const float> vertex_albedo() const { return vertex_albedo_; }
+
   // The scene's receivers, occluders and gather operator for light computed at run time;
   // null for a scene with no portals, emitters or movable objects.
   const RuntimeScene* runtime_scene() const { return runtime_ ? &*runtime_ : nullptr; }
@@ -102,6 +113,10 @@ class Relighter {
   // out = Σ over terms of their sums for `slot` ([include_direct]), each term summed again
   // when its state changed; returns whether any was.
   bool sum_terms(std::size_t slot, std::span<float> out);
+  // total = every term's light with direct, corrected by the material edit; returns whether
+  // it changed since the last call.
+  bool sum_edited(std::span<float> total);
+  void set_materials(const std::vector<Material>& materials);
   void update_objects();
 
   TransferView transfer_;
@@ -114,7 +129,15 @@ class Relighter {
   std::vector<Term> terms_;  // luminaires, portals, emitters (when any)
   std::optional<ObjectLighting> objects_;
   std::vector<float> room_light_;  // with objects: every term's light, direct included (E0)
-  bool objects_dirty_ = true;      // placements or E0 changed since the objects' last update
+  // Material edits: the bounce settings, the vertices' albedo under the state's materials,
+  // and the edit's light (made on the first edit: it needs the stored gather operator).
+  BounceSettings bounce_;
+  std::vector<float> vertex_albedo_;  // 3 per vertex
+  std::optional<AlbedoEdit> albedo_edit_;
+  std::vector<float> edit_total_, edit_delta_;  // 3 per receiver
+  bool edit_dirty_ = false, edit_final_ = true, edit_solved_ = false;
+  int material_bounces_ = -1;
+  bool objects_dirty_ = true;  // placements or E0 changed since the objects' last update
   std::size_t last_frame_bytes_ = 0;
 };
 

@@ -46,7 +46,7 @@ std::vector<Rgb> RelitScene::sensor_irradiance() const {
 std::vector<float> RelitScene::vertex_radiance(std::span<const float> irradiance) const {
   std::vector<float> l(3 * transfer_->vertex_count);
   for (std::size_t i = 0; i < l.size(); ++i) {
-    l[i] = static_cast<float>(lambertian_radiance(transfer_->vertex_albedo[i], irradiance[i]));
+    l[i] = static_cast<float>(lambertian_radiance(relighter_->vertex_albedo()[i], irradiance[i]));
   }
   return l;
 }

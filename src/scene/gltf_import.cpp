@@ -289,7 +289,24 @@ class GltfReader {
         const std::vector<double>& f = m.pbrMetallicRoughness.baseColorFactor;
         if (f.size() < 3) fail("material " + std::to_string(material) + ": bad baseColorFactor");
         const std::string name = m.name.empty() ? "material " + std::to_string(material) : m.name;
-        mesh_.materials.push_back({name, Rgb{f[0], f[1], f[2]}});
+        ImportedMaterial imported{name, Rgb{f[0], f[1], f[2]}};
+        // metallicFactor and roughnessFactor (glTF 2.0 §5.19, both 1 when absent) make the
+        // surface glossy only when the file gives either: a file with base colours alone
+        // stays Lambertian, as it imported before materials had these keys.
+        const auto& pbr = m.pbrMetallicRoughness;
+        if (m.values.contains("metallicFactor") || m.values.contains("roughnessFactor")) {
+          const auto unit = [&](double x, const char* key) {
+            if (!(x >= 0 && x <= 1)) {
+              fail("material " + std::to_string(material) + ": " + key +
+                   " must be between 0 and 1");
+            }
+            return x;
+          };
+          imported.glossy = true;
+          imported.metallic = unit(pbr.metallicFactor, "metallicFactor");
+          imported.roughness = unit(pbr.roughnessFactor, "roughnessFactor");
+        }
+        mesh_.materials.push_back(imported);
       }
     }
     return it->second;

@@ -103,6 +103,16 @@ double JsonNode::number_at_least(double lo) const {
   return v;
 }
 
+double JsonNode::unit_interval() const {
+  const double v = number();
+  if (v < 0 || v > 1) {
+    std::ostringstream s;
+    s << "must be between 0 and 1, got " << v;
+    fail(s.str());
+  }
+  return v;
+}
+
 double JsonNode::positive() const {
   const double v = number();
   if (!(v > 0)) {

@@ -41,6 +41,7 @@ class JsonNode {
   double number() const;                    // finite number
   double number_at_least(double lo) const;  // finite, >= lo
   double positive() const;                  // finite, > 0
+  double unit_interval() const;             // finite, 0..1
   int integer_in(int lo, int hi) const;
   bool boolean() const;
   std::string string() const;

@@ -17,7 +17,10 @@ namespace relight {
 
 struct ImportedMaterial {
   std::string name;
-  Rgb albedo;  // linear Rec.709 diffuse reflectance
+  Rgb albedo;  // linear Rec.709 diffuse reflectance (glTF base colour)
+  // glTF metallicFactor / roughnessFactor, when the file gives either (scene/scene.h Material).
+  bool glossy = false;
+  double metallic = 0, roughness = 1;
 };
 
 struct ImportedMesh {

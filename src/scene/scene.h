@@ -17,10 +17,18 @@
 
 namespace relight {
 
+// A surface's material (docs/scene-format.md "Materials"). Lambertian with reflectance
+// `albedo`, unless the scene gives `metallic` or `roughness`: then the glTF 2.0
+// metallic–roughness BRDF (material/metallic_roughness.h) with `albedo` as its base colour.
 struct Material {
   std::string name;
-  Rgb albedo{0.5, 0.5, 0.5};  // diffuse reflectance, linear, 0..1
+  Rgb albedo{0.5, 0.5, 0.5};  // diffuse reflectance (glTF base colour), linear, 0..1
   bool portal = false;        // window glass: an opening to the exterior (daylight issue)
+  bool glossy = false;        // `metallic` or `roughness` given
+  double metallic = 0;        // 0..1 (glTF default when only roughness is given: 0)
+  double roughness = 1;       // 0..1, α = roughness² (glTF default when only metallic is given)
+
+  bool operator==(const Material&) const = default;
 };
 
 // A point luminaire with a type-C distribution. The photometric frame: γ = 0 along

@@ -45,9 +45,21 @@ struct Loader {
     if (!node.is_object()) node.fail("expected an object mapping names to materials");
     for (const auto& [name, unused] : node.value().items()) {
       const JsonNode m = node.at(name);
-      m.expect_keys({"albedo", "portal"});
-      Material material{name, m.at("albedo").rgb_in_unit_range(), false};
+      m.expect_keys({"albedo", "portal", "metallic", "roughness"});
+      Material material{name};
       if (const auto portal = m.find("portal")) material.portal = portal->boolean();
+      if (material.portal) {
+        // Window glass: its look is the portal's tint and frost, not a surface's.
+        if (const auto a = m.find("albedo")) material.albedo = a->rgb_in_unit_range();
+        for (const char* key : {"metallic", "roughness"}) {
+          if (const auto k = m.find(key))
+            k->fail("window glass (\"portal\": true) has no " + std::string(key));
+        }
+      } else {
+        if (!m.has("albedo"))
+          m.fail("missing required key \"albedo\" (only window glass may omit it)");
+        read_reflectance(m, material);
+      }
       add_material(std::move(material));
     }
   }
@@ -102,8 +114,10 @@ struct Loader {
       for (const ImportedMaterial& im : mesh.materials) {
         const std::string name = file_node.string() + "/" + im.name;
         const auto it = material_index.find(name);
-        remap.push_back(it != material_index.end() ? it->second
-                                                   : add_material({name, im.albedo, false}));
+        remap.push_back(
+            it != material_index.end()
+                ? it->second
+                : add_material({name, im.albedo, false, im.glossy, im.metallic, im.roughness}));
       }
       soup.triangle_material.reserve(mesh.triangle_material.size());
       for (std::uint32_t m : mesh.triangle_material) soup.triangle_material.push_back(remap.at(m));
@@ -520,6 +534,18 @@ Scene scene_from_json(const nlohmann::json& document, const fs::path& file,
 
 Scene load_scene(const fs::path& file) {
   return scene_from_json(read_json_file(file), file);
+}
+
+void read_reflectance(const JsonNode& node, Material& material) {
+  if (const auto a = node.find("albedo")) material.albedo = a->rgb_in_unit_range();
+  if (const auto metallic = node.find("metallic")) {
+    material.glossy = true;
+    material.metallic = metallic->unit_interval();
+  }
+  if (const auto roughness = node.find("roughness")) {
+    material.glossy = true;
+    material.roughness = roughness->unit_interval();
+  }
 }
 
 }  // namespace relight

@@ -27,4 +27,8 @@ Scene scene_from_json(const nlohmann::json& document, const std::filesystem::pat
 DistributionSpec parse_distribution(const JsonNode& node, const std::filesystem::path& base_dir,
                                     const EmbeddedFiles* embedded = nullptr);
 
+// A material's reflectance keys (shared with run-time lighting states' material edits):
+// `albedo` when given, `metallic` and `roughness` (0..1; either makes the material glossy).
+void read_reflectance(const JsonNode& node, Material& material);
+
 }  // namespace relight

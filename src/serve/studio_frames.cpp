@@ -106,7 +106,10 @@ std::vector<int> vertex_portals(const TransferFile& t) {
 
 void compute_frame_values(const TransferFile& t, std::span<const int> vertex_portal,
                           std::span<const float> irradiance, std::span<const Rgb> glass_radiance,
-                          FrameValues& out) {
+                          std::span<const float> vertex_albedo, FrameValues& out) {
+  if (vertex_albedo.size() != 3 * t.vertex_count) {
+    throw std::invalid_argument("compute_frame_values: one albedo per vertex expected");
+  }
   out.radiance.resize(3 * t.vertex_count);
   out.illuminance.resize(t.vertex_count);
   out.sensors.resize(t.sensor_count);
@@ -122,7 +125,7 @@ void compute_frame_values(const TransferFile& t, std::span<const int> vertex_por
       continue;
     }
     for (int c = 0; c < 3; ++c) {
-      l[c] = static_cast<float>(lambertian_radiance(t.vertex_albedo[3 * v + c], e[c]));
+      l[c] = static_cast<float>(lambertian_radiance(vertex_albedo[3 * v + c], e[c]));
     }
     out.illuminance[v] = static_cast<float>(photometric(e));
   }

@@ -43,10 +43,12 @@ struct FrameValues {
 };
 
 // `irradiance`: 3 per receiver (vertices, then sensors) as the Relighter writes it;
-// `glass_radiance`: per portal, what its glass vertices show (the shell's mean radiance).
+// `glass_radiance`: per portal, what its glass vertices show (the shell's mean radiance);
+// `vertex_albedo`: 3 per vertex, what the vertices reflect under the state's materials
+// (Relighter::vertex_albedo).
 void compute_frame_values(const TransferFile& transfer, std::span<const int> vertex_portal,
                           std::span<const float> irradiance, std::span<const Rgb> glass_radiance,
-                          FrameValues& out);
+                          std::span<const float> vertex_albedo, FrameValues& out);
 
 // The objects' vertices' values from their albedo and irradiance (3 floats per object vertex
 // each: PlacedObjects::albedo, ObjectLighting::irradiance(true)). Throws

@@ -115,6 +115,9 @@ nlohmann::json hello_message(const TransferFile& t, const std::string& scene_fil
     materials.push_back(
         {{"name", m.name},
          {"albedo", rgb_json(m.albedo)},
+         {"glossy", m.glossy},
+         {"metallic", m.metallic},
+         {"roughness", m.roughness},
          {"portal", portal_of[i] >= 0
                         ? nlohmann::json(scene.portals[static_cast<std::size_t>(portal_of[i])].name)
                         : nlohmann::json(nullptr)}});

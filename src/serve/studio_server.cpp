@@ -116,7 +116,8 @@ struct StudioServer::Impl {
           window_view_radiance(relit->relighter().shell(p), transfer().view.portals[p].outward));
     }
     auto values = std::make_shared<FrameValues>();
-    compute_frame_values(transfer(), vertex_portal, relit->irradiance(), glass, *values);
+    compute_frame_values(transfer(), vertex_portal, relit->irradiance(), glass,
+                         relit->relighter().vertex_albedo(), *values);
     if (const ObjectLighting* objects = relit->relighter().objects()) {
       compute_object_values(objects->placed().albedo, objects->irradiance(true), *values);
     }
@@ -137,10 +138,18 @@ struct StudioServer::Impl {
         pending.reset();
       }
       try {
-        show(p, shown_document, frame_number);
+        // A material edit shows its first bounce at once, then the converged light
+        // (runtime/relighter.h set_material_bounces); the state messages say which.
+        if (relit->state().materials != p.state.materials) {
+          relit->relighter().set_material_bounces(0);
+          show(p, shown_document, frame_number, false);
+          relit->relighter().set_material_bounces(-1);
+        }
+        show(p, shown_document, frame_number, true);
         last_good = std::move(p.state);
       } catch (const std::exception& e) {  // e.g. a map file that cannot be read
         send_json(p.client, error_message(p.seq, e.what()));
+        relit->relighter().set_material_bounces(-1);
         try {
           relit->apply(last_good);
         } catch (const std::exception&) {  // it lit before: cannot fail again
@@ -149,9 +158,11 @@ struct StudioServer::Impl {
     }
   }
 
-  // Relights with a pending state and sends every client the state, the frame and the
-  // profiles of distributions that changed. Everything slow happens outside the mutex.
-  void show(const PendingState& p, nlohmann::json& shown_document, std::uint32_t& frame_number) {
+  // Relights with a pending state and sends every client the state (with "final": false for
+  // a material edit's first, approximate frame), the frame and the profiles of distributions
+  // that changed. Everything slow happens outside the mutex.
+  void show(const PendingState& p, nlohmann::json& shown_document, std::uint32_t& frame_number,
+            bool final) {
     const auto start = std::chrono::steady_clock::now();
     const std::shared_ptr<const FrameValues> values = relight_values(p.state);
     const std::chrono::duration<float, std::milli> ms = std::chrono::steady_clock::now() - start;
@@ -176,6 +187,7 @@ struct StudioServer::Impl {
                                             {"seq", seq_json(p.seq)},
                                             {"client", p.client},
                                             {"frame", number},
+                                            {"final", final},
                                             {"state", p.document}});
     std::set<ConnectionId> to;
     {

@@ -76,10 +76,9 @@ Precomputed precompute_transfer(const Scene& scene, const PrecomputeOptions& opt
     out.object_seconds.push_back(
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   }
-  if (!scene.portals.empty() || !scene.objects.empty() ||
-      (!scene.emitters.empty() && scene.precompute.nearfield_interreflection)) {
-    out.gather = std::move(gather.matrix);  // bounced at run time
-  }
+  // Kept for what the run time bounces itself: the sun, emitters, movable objects and live
+  // material edits (engine/albedo_edit.h).
+  out.gather = std::move(gather.matrix);
   return out;
 }
 

@@ -188,6 +188,7 @@ TransferView in_memory_view(const Precomputed& p) {
                                                    static_cast<float>(a.b)});
   }
   s.vertex_count = p.receivers.vertex_count;
+  s.vertex_material = p.mesh.vertex_material;
   s.receiver_positions = p.receivers.positions;
   s.receiver_normals = p.receivers.normals;
   s.mesh_positions = p.mesh.positions;
@@ -302,6 +303,13 @@ TransferFile open_transfer_file(const fs::path& file) {
   read_gather_sections(t.file, receivers, t.vertex_count, s, where);
   s.vertex_albedo.assign(t.vertex_albedo.begin(), t.vertex_albedo.end());
   s.vertex_count = t.vertex_count;
+  if (!t.triangle_material.empty()) {
+    // Every triangle's material is its vertices' (scene/mesh_preparation.h).
+    s.vertex_material.assign(t.vertex_count, kNoMaterial);
+    for (std::size_t i = 0; i < t.triangles.size(); ++i) {
+      for (const std::uint32_t v : t.triangles[i]) s.vertex_material[v] = t.triangle_material[i];
+    }
+  }
   s.receiver_positions = t.positions;
   const auto normals = t.file.view<float>(kMeshNormals);
   if (normals.size() != 3 * t.vertex_count) fail_input(where, "mesh normals: inconsistent size");

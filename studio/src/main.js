@@ -112,7 +112,9 @@ function onText(msg) {
     case 'hello':
       return onHello(msg);
     case 'state': {
-      api.lastState = { seq: msg.seq ?? null, frame: msg.frame ?? null };
+      api.lastState = { seq: msg.seq ?? null, frame: msg.frame ?? null, final: msg.final ?? true };
+      // A material edit's first frame is its light reflected once; the converged one follows.
+      $('frame-quality').textContent = msg.final === false ? 'approximate: material edit converging' : '';
       const how = store.applyRemote(msg);
       if (how === 'mine') $('state-origin').textContent = `shown: this client's state (frame ${msg.frame ?? '?'})`;
       if (how === 'remote') {

@@ -128,7 +128,7 @@ TEST_F(LightingStateFiles, UnknownKey) {
   EXPECT_EQ(top.err.rfind("error: " + state_path("unknown-top.json").string() + ":", 0), 0u)
       << top.err;
   EXPECT_NE(top.err.find("lights: unknown key \"lights\" (expected one of: luminaires, portals, "
-                         "exterior, emitters, objects)\n"),
+                         "exterior, emitters, objects, materials)\n"),
             std::string::npos)
       << top.err;
   EXPECT_EQ(top.err.find('\n'), top.err.size() - 1) << top.err;
@@ -145,7 +145,8 @@ TEST_F(LightingStateFiles, UnknownKey) {
 TEST_F(LightingStateFiles, UnknownTopLevelKeyHasTheRootPointer) {
   expect_state_error(
       "unknown-top-key.json", R"({ "lights": {} })", ":/lights",
-      "unknown key \"lights\" (expected one of: luminaires, portals, exterior, emitters, objects)");
+      "unknown key \"lights\" (expected one of: luminaires, portals, exterior, emitters, objects, "
+      "materials)");
 }
 
 TEST_F(LightingStateFiles, MovingALuminaireIsRefused) {
@@ -243,6 +244,23 @@ TEST_F(LightingStateFiles, OtherBadValues) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.err,
             "error: " + state_path("absent.json").string() + ": cannot open file: no such file\n");
+}
+
+TEST_F(LightingStateFiles, BadMaterialEdits) {
+  expect_state_error("unknown-material.json",
+                     R"({ "materials": { "marble": { "albedo": [0.5, 0.5, 0.5] } } })",
+                     ":/materials/marble", "no material named \"marble\" in the precomputed scene");
+  expect_state_error("rough-material.json", R"({ "materials": { "white": { "roughness": 1.5 } } })",
+                     ":/materials/white/roughness", "must be between 0 and 1, got 1.5");
+  expect_state_error("metal-material.json", R"({ "materials": { "white": { "metallic": -0.1 } } })",
+                     ":/materials/white/metallic", "must be between 0 and 1, got -0.1");
+  expect_state_error("bright-material.json",
+                     R"({ "materials": { "white": { "albedo": [0.5, 1.2, 0.5] } } })",
+                     ":/materials/white/albedo", "");
+  expect_state_error("material-key.json", R"({ "materials": { "white": { "portal": true } } })",
+                     ":/materials/white/portal", "unknown key \"portal\"");
+  expect_state_error("materials-array.json", R"({ "materials": [ "white" ] })", ":/materials",
+                     "expected an object mapping material names to materials");
 }
 
 TEST_F(LightingStateFiles, RenderReportsStateErrorsToo) {

@@ -149,7 +149,11 @@ TEST_F(TransferCommands, RltHoldsTheRegisteredSections) {
   const RltFile f = RltFile::open(rlt_);
   const std::size_t receivers = vertices_ + sensors_;
   const std::size_t k = static_cast<std::size_t>(sh_count(kShOrder));
-  EXPECT_EQ(f.sections().size(), 7 + 5 * kLuminaires);  // no TD in "exact" mode
+  // No TD in "exact" mode; the gather operator GROW/GCOL/GVAL for live material edits.
+  EXPECT_EQ(f.sections().size(), 10 + 5 * kLuminaires);
+  const auto rows = f.view<std::uint32_t>(rlt_fourcc("GROW"));
+  EXPECT_EQ(rows.size(), receivers + 1);
+  EXPECT_EQ(f.view<float>(rlt_fourcc("GVAL")).size(), rows.back());
 
   const auto meta = nlohmann::json::parse(f.text(rlt_fourcc("META")));
   EXPECT_EQ(meta.at("format"), "relight transfer");
@@ -250,7 +254,7 @@ TEST_F(TransferCommands, ShDirectModeStoresDirectShSections) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("sh_order 3, direct sh"), std::string::npos) << r.out;
   const RltFile f = RltFile::open(rlt);
-  EXPECT_EQ(f.sections().size(), 7 + 6 * kLuminaires);
+  EXPECT_EQ(f.sections().size(), 10 + 6 * kLuminaires);
   const std::size_t receivers = vertices_ + sensors_;
   for (std::size_t j = 0; j < kLuminaires; ++j) {
     const std::uint32_t td = 'T' | 'D' << 8 | static_cast<std::uint32_t>(j) << 16;

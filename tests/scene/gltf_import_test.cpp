@@ -147,6 +147,27 @@ TEST_F(GltfImport, EmbeddedBufferQuadIsTranslatedWithBaseColorAlbedo) {
   EXPECT_EQ(mesh.triangle_material, (std::vector<std::uint32_t>{0, 0}));
 }
 
+// issue 13: metallicFactor and roughnessFactor make the material glossy (the absent one at
+// glTF's default 1); a file with base colours only stays Lambertian (the test above); a
+// factor outside 0..1 is an input error.
+TEST_F(GltfImport, MetallicAndRoughnessFactorsMakeTheMaterialGlossy) {
+  json doc =
+      quad_document(embedded_buffer(), {{{"mesh", 0}, {"translation", {1, 2, 3}}}}, indexed_quad());
+  EXPECT_FALSE(import_mesh(write("plain.gltf", doc.dump())).materials.at(0).glossy);
+  doc["materials"][0]["pbrMetallicRoughness"]["roughnessFactor"] = 0.25;
+  const ImportedMaterial rough = import_mesh(write("rough.gltf", doc.dump())).materials.at(0);
+  EXPECT_TRUE(rough.glossy);
+  EXPECT_DOUBLE_EQ(rough.roughness, 0.25);
+  EXPECT_DOUBLE_EQ(rough.metallic, 1.0);
+  doc["materials"][0]["pbrMetallicRoughness"]["metallicFactor"] = 0.0;
+  const ImportedMaterial dielectric = import_mesh(write("satin.gltf", doc.dump())).materials.at(0);
+  EXPECT_DOUBLE_EQ(dielectric.metallic, 0.0);
+  doc["materials"][0]["pbrMetallicRoughness"]["metallicFactor"] = 1.5;
+  const fs::path bad = write("bad.gltf", doc.dump());
+  EXPECT_NE(error_of(bad).find("metallicFactor must be between 0 and 1"), std::string::npos)
+      << error_of(bad);
+}
+
 TEST_F(GltfImport, ExternalBufferAndNodeHierarchyComposeTransforms) {
   const std::vector<unsigned char> bin = quad_buffer();
   write("quad.bin", std::string(bin.begin(), bin.end()));

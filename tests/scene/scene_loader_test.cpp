@@ -135,6 +135,44 @@ TEST(SceneLoader, UnknownMaterialAndPrecomputeKeyAreErrors) {
   EXPECT_NE(load_error(scene).find("/precompute/max_edges: unknown key"), std::string::npos);
 }
 
+// issue 13: metallic and roughness (either makes a material glossy, the other at the glTF
+// default), 0..1 with the JSON path; glass needs no albedo and takes neither key.
+TEST(SceneLoader, MetallicRoughnessKeysMakeAMaterialGlossy) {
+  json scene = minimal_scene();
+  scene["materials"]["steel"] = {{"albedo", {0.5, 0.5, 0.5}}, {"metallic", 1}, {"roughness", 0.3}};
+  scene["materials"]["satin"] = {{"albedo", {0.5, 0.5, 0.5}}, {"roughness", 0.2}};
+  scene["materials"]["clear"] = {{"portal", true}};
+  const Scene s = scene_from_json(scene, "scene.json");
+  const auto named = [&](const std::string& name) {
+    for (const Material& m : s.materials) {
+      if (m.name == name) return m;
+    }
+    throw std::runtime_error("no material " + name);
+  };
+  EXPECT_FALSE(named("white").glossy);
+  EXPECT_TRUE(named("steel").glossy);
+  EXPECT_EQ(named("steel").metallic, 1.0);
+  EXPECT_EQ(named("steel").roughness, 0.3);
+  EXPECT_TRUE(named("satin").glossy);
+  EXPECT_EQ(named("satin").metallic, 0.0);
+  EXPECT_TRUE(named("clear").portal);
+
+  scene["materials"]["steel"]["roughness"] = 1.2;
+  EXPECT_EQ(load_error(scene), "scene.json:/materials/steel/roughness: must be between 0 and 1, got 1.2");
+  scene = minimal_scene();
+  scene["materials"]["steel"] = {{"albedo", {0.5, 0.5, 0.5}}, {"metallic", -0.5}};
+  EXPECT_EQ(load_error(scene), "scene.json:/materials/steel/metallic: must be between 0 and 1, got -0.5");
+  scene = minimal_scene();
+  scene["materials"]["glass"]["roughness"] = 0.1;
+  EXPECT_EQ(load_error(scene).rfind("scene.json:/materials/glass/roughness: window glass", 0), 0u)
+      << load_error(scene);
+  scene = minimal_scene();
+  scene["materials"]["white"].erase("albedo");
+  EXPECT_EQ(load_error(scene).rfind("scene.json:/materials/white: missing required key \"albedo\"", 0),
+            0u)
+      << load_error(scene);
+}
+
 TEST(SceneLoader, MalformedJsonReportsTheLine) {
   testing::TempDir dir;
   const auto file = dir.write("bad.json", "{\n  \"materials\": {},\n  \"geometry\": [,]\n}\n");

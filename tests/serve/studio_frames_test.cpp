@@ -67,7 +67,7 @@ TEST(StudioFrames, FrameCarriesRadianceIlluminanceAndSensors) {
   for (std::size_t i = 0; i < irradiance.size(); ++i) irradiance[i] = 10.0f + i % 7;
   const Rgb sky{100, 200, 300};
   FrameValues values;
-  compute_frame_values(t, portal, irradiance, std::span(&sky, 1), values);
+  compute_frame_values(t, portal, irradiance, std::span(&sky, 1), t.vertex_albedo, values);
   const std::string f = encode_frame(42, 7, 1.5f, values);
   const std::size_t v = t.vertex_count, s = t.sensor_count;
   ASSERT_EQ(f.size(), 24 + 8 * v + 4 * s);
@@ -166,7 +166,7 @@ TEST(StudioFrames, ObjectVerticesFollowTheSensors) {
   std::vector<float> irradiance(3 * (t.vertex_count + t.sensor_count), 20.0f);
   const Rgb sky{100, 200, 300};
   FrameValues values;
-  compute_frame_values(t, portal, irradiance, std::span(&sky, 1), values);
+  compute_frame_values(t, portal, irradiance, std::span(&sky, 1), t.vertex_albedo, values);
   const std::string plain = encode_frame(3, 4, 2.0f, values);
   // Three object vertices: albedo (0.5, 0.25, 1), (1, 1, 1), (0, 0, 0).
   const std::vector<float> albedo = {0.5f, 0.25f, 1, 1, 1, 1, 0, 0, 0};
@@ -209,7 +209,7 @@ TEST(StudioFrames, ObjectValuesAreTheRelighterLight) {
     relit.apply(state);
     std::vector<Rgb> glass(t.scene.portals.size(), Rgb{});
     FrameValues f;
-    compute_frame_values(t, vertex_portals(t), relit.irradiance(), glass, f);
+    compute_frame_values(t, vertex_portals(t), relit.irradiance(), glass, t.vertex_albedo, f);
     compute_object_values(objects->placed().albedo, objects->irradiance(true), f);
     return f;
   };

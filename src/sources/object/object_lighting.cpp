@@ -9,6 +9,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "engine/material_reflectance.h"
 #include "sources/nearfield/emitter_direct.h"
 
 namespace relight {
@@ -55,6 +56,29 @@ ObjectLighting::ObjectLighting(const RuntimeScene& room, std::vector<ObjectMesh>
   room_delta_direct_.assign(3 * room.receivers(), 0.0f);
   object_total_.assign(3 * placed_.vertex_count(), 0.0f);
   object_indirect_.assign(3 * placed_.vertex_count(), 0.0f);
+}
+
+void ObjectLighting::set_albedo(std::span<const float> room_albedo,
+                                std::span<const Material> materials) {
+  if (room_albedo.size() != 3 * room_->vertex_count()) {
+    throw std::invalid_argument("ObjectLighting: one albedo per room vertex expected");
+  }
+  std::copy(room_albedo.begin(), room_albedo.end(), albedo_.begin());
+  for (ObjectMesh& mesh : meshes_) {
+    for (std::size_t v = 0; v < mesh.vertex_material.size(); ++v) {
+      const Rgb a = bounce_albedo(materials[mesh.vertex_material[v]]);  // validated on read
+      mesh.albedo[3 * v] = static_cast<float>(a.r);
+      mesh.albedo[3 * v + 1] = static_cast<float>(a.g);
+      mesh.albedo[3 * v + 2] = static_cast<float>(a.b);
+    }
+  }
+  // The placed objects' albedo is the meshes' back to back (place_objects).
+  placed_.albedo.clear();
+  for (const ObjectMesh& mesh : meshes_) {
+    placed_.albedo.insert(placed_.albedo.end(), mesh.albedo.begin(), mesh.albedo.end());
+  }
+  std::copy(placed_.albedo.begin(), placed_.albedo.end(),
+            albedo_.begin() + static_cast<std::ptrdiff_t>(room_albedo.size()));
 }
 
 bool ObjectLighting::set_state(std::span<const MovablePlacement> placements) {

@@ -83,6 +83,10 @@ class ObjectLighting {
   // shadow when `light_changed` (any other term's light, E0, changed) or else only where a
   // moved object may; and the bounce always.
   void update(const ObjectLightInputs& inputs, bool light_changed);
+  // Live material edits: the room's vertices reflect `room_albedo` (3 per vertex) and the
+  // objects' vertices their materials' (engine/material_reflectance.h; objects from files
+  // without their vertices' materials keep theirs).
+  void set_albedo(std::span<const float> room_albedo, std::span<const Material> materials);
 
   // Adds ΔE to `out` (3 per room receiver); without direct light, ΔE less ΔE_d (what
   // renderers that trace direct light per pixel, through the objects, still need).

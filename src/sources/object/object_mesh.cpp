@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "engine/material_reflectance.h"
 #include "engine/receivers.h"
 #include "scene/mesh_preparation.h"
 
@@ -24,9 +25,10 @@ ObjectMesh prepare_object(const Scene& scene, const MovableObject& object) {
                mesh.normals,
                receiver_ray_points(receivers, mesh),
                mesh.triangles,
-               {}};
+               {},
+               mesh.vertex_material};
   for (const std::uint32_t material : mesh.vertex_material) {
-    const Rgb a = scene.materials.at(material).albedo;
+    const Rgb a = bounce_albedo(scene.materials.at(material));
     m.albedo.insert(m.albedo.end(),
                     {static_cast<float>(a.r), static_cast<float>(a.g), static_cast<float>(a.b)});
   }

@@ -26,7 +26,9 @@ struct ObjectMesh {
   std::vector<Vec3> positions, normals;  // per vertex; normals unit
   std::vector<Vec3> ray_points;          // where rays leave each vertex (receivers.h)
   std::vector<Triangle> triangles;
-  std::vector<float> albedo;  // 3 per vertex
+  std::vector<float> albedo;  // 3 per vertex: what it bounces (engine/material_reflectance.h)
+  // Per vertex, its material (index into the scene's); empty for files from before OMAT.
+  std::vector<std::uint32_t> vertex_material;
 };
 
 // `object` is one of scene.objects (its materials are the scene's).

@@ -13,6 +13,7 @@ constexpr std::uint32_t kObjectRayPoints = rlt_fourcc("ORAY");
 constexpr std::uint32_t kObjectPivots = rlt_fourcc("OPIV");
 constexpr std::uint32_t kObjectAlbedo = rlt_fourcc("OALB");
 constexpr std::uint32_t kObjectTriangles = rlt_fourcc("OTRI");
+constexpr std::uint32_t kObjectMaterials = rlt_fourcc("OMAT");
 
 void append(std::vector<float>& out, const std::vector<Vec3>& points) {
   for (const Vec3& p : points) {
@@ -38,6 +39,7 @@ void write_object_sections(RltWriter& w, std::span<const ObjectMesh> objects,
     append(d.ray_points, o.ray_points);
     append(d.pivots, {o.pivot});
     d.albedo.insert(d.albedo.end(), o.albedo.begin(), o.albedo.end());
+    d.materials.insert(d.materials.end(), o.vertex_material.begin(), o.vertex_material.end());
     for (const Triangle& t : o.triangles) d.triangles.insert(d.triangles.end(), t.begin(), t.end());
   }
   w.add_u32(kObjectCounts, "object counts", d.counts);
@@ -47,6 +49,9 @@ void write_object_sections(RltWriter& w, std::span<const ObjectMesh> objects,
   w.add_f32(kObjectPivots, "object pivots", d.pivots);
   w.add_f32(kObjectAlbedo, "object albedo", d.albedo);
   w.add_u32(kObjectTriangles, "object triangles", d.triangles);
+  if (d.materials.size() == d.albedo.size() / 3) {
+    w.add_u32(kObjectMaterials, "object materials", d.materials);
+  }
 }
 
 std::vector<ObjectMesh> read_object_sections(const RltFile& file, const Scene& scene,
@@ -65,6 +70,10 @@ std::vector<ObjectMesh> read_object_sections(const RltFile& file, const Scene& s
   const auto pivots = file.view<float>(kObjectPivots);
   const auto albedo = file.view<float>(kObjectAlbedo);
   const auto triangles = file.view<std::uint32_t>(kObjectTriangles);
+  // Files written before live material edits have no OMAT: their objects' materials stay put.
+  const auto materials = file.find_info(kObjectMaterials)
+                             ? file.view<std::uint32_t>(kObjectMaterials)
+                             : std::span<const std::uint32_t>{};
   if (counts.size() != 2 * scene.objects.size() || pivots.size() != 3 * scene.objects.size()) {
     fail_input(where, "object sections disagree with the scene's objects");
   }
@@ -75,7 +84,7 @@ std::vector<ObjectMesh> read_object_sections(const RltFile& file, const Scene& s
   }
   if (positions.size() != 3 * vertices || normals.size() != 3 * vertices ||
       rays.size() != 3 * vertices || albedo.size() != 3 * vertices ||
-      triangles.size() != 3 * tris) {
+      triangles.size() != 3 * tris || (!materials.empty() && materials.size() != vertices)) {
     fail_input(where, "object sections have inconsistent sizes");
   }
   std::size_t v0 = 0, t0 = 0;
@@ -91,6 +100,14 @@ std::vector<ObjectMesh> read_object_sections(const RltFile& file, const Scene& s
     }
     o.albedo.assign(albedo.begin() + static_cast<std::ptrdiff_t>(3 * v0),
                     albedo.begin() + static_cast<std::ptrdiff_t>(3 * (v0 + nv)));
+    if (!materials.empty()) {
+      for (std::size_t v = v0; v < v0 + nv; ++v) {
+        if (materials[v] >= scene.materials.size()) {
+          fail_input(where, "an object vertex refers to a missing material");
+        }
+        o.vertex_material.push_back(materials[v]);
+      }
+    }
     for (std::size_t t = t0; t < t0 + nt; ++t) {
       const Triangle tri{triangles[3 * t], triangles[3 * t + 1], triangles[3 * t + 2]};
       for (const std::uint32_t v : tri) {
@@ -106,7 +123,7 @@ std::vector<ObjectMesh> read_object_sections(const RltFile& file, const Scene& s
 }
 
 std::size_t object_section_bytes(const ObjectMesh& o) {
-  return o.positions.size() * 4 * 3 * sizeof(float) +
+  return o.positions.size() * (4 * 3 * sizeof(float) + sizeof(std::uint32_t)) +
          o.triangles.size() * 3 * sizeof(std::uint32_t) + 2 * sizeof(std::uint32_t) +
          3 * sizeof(float);
 }

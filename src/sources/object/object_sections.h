@@ -20,6 +20,7 @@ struct ObjectSectionData {
   std::vector<std::uint32_t> counts;  // per object: vertices, triangles
   std::vector<float> positions, normals, ray_points, pivots, albedo;
   std::vector<std::uint32_t> triangles;  // per object, indices local to it
+  std::vector<std::uint32_t> materials;  // per vertex, into the scene's materials
 };
 
 // Adds the sections of `objects` (none for a scene without objects) to `writer`, which keeps
