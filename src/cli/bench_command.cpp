@@ -1,4 +1,5 @@
-// `relight bench SCENE.rlt [--frames N] [--sky | --emitters | --objects [--object NAME]]`: times
+// `relight bench SCENE.rlt [--frames N] [--sky | --emitters | --objects [--object NAME] |
+// --materials]`: times
 // the run-time weighted sum
 // and, in
 // the same run, a plain parallel streaming read of as many bytes, so the ratio
@@ -11,8 +12,11 @@
 // with sampling_ms and bounce_ms), or with --objects the movable objects (each moves along a
 // small circle, 2 cm and 2° a frame; with --object only the one named — a designer dragging it:
 // their transfer traced again, their direct light and shadows, the bounce, with direct_ms,
-// transfer_ms and bounce_ms); only the kind of source that changed is summed again
-// (runtime/relighter.h).
+// transfer_ms and bounce_ms), or with --materials a live material edit (the albedo of the
+// material on the most vertices changes 5 % a frame, a designer dragging a colour: the studio's
+// approximate frame, then its final one, engine/albedo_edit.h; approximate_ms, final_ms, and
+// first_final_ms for the first edit, solved from nothing); only the kind of source that changed
+// is summed again (runtime/relighter.h).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -40,7 +44,17 @@ struct BenchArgs {
   bool emitters = false;
   bool objects = false;
   std::string object;  // with objects: move only this one
+  bool materials = false;
 };
+
+// The opaque material on the most vertices (what a designer repaints: a wall, the floor).
+std::size_t most_used_material(const TransferFile& t) {
+  std::vector<std::size_t> count(t.scene.materials.size(), 0);
+  for (const std::uint32_t m : t.view.scene.vertex_material) {
+    if (m < count.size() && !t.scene.materials[m].portal) ++count[m];
+  }
+  return static_cast<std::size_t>(std::max_element(count.begin(), count.end()) - count.begin());
+}
 
 // The next frame's sky: a small change of the kind a designer scrubbing time makes.
 void advance_sky(EnvironmentSpec& e, int frame) {
@@ -97,9 +111,14 @@ int run_bench(const BenchArgs& args) {
   if (args.objects && state.objects.empty()) {
     fail_input(args.rlt, "--objects needs a scene with movable objects");
   }
-  if (int(args.sky) + int(args.emitters) + int(args.objects) > 1) {
-    fail_input(args.rlt, "--sky, --emitters and --objects: one at a time");
+  if (int(args.sky) + int(args.emitters) + int(args.objects) + int(args.materials) > 1) {
+    fail_input(args.rlt, "--sky, --emitters, --objects and --materials: one at a time");
   }
+  if (args.materials && relit.transfer().view.scene.vertex_material.empty()) {
+    fail_input(args.rlt,
+               "--materials needs a file with the vertices' materials (precompute again)");
+  }
+  const std::size_t edited = args.materials ? most_used_material(relit.transfer()) : 0;
   std::vector<bool> moving(state.objects.size(), args.object.empty());
   if (!args.object.empty()) {
     if (!args.objects) fail_input(args.rlt, "--object needs --objects");
@@ -114,7 +133,35 @@ int run_bench(const BenchArgs& args) {
   relighter.relight(irradiance);  // warm
   std::vector<double> shell_ms, sun_ms, sun_bounce_ms, sampling_ms, bounce_ms;
   std::vector<double> object_direct_ms, object_transfer_ms, object_bounce_ms, object_bounces;
+  std::vector<double> approximate_ms, final_ms;
+  // A material edit's two frames: its light reflected once, then converged.
+  const auto edit_material = [&](int i) {
+    Material& m = state.materials.at(edited);
+    m.albedo = m.albedo * (i % 2 == 0 ? 0.95 : 1 / 0.95);
+    const auto start_edit = std::chrono::steady_clock::now();
+    relighter.set_material_bounces(0);
+    relighter.set_state(state);
+    relighter.relight(irradiance);
+    const auto approximate = std::chrono::steady_clock::now();
+    relighter.set_material_bounces(-1);
+    relighter.relight(irradiance);
+    const auto done = std::chrono::steady_clock::now();
+    approximate_ms.push_back(
+        std::chrono::duration<double, std::milli>(approximate - start_edit).count());
+    final_ms.push_back(std::chrono::duration<double, std::milli>(done - start_edit).count());
+  };
+  double first_final_ms = 0;
+  if (args.materials) {
+    edit_material(0);  // the first edit: its light solved from nothing
+    first_final_ms = final_ms.front();
+    approximate_ms.clear();
+    final_ms.clear();
+  }
   const double frame_ms = median(time_ms(args.frames, [&](int i) {
+    if (args.materials) {
+      edit_material(i + 1);
+      return;
+    }
     if (args.sky) {
       for (PortalState& p : state.portals) advance_sky(p.environment, i);
     } else if (args.emitters) {
@@ -177,7 +224,10 @@ int run_bench(const BenchArgs& args) {
   const double effective = bytes / (frame_ms * 1e-3) / 1e9;
   const double streaming = buffer.size() * sizeof(std::uint64_t) / (stream_ms * 1e-3) / 1e9;
   const char* mode =
-      args.sky ? "sky" : (args.emitters ? "emitters" : (args.objects ? "objects" : "luminaires"));
+      args.sky ? "sky"
+               : (args.emitters
+                      ? "emitters"
+                      : (args.objects ? "objects" : (args.materials ? "materials" : "luminaires")));
   nlohmann::json line = {{"mode", mode},
                          {"receivers", relighter.receivers()},
                          {"luminaires", relit.scene().luminaires.size()},
@@ -216,6 +266,12 @@ int run_bench(const BenchArgs& args) {
     line["bounces"] = median(object_bounces);
     line["transfer_rays"] = o.timings().rays;
   }
+  if (args.materials) {
+    line["material"] = relit.scene().materials[edited].name;
+    line["approximate_ms"] = median(approximate_ms);
+    line["final_ms"] = median(final_ms);
+    line["first_final_ms"] = first_final_ms;
+  }
   std::cout << line.dump() << "\n";
   return 0;
 }
@@ -233,6 +289,8 @@ void add_bench_command(CLI::App& app, Action& action) {
   cmd->add_flag("--objects", args->objects,
                 "move and turn the movable objects each frame (transfer, shadows, bounce)");
   cmd->add_option("--object", args->object, "with --objects: move only this object");
+  cmd->add_flag("--materials", args->materials,
+                "edit the albedo of the most used material each frame (approximate and final)");
   cmd->callback([args, &action] { action = [args] { return run_bench(*args); }; });
 }
 

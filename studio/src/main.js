@@ -13,6 +13,7 @@ import { LabelLayer } from './labels.js';
 import { Legend } from './legend.js';
 import { LuminairePanel } from './luminaires.js';
 import { Markers } from './markers.js';
+import { MaterialPanel } from './materials.js';
 import { ObjectPanel, ObjectsView } from './objects.js';
 import { decodeFrame, decodeGeometry, decodeObjects, messages } from './protocol.js';
 import { Sensors } from './sensors.js';
@@ -88,6 +89,7 @@ const windowsPanel = new WindowsPanel($('windows'), store);
 const emitterPanel = new EmitterPanel($('emitters'), store);
 const objectPanel = new ObjectPanel($('objects'), store, objectsView);
 objectsView.onSelect = (i) => objectPanel.setSelected(i);
+const materialPanel = new MaterialPanel($('material'), store);
 // The luminaire in the distribution editor is drawn larger in the view.
 editor.onSelect = (i) => {
   markers.selected = i;
@@ -176,6 +178,7 @@ function onHello(hello) {
   emitterPanel.setScene(hello);
   objectsView.setScene(hello);
   objectPanel.setScene(hello);
+  materialPanel.setScene(hello);
   editor.setScene(hello);
   store.reset(hello.state || {}, hello.client ?? null);
   // Every luminaire's distribution: flux for the panels, exact C0 samples for the editor.
@@ -288,6 +291,7 @@ function showProbe(reply) {
   }
   // (material is null when the .rlt predates per-triangle materials, and on objects)
   const where = reply.object ? `object “${reply.object}”` : reply.portal ? `window “${reply.portal}”` : reply.material ?? `triangle ${reply.triangle}`;
+  if (!reply.object && !reply.portal && reply.material) materialPanel.show(reply.material);
   markers.probe = { point: reply.point, text: `${formatValue(reply.illuminance)} lx · ${formatValue(reply.luminance)} cd/m²` };
   box.hidden = false;
   box.innerHTML = '';

@@ -22,9 +22,9 @@ export function canonical(x) {
   return JSON.stringify(x);
 }
 
-// Drops empty luminaire/portal/emitter/object entries and empty top-level objects.
+// Drops empty luminaire/portal/emitter/object/material entries and empty top-level objects.
 function prune(doc) {
-  for (const key of ['luminaires', 'portals', 'exterior', 'emitters', 'objects']) {
+  for (const key of ['luminaires', 'portals', 'exterior', 'emitters', 'objects', 'materials']) {
     const o = doc[key];
     if (!o || typeof o !== 'object') continue;
     if (key !== 'exterior') {
