@@ -24,7 +24,7 @@ ReferenceEmitters make_reference_emitters(PlacedEmitters placed) {
 }
 
 Rgb emitter_illuminance(const ReferenceEmitters& emitters, const RayTracer& occluders, Vec3 origin,
-                        Vec3 n, Pcg32& rng, std::uint64_t& rays) {
+                        Vec3 n, Pcg32& rng, std::uint64_t& rays, const NextEventWeight& weight) {
   if (emitters.empty()) return {};
   const double total = emitters.cumulative.back();
   const double pick = rng.next_double() * total;
@@ -51,7 +51,9 @@ Rgb emitter_illuminance(const ReferenceEmitters& emitters, const RayTracer& occl
   if (cos_x <= 0 || cos_y <= 0) return {};
   ++rays;
   if (occluders.occluded({origin, w, 0, dist * (1 - 1e-6)})) return {};
-  return e.triangle_radiance[t] * (cos_x * cos_y / dist2 * area / probability);
+  const Rgb e_sample = e.triangle_radiance[t] * (cos_x * cos_y / dist2 * area / probability);
+  // Continuation rays pass through emitters: this is the only strategy that finds them.
+  return weight.glossy == nullptr ? e_sample : e_sample * weight(w, kDeltaPdf);
 }
 
 }  // namespace relight

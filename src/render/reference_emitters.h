@@ -15,6 +15,7 @@
 
 #include "math/rgb.h"
 #include "math/sampling.h"
+#include "render/reference_weight.h"
 #include "sources/nearfield/emitter_placement.h"
 #include "trace/ray_tracer.h"
 
@@ -30,8 +31,12 @@ struct ReferenceEmitters {
 ReferenceEmitters make_reference_emitters(PlacedEmitters placed);
 
 // One-sample estimate of the illuminance (lx per channel) at `origin` (already off the
-// surface) on a plane of unit normal n; counts the shadow ray in `rays`.
+// surface) on a plane of unit normal n; counts the shadow ray in `rays`. With a glossy
+// `weight`, the luminance a glossy surface reflects toward its viewer (f(l, v) per sample:
+// continuation rays never meet an emitter, so next-event estimation is the only strategy and
+// weighs 1; render/reference_weight.h).
 Rgb emitter_illuminance(const ReferenceEmitters& emitters, const RayTracer& occluders, Vec3 origin,
-                        Vec3 n, Pcg32& rng, std::uint64_t& rays);
+                        Vec3 n, Pcg32& rng, std::uint64_t& rays,
+                        const NextEventWeight& weight = {});
 
 }  // namespace relight

@@ -60,7 +60,7 @@ std::array<Vec3, 2> sample_sun_directions(const SunDisc& sun, Pcg32& rng) {
 
 // One area sample of portal p's continuous environment (the estimator in the header).
 Rgb environment_sample(const ExteriorView& view, std::size_t p, Vec3 origin, Vec3 n, Pcg32& rng,
-                       std::uint64_t& rays) {
+                       std::uint64_t& rays, const NextEventWeight& weight) {
   const ReferencePortal& portal = view.portals.portals[p];
   const PortalPoint y = sample_portal_point(view.mesh, portal, rng);
   const Vec3 d = y.position - origin;
@@ -78,24 +78,27 @@ Rgb environment_sample(const ExteriorView& view, std::size_t p, Vec3 origin, Vec
   ++rays;
   if (view.traced.opaque.occluded({y.position, w, kPortalMargin})) return {};
   const Rgb radiance = through_glass(portal, y.position, w, false, rng, rays);
-  return radiance * (cos_x * cos_y / dist2 * portal.area());
+  if (weight.glossy == nullptr) return radiance * (cos_x * cos_y / dist2 * portal.area());
+  const double pdf = dist2 / (cos_y * portal.area());  // of w, per steradian
+  return radiance * weight(w, pdf) * (cos_x / pdf);
 }
 
 // One (antithetic) sun-cone sample of portal p's sun disc, if its environment has one.
 Rgb sun_sample(const ExteriorView& view, std::size_t p, Vec3 origin, Vec3 n, Pcg32& rng,
-               std::uint64_t& rays) {
+               std::uint64_t& rays, const NextEventWeight& weight) {
   const std::optional<SunDisc>& sun = view.portals.portals[p].environment.sun();
   if (!sun || view.portals.portals[p].frost) return {};  // frosted: in the area samples
-  double e = 0;
+  Rgb e;
   for (const Vec3& w : sample_sun_directions(*sun, rng)) {
     const double cos_x = dot(n, w);
     if (cos_x <= 0) continue;
     if (escape_portal(view, {origin, w}, rays) != static_cast<std::int32_t>(p)) continue;
     const ReferencePortal& portal = view.portals.portals[p];
     if (portal.exterior && portal.exterior->tracer.occluded({origin, w})) continue;
-    e += 0.5 * sun->luminance * sun->solid_angle * cos_x;
+    const double l = 0.5 * sun->luminance * sun->solid_angle * cos_x;
+    e += weight(w, 1 / sun->solid_angle) * l;
   }
-  return view.portals.portals[p].tint * Rgb{e, e, e};
+  return view.portals.portals[p].tint * e;
 }
 
 }  // namespace
@@ -294,14 +297,43 @@ std::int32_t escape_portal(const ExteriorView& view, const Ray& ray, std::uint64
 }
 
 Rgb portal_illuminance(const ExteriorView& view, Vec3 origin, Vec3 n, Pcg32& rng,
-                       std::uint64_t& rays) {
+                       std::uint64_t& rays, const NextEventWeight& weight) {
   Rgb e;
   for (std::size_t p = 0; p < view.portals.portals.size(); ++p) {
     if (view.portals.portals[p].area() <= 0) continue;
-    e += environment_sample(view, p, origin, n, rng, rays);
-    e += sun_sample(view, p, origin, n, rng, rays);
+    e += environment_sample(view, p, origin, n, rng, rays, weight);
+    e += sun_sample(view, p, origin, n, rng, rays, weight);
   }
   return e;
+}
+
+Rgb escaped_radiance(const ExteriorView& view, const Ray& ray, double brdf_pdf, Pcg32& rng,
+                     std::uint64_t& rays) {
+  ++rays;
+  if (view.traced.opaque.occluded(ray)) return {};
+  ++rays;
+  const RayHit hit = view.traced.portals.intersect(ray);
+  if (!hit.hit()) return {};
+  const std::int32_t index = view.portals.triangle_portal[hit.triangle];
+  if (index == kNoPortal) return {};
+  const ReferencePortal& portal = view.portals.portals[static_cast<std::size_t>(index)];
+  if (portal.area() <= 0) return {};
+  const Vec3 w = ray.direction;
+  const double cos_y = std::abs(dot(geometric_normal(view.mesh, hit.triangle), w));
+  if (cos_y <= 0) return {};
+  // The area strategy's density of w (environment_sample), against the BRDF's.
+  const double area_pdf = hit.t * hit.t / (cos_y * portal.area());
+  const Vec3 y = ray.origin + w * hit.t;
+  Rgb l = through_glass(portal, y, w, false, rng, rays) * power_heuristic(brdf_pdf, area_pdf);
+  const std::optional<SunDisc>& sun = portal.environment.sun();
+  if (sun && !portal.frost && dot(w, sun->direction) >= sun->cos_angular_radius) {
+    ++rays;
+    if (!(portal.exterior && portal.exterior->tracer.occluded({ray.origin, w}))) {
+      const double disc = sun->luminance * power_heuristic(brdf_pdf, 1 / sun->solid_angle);
+      l += portal.tint * Rgb{disc, disc, disc};
+    }
+  }
+  return l;
 }
 
 }  // namespace relight

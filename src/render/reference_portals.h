@@ -34,6 +34,7 @@
 #include "light/environment.h"
 #include "math/rgb.h"
 #include "math/sampling.h"
+#include "render/reference_weight.h"
 #include "scene/mesh_preparation.h"
 #include "scene/scene.h"
 #include "sources/portal/shell_exterior.h"
@@ -123,7 +124,17 @@ std::int32_t escape_portal(const ExteriorView& view, const Ray& ray, std::uint64
 // Illuminance (lux per channel) at `origin` (already off the surface) on a plane of unit
 // normal n from the environments seen through the portals: per portal one area sample of
 // the continuous environment and, for a sky with a sun, one sun-cone sample (see above).
+// With a glossy `weight`, the luminance a glossy surface reflects toward its viewer from
+// them, each sample weighted against BRDF sampling (render/reference_weight.h).
 Rgb portal_illuminance(const ExteriorView& view, Vec3 origin, Vec3 n, Pcg32& rng,
-                       std::uint64_t& rays);
+                       std::uint64_t& rays, const NextEventWeight& weight = {});
+
+// What a continuation ray drawn by BRDF sampling with density `brdf_pdf` (from a glossy
+// surface) receives from the exterior when it leaves through a portal: the glass's
+// luminance times the BRDF strategy's weight against the area sample of that portal, and the
+// sun disc's (clear glass) against the sun-cone sample (render/reference_weight.h); nothing
+// when it meets an opaque surface or leaves through no portal.
+Rgb escaped_radiance(const ExteriorView& view, const Ray& ray, double brdf_pdf, Pcg32& rng,
+                     std::uint64_t& rays);
 
 }  // namespace relight

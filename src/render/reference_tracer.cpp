@@ -10,6 +10,7 @@
 #include <tbb/parallel_for.h>
 
 #include "common/progress.h"
+#include "engine/material_reflectance.h"
 #include "material/lambert.h"
 #include "math/frame.h"
 #include "math/sampling.h"
@@ -45,7 +46,8 @@ Vec3 opening_point(const ReferenceOpening& o, const PlacedLuminaire& l, Pcg32& r
   return f.c0 * (s * o.length) + f.c90 * (t * o.width) - f.aim * (h * o.height);
 }
 
-Rgb direct_illuminance(PathContext& ctx, Vec3 p, Vec3 n, Sources sources = Sources::kAll) {
+Rgb direct_illuminance(PathContext& ctx, Vec3 p, Vec3 n, Sources sources = Sources::kAll,
+                       const NextEventWeight& weight = {}) {
   const ReferenceScene& ref = ctx.ref;
   Rgb e;
   const Vec3 origin = offset_from_surface(p, n);
@@ -73,7 +75,7 @@ Rgb direct_illuminance(PathContext& ctx, Vec3 p, Vec3 n, Sources sources = Sourc
         ref.traced.opaque.occluded({origin, to_light / span, 0, span - kLightMargin})) {
       continue;
     }
-    e += intensity * (cos_theta / dist2);
+    e += intensity * (cos_theta / dist2) * weight(w, kDeltaPdf);
   }
   return e;
 }
@@ -82,6 +84,7 @@ struct SurfaceHit {
   Vec3 position;
   Vec3 normal;
   Rgb albedo;
+  const MetallicRoughness* glossy = nullptr;  // null: Lambertian
 };
 
 // The first front-facing opaque surface along the ray; false for misses and back faces.
@@ -92,23 +95,58 @@ bool trace_surface(PathContext& ctx, const Ray& ray, SurfaceHit& out) {
   if (!hit.hit()) return false;
   const Vec3 n = geometric_normal(ref.mesh, hit.triangle);
   if (dot(n, ray.direction) >= 0) return false;  // back sides absorb
+  const std::int32_t glossy =
+      hit.triangle < ref.triangle_glossy.size() ? ref.triangle_glossy[hit.triangle] : -1;
   out = {point_on_triangle(ref.mesh, hit.triangle, hit.u, hit.v), n,
-         ref.triangle_albedo[hit.triangle]};
+         ref.triangle_albedo[hit.triangle],
+         glossy >= 0 ? &ref.glossy[static_cast<std::size_t>(glossy)] : nullptr};
   return true;
 }
 
 // Daylight through the portals at a surface point (render/reference_portals.h).
-Rgb daylight_illuminance(PathContext& ctx, Vec3 p, Vec3 n) {
+Rgb daylight_illuminance(PathContext& ctx, Vec3 p, Vec3 n, const NextEventWeight& weight = {}) {
   if (ctx.ref.portals.portals.empty()) return {};
   const ExteriorView view{ctx.ref.mesh, ctx.ref.traced, ctx.ref.portals};
-  return portal_illuminance(view, offset_from_surface(p, n), n, ctx.rng, ctx.rays);
+  return portal_illuminance(view, offset_from_surface(p, n), n, ctx.rng, ctx.rays, weight);
 }
 
 // Near-field emitters at a surface point (render/reference_emitters.h).
-Rgb emitters_illuminance(PathContext& ctx, Vec3 p, Vec3 n) {
+Rgb emitters_illuminance(PathContext& ctx, Vec3 p, Vec3 n, const NextEventWeight& weight = {}) {
   if (ctx.ref.emitters.empty()) return {};
   return emitter_illuminance(ctx.ref.emitters, ctx.ref.traced.opaque, offset_from_surface(p, n), n,
-                             ctx.rng, ctx.rays);
+                             ctx.rng, ctx.rays, weight);
+}
+
+// What a glossy surface reflects toward v from every light by next-event estimation, each
+// sample weighted against the BRDF sample that continues the path (render/reference_weight.h).
+Rgb glossy_next_events(PathContext& ctx, const SurfaceHit& s, Vec3 v) {
+  const NextEventWeight weight{s.glossy, s.normal, v};
+  return direct_illuminance(ctx, s.position, s.normal, Sources::kAll, weight) +
+         daylight_illuminance(ctx, s.position, s.normal, weight) +
+         emitters_illuminance(ctx, s.position, s.normal, weight);
+}
+
+// A continuation of a path at glossy surface s seen from v: the BRDF-sampled direction, its
+// density and f cos θ / p (zero when the sample is lost below the surface).
+struct GlossyStep {
+  Vec3 l;
+  double pdf = 0;
+  Rgb weight;
+};
+
+GlossyStep glossy_step(PathContext& ctx, const SurfaceHit& s, Vec3 v) {
+  const double u0 = ctx.rng.next_double(), u1 = ctx.rng.next_double(), u2 = ctx.rng.next_double();
+  const BrdfSample b = sample_metallic_roughness(*s.glossy, s.normal, v, u0, u1, u2);
+  const double cos_l = dot(b.l, s.normal);
+  if (b.pdf <= 0 || cos_l <= 0) return {};
+  return {b.l, b.pdf, metallic_roughness_brdf(*s.glossy, s.normal, b.l, v) * (cos_l / b.pdf)};
+}
+
+// What a ray drawn by BRDF sampling (density pdf) that met no surface brings from outside.
+Rgb escaped(PathContext& ctx, const Ray& ray, double pdf) {
+  if (ctx.ref.portals.portals.empty()) return {};
+  const ExteriorView view{ctx.ref.mesh, ctx.ref.traced, ctx.ref.portals};
+  return escaped_radiance(view, ray, pdf, ctx.rng, ctx.rays);
 }
 
 Vec3 cosine_direction(Vec3 n, Pcg32& rng) {
@@ -116,13 +154,32 @@ Vec3 cosine_direction(Vec3 n, Pcg32& rng) {
   return frame_from_normal(n).to_world(sample_cosine_hemisphere(u1, u2));
 }
 
-// Luminance arriving at `origin` from direction `dir` (light reflected by the scene).
-Rgb incident_luminance(PathContext& ctx, Vec3 origin, Vec3 dir) {
+// Luminance arriving at `origin` from direction `dir` (light reflected by the scene). With
+// `brdf_pdf` > 0 the direction was drawn by BRDF sampling at a glossy surface with that
+// density, and light it finds through a window counts with the BRDF strategy's weight.
+Rgb incident_luminance(PathContext& ctx, Vec3 origin, Vec3 dir, double brdf_pdf = 0) {
   Rgb result, throughput{1, 1, 1};
   Ray ray{origin, dir};
+  double pdf = brdf_pdf;
   for (int depth = 0; depth < ctx.max_depth; ++depth) {
     SurfaceHit s;
-    if (!trace_surface(ctx, ray, s)) break;
+    if (!trace_surface(ctx, ray, s)) {
+      if (pdf > 0) result += throughput * escaped(ctx, ray, pdf);
+      break;
+    }
+    if (s.glossy != nullptr) {
+      // L = Σ next events (weighted) + f cos / p · L_in(l'), l' by BRDF sampling.
+      const Vec3 v = -ray.direction;
+      result += throughput * glossy_next_events(ctx, s, v);
+      const GlossyStep step = glossy_step(ctx, s, v);
+      const double survive = std::min(1.0, max_component(step.weight));
+      if (survive <= 0 || ctx.rng.next_double() >= survive) break;
+      throughput = throughput * step.weight * (1 / survive);
+      ray = {offset_from_surface(s.position, s.normal), step.l};
+      pdf = step.pdf;
+      continue;
+    }
+    pdf = 0;
     // L = ρ/π E_direct + ρ · L_in(next): next-event estimation (luminaires and the
     // exterior through portals), then continue; a continuation that escapes adds nothing.
     const Rgb e = direct_illuminance(ctx, s.position, s.normal) +
@@ -151,7 +208,7 @@ ReferenceScene make_reference_scene(const Scene& scene, const PreparedMesh& mesh
                                     const std::vector<PlacedLuminaire>& luminaires,
                                     std::vector<Environment> environments, PlacedEmitters emitters,
                                     const std::vector<std::vector<ExteriorObject>>& exterior) {
-  ReferenceScene ref{mesh, traced, luminaires, {}, {}, {}, {}};
+  ReferenceScene ref{mesh, traced, luminaires, {}, {}, {}, {}, {}, {}};
   ref.emitters = make_reference_emitters(std::move(emitters));
   ref.portals = make_reference_portals(scene, mesh, std::move(environments), exterior);
   for (std::size_t j = 0; j < luminaires.size(); ++j) {
@@ -168,8 +225,15 @@ ReferenceScene make_reference_scene(const Scene& scene, const PreparedMesh& mesh
     ref.openings.push_back(opening);
   }
   ref.triangle_albedo.reserve(mesh.triangles.size());
+  std::vector<std::int32_t> glossy_of(scene.materials.size(), -1);
+  for (std::size_t m = 0; m < scene.materials.size(); ++m) {
+    if (!scene.materials[m].glossy || scene.materials[m].portal) continue;
+    glossy_of[m] = static_cast<std::int32_t>(ref.glossy.size());
+    ref.glossy.push_back(metallic_roughness_of(scene.materials[m]));
+  }
   for (std::uint32_t m : mesh.triangle_material) {
     ref.triangle_albedo.push_back(scene.materials.at(m).albedo);
+    ref.triangle_glossy.push_back(glossy_of.at(m));
   }
   return ref;
 }
@@ -247,7 +311,19 @@ ReferenceImages reference_render(const PinholeCamera& camera, const ReferenceSce
                         emitters_illuminance(ctx, hit.position, hit.normal) +
                         indirect_sample(ctx, hit.position, hit.normal);
           e_sum += e;
-          l_sum += lambertian_radiance(hit.albedo, e);
+          if (hit.glossy != nullptr) {
+            // Toward the eye: next events and one BRDF-sampled continuation.
+            const Vec3 v = -ray.direction;
+            l_sum += glossy_next_events(ctx, hit, v);
+            const GlossyStep step = glossy_step(ctx, hit, v);
+            if (step.pdf > 0) {
+              l_sum += step.weight *
+                       incident_luminance(ctx, offset_from_surface(hit.position, hit.normal),
+                                          step.l, step.pdf);
+            }
+          } else {
+            l_sum += lambertian_radiance(hit.albedo, e);
+          }
           ++covered;
         }
         // Pixels partly covering the background average over all samples (black there);

@@ -19,6 +19,14 @@
 // see the environment (sun included) in the luminance image.
 // Near-field emitters (render/reference_emitters.h): one next-event estimate per sample
 // wherever the luminaires get one; camera rays do not see the emitters themselves.
+// Glossy surfaces (issue 13, the glTF metallic–roughness BRDF of material/metallic_roughness.h):
+// outgoing luminance toward v is estimated directly,
+//   L(x, v) = Σ_lights f(l, v) L_l cos θ_l / p_l · w_l  +  f(l', v) cos θ_l' / p(l') · L_in(l'),
+// next-event samples of every light weighted against the BRDF sample l' (visible-normal and
+// cosine mixture, sample_metallic_roughness) by the power heuristic, and the continuation l'
+// adding what it finds through a window with the complementary weight
+// (render/reference_weight.h); Russian roulette on f cos / p. Sensors still report E, and the
+// illuminance image E at the surface seen.
 #pragma once
 
 #include <cstdint>
@@ -26,6 +34,7 @@
 
 #include "image/image.h"
 #include "light/luminaire_frame.h"
+#include "material/metallic_roughness.h"
 #include "math/rgb.h"
 #include "render/camera.h"
 #include "render/reference_emitters.h"
@@ -61,6 +70,9 @@ struct ReferenceScene {
   std::vector<ReferenceOpening> openings;  // one per luminaire
   ReferencePortals portals;
   ReferenceEmitters emitters;  // near-field emitters as placed (render/reference_emitters.h)
+  // Glossy materials (issue 13): per triangle an index into `glossy`, or −1 (Lambertian).
+  std::vector<std::int32_t> triangle_glossy;
+  std::vector<MetallicRoughness> glossy;
 };
 
 // `environments`: one per scene portal, in order (see make_reference_portals); may stay
