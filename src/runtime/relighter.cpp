@@ -21,8 +21,16 @@ BounceSettings bounce_settings(const Scene& scene) {
   return bounce;
 }
 
+bool has_glossy(const Scene& scene) {
+  return std::any_of(scene.materials.begin(), scene.materials.end(),
+                     [](const Material& m) { return m.glossy && !m.portal; });
+}
+
 std::optional<RuntimeScene> make_runtime_scene(const TransferView& transfer, const Scene& scene) {
-  if (scene.portals.empty() && scene.emitters.empty() && scene.objects.empty()) return std::nullopt;
+  if (scene.portals.empty() && scene.emitters.empty() && scene.objects.empty() &&
+      !(has_glossy(scene) && !transfer.scene.gather_rows.empty())) {
+    return std::nullopt;
+  }
   return std::optional<RuntimeScene>(std::in_place, transfer.scene, bounce_settings(scene));
 }
 
@@ -40,6 +48,7 @@ Relighter::Relighter(TransferView transfer, const Scene& scene, RelighterSetting
       state_(default_lighting_state(scene)),
       bounce_(bounce_settings(scene)),
       vertex_albedo_(transfer_.scene.vertex_albedo) {
+  make_glossy_bounce(scene);
   terms_.push_back({&luminaires_, {}});
   terms_.push_back({&portals_, {}});
   if (!scene.emitters.empty()) {
@@ -61,6 +70,27 @@ Relighter::Relighter(TransferView transfer, const Scene& scene, RelighterSetting
     objects_.emplace(*runtime_, transfer_.objects);
     room_light_.assign(3 * transfer_.receivers, 0.0f);
   }
+}
+
+void Relighter::make_glossy_bounce(const Scene& scene) {
+  const std::vector<std::uint32_t>& material_of = transfer_.scene.vertex_material;
+  if (!has_glossy(scene) || !runtime_ || !runtime_->can_bounce() || material_of.empty()) return;
+  std::vector<std::int32_t> glossy_of_material(scene.materials.size(), -1);
+  std::vector<MetallicRoughness> glossy;
+  for (std::size_t m = 0; m < scene.materials.size(); ++m) {
+    if (!scene.materials[m].glossy || scene.materials[m].portal) continue;
+    glossy_of_material[m] = static_cast<std::int32_t>(glossy.size());
+    glossy.push_back(metallic_roughness_of(scene.materials[m]));
+  }
+  std::vector<std::int32_t> glossy_of(material_of.size(), -1);
+  for (std::size_t v = 0; v < material_of.size(); ++v) {
+    if (material_of[v] != kNoMaterial) glossy_of[v] = glossy_of_material.at(material_of[v]);
+  }
+  const Receivers& receivers = runtime_->receiver_set();
+  glossy_bounce_.emplace(runtime_->gather(), receivers.positions, receivers.normals,
+                         std::move(glossy_of), std::move(glossy), transfer_.scene.vertex_albedo,
+                         bounce_);
+  luminaires_.set_glossy(&*glossy_bounce_);
 }
 
 void Relighter::set_state(const LightingState& state) {

@@ -117,11 +117,13 @@ class Relighter {
   // it changed since the last call.
   bool sum_edited(std::span<float> total);
   void set_materials(const std::vector<Material>& materials);
+  void make_glossy_bounce(const Scene& scene);
   void update_objects();
 
   TransferView transfer_;
   std::vector<Luminaire> luminaire_specs_;  // the scene's (positions, openings)
-  std::optional<RuntimeScene> runtime_;     // with portals, emitters or objects
+  std::optional<RuntimeScene> runtime_;     // with portals, emitters, objects or glossy surfaces
+  std::optional<GlossyFirstBounce> glossy_bounce_;  // with glossy surfaces (luminaires' term)
   LuminaireLighting luminaires_;
   PortalSetLighting portals_;
   LightingState state_;

@@ -142,6 +142,7 @@ void LuminaireLighting::update(std::size_t j, const LuminaireState& s, bool geom
                                                v.factor[r]);
             }
           });
+      respond_glossy(j);
     }
   }
   const Rgb rgb = s.on ? s.color * s.dimmer : Rgb{};
@@ -186,7 +187,29 @@ void LuminaireLighting::add_block(std::size_t b, bool include_direct,
       }
     }
     add_weighted_block(v.indirect.data() + b * k * 3 * kBlock, k, l.weights.data(), acc);
+    if (!l.glossy.empty()) {  // the glossy surfaces' first reflection, interreflected
+      const float* g = l.glossy.data() + 3 * base;
+      for (int c = 0; c < 3; ++c) {
+        for (std::size_t i = 0; i < count; ++i) acc[c][i] += l.rgb[c] * g[3 * i + c];
+      }
+    }
   }
+}
+
+void LuminaireLighting::set_glossy(const GlossyFirstBounce* glossy) {
+  glossy_ = glossy != nullptr && !glossy->empty() && !transfer_.direct_sh_mode ? glossy : nullptr;
+  for (std::size_t j = 0; j < luminaires_.size(); ++j) respond_glossy(j);
+}
+
+void LuminaireLighting::respond_glossy(std::size_t j) {
+  Lit& l = luminaires_[j];
+  if (glossy_ == nullptr) {
+    l.glossy.clear();
+    return;
+  }
+  const LuminaireTransferView& v = transfer_.luminaires[j];
+  l.glossy.resize(3 * transfer_.receivers);
+  glossy_->respond(v.dir_x, v.dir_y, v.dir_z, l.direct, l.glossy);
 }
 
 std::size_t LuminaireLighting::transfer_bytes() const {
@@ -197,6 +220,7 @@ std::size_t LuminaireLighting::transfer_bytes() const {
     bytes += v.indirect.size_bytes();
     bytes += transfer_.direct_sh_mode ? v.direct_sh.size_bytes()
                                       : luminaires_[j].direct.size() * sizeof(float);
+    bytes += luminaires_[j].glossy.size() * sizeof(float);
   }
   return bytes;
 }

@@ -14,6 +14,7 @@
 #include <span>
 #include <vector>
 
+#include "engine/glossy_first_bounce.h"
 #include "engine/source_term.h"
 #include "light/distribution.h"
 #include "math/sh_window.h"
@@ -42,6 +43,12 @@ class LuminaireLighting : public SourceTerm {
   bool set_state(std::span<const LuminaireState> states);
 
   void add_block(std::size_t block, bool include_direct, float (&acc)[3][kBlock]) const override;
+
+  // The glossy surfaces' first reflection of each luminaire's direct light
+  // (engine/glossy_first_bounce.h), added per luminaire as rgb · Γ; recomputed when its aim or
+  // distribution changes. Null (or "sh" direct mode, which has no light direction per
+  // receiver): none. `glossy` must outlive the term.
+  void set_glossy(const GlossyFirstBounce* glossy);
   std::size_t transfer_bytes() const override;
 
   // The luminaires as the current state sets them, for exact direct light at any point
@@ -59,6 +66,7 @@ class LuminaireLighting : public SourceTerm {
     std::vector<double> sh;               // world-frame SH coefficients of I (windowed)
     std::optional<CurveProjector> curve;  // kept for curve distributions (Eq. 19-21)
     std::vector<float> direct;            // D_r without colour (exact mode)
+    std::vector<float> glossy;            // Γ_r, 3 per receiver (with glossy surfaces)
     std::vector<float> weights;           // K × 3: rgb_c · w_k (indirect, and "sh" direct)
     float rgb[3] = {0, 0, 0};
     bool active = false;
@@ -66,12 +74,14 @@ class LuminaireLighting : public SourceTerm {
 
   void update(std::size_t j, const LuminaireState& s, bool geometry_changed);
   void project_distribution(std::size_t j, const LuminaireState& s);
+  void respond_glossy(std::size_t j);
 
   LuminaireTransferSet transfer_;
   ShWindow window_;
   std::vector<LuminaireState> states_;
   std::vector<Lit> luminaires_;
   std::size_t incremental_curve_updates_ = 0;
+  const GlossyFirstBounce* glossy_ = nullptr;
 };
 
 }  // namespace relight
