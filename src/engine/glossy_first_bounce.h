@@ -6,9 +6,10 @@
 // hemispherical albedo ρh_j (engine/material_reflectance.h): receiver r gathers G_rj ρh_j E_j.
 // For the direct light D_j of a point luminaire the incident direction l_j at j is known, so
 // the light j sends toward r is the BRDF's, π f_j(l_j, ω_jr) D_j, with ω_jr the direction from
-// vertex j to receiver r (Iwasaki et al. 2007 §4.3 evaluate a glossy vertex's outgoing light
-// per direction; Sloan et al.'s transfer matrices, the interior paper's Appendix, keep it in SH
-// — here the luminaire's direction makes the exact value cheap). The correction of receiver r,
+// vertex j to receiver r (Iwasaki et al. 2007 §4.1, Eq. 5–9, approximate a glossy object's
+// outgoing light with a separable BRDF, Yue et al. 2009 keep glossy vertices' light in
+// orthonormal bases, their Appendix — here the luminaire's direction makes the exact value
+// cheap). The correction of receiver r,
 //     c_r = Σ_{j glossy} G_rj (π f_j(l_j, ω_jr) − ρh_j) D_j      (per colour channel),
 // then bounces diffusely like any light (X = G ρ (c + X), engine/bounce_solver.h), and the
 // response Γ = c + X (3 per receiver) is what one luminaire adds for unit colour and dimmer.
