@@ -2,6 +2,9 @@
 
 #include <optional>
 
+#include "engine/material_reflectance.h"
+#include "material/lambert.h"
+#include "render/glossy_pixels.h"
 #include "render/pixel_direct.h"
 #include "sources/nearfield/emitter_direct.h"
 
@@ -49,6 +52,9 @@ std::vector<float> with_objects(std::span<const float> room, std::size_t vertice
   return out;
 }
 
+// BRDF samples of the room's reflection per glossy sub-pixel (the image takes 2 × 2 of them).
+constexpr int kGlossySamples = 64;
+
 }  // namespace
 
 ShadedImages render_relit_scene(RelitScene& scene, const Camera& camera, int width, int height,
@@ -85,7 +91,7 @@ ShadedImages render_relit_scene(RelitScene& scene, const Camera& camera, int wid
             ? with_objects(scene.irradiance(), t.vertex_count, objects->irradiance(true))
             : std::vector<float>(scene.irradiance().begin(), scene.irradiance().end());
     return shade_vertices(pinhole,
-                          {visible, positions, triangles, albedo, irradiance, {}, background});
+                          {visible, positions, triangles, albedo, irradiance, {}, background, {}});
   }
   std::vector<float> indirect = scene.indirect_irradiance();
   if (objects != nullptr) {
@@ -99,6 +105,69 @@ ShadedImages render_relit_scene(RelitScene& scene, const Camera& camera, int wid
     sun_geometry->occluders = occluders;
   }
   const EmitterLighting* emitters = lit.emitters();
+  // Glossy room triangles (the state's materials) shade by their BRDF (render/glossy_pixels.h):
+  // the exact direct light's highlights and the room's reflection gathered from the relit
+  // vertices. Objects' triangles shade as diffuse.
+  const std::vector<Material>& materials = lit.state().materials;
+  std::vector<MetallicRoughness> glossy;
+  std::vector<std::int32_t> glossy_of_material(materials.size(), -1);
+  for (std::size_t m = 0; m < materials.size(); ++m) {
+    if (!materials[m].glossy || materials[m].portal) continue;
+    glossy_of_material[m] = static_cast<std::int32_t>(glossy.size());
+    glossy.push_back(metallic_roughness_of(materials[m]));
+  }
+  std::vector<float> vertex_radiance;
+  if (!glossy.empty()) {
+    const std::vector<float> total =
+        objects != nullptr
+            ? with_objects(scene.irradiance(), t.vertex_count, objects->irradiance(true))
+            : std::vector<float>(
+                  scene.irradiance().begin(),
+                  scene.irradiance().begin() + static_cast<std::ptrdiff_t>(3 * t.vertex_count));
+    vertex_radiance.resize(total.size());
+    for (std::size_t i = 0; i < total.size(); ++i) {
+      vertex_radiance[i] = static_cast<float>(lambertian_radiance(albedo[i], total[i]));
+    }
+  }
+  const GlossyPixelScene glossy_scene{
+      visible,
+      positions,
+      triangles,
+      vertex_radiance,
+      [&](Vec3 origin, Vec3 dir) {  // the shell through a window; the sun disc is exact below
+        const RayHit hit = windows.intersect({origin, dir});
+        return hit.hit() ? lit.shell(hit.triangle).radiance(dir) : Rgb{};
+      },
+      [&](const MetallicRoughness& m, Vec3 p, Vec3 n, Vec3 v) {
+        Rgb l;
+        for (const LuminaireLight& light : lights) {
+          const Rgb e = luminaire_direct_irradiance(occluders, std::span(&light, 1), p, n);
+          if (max_component(e) > 0) {
+            l += metallic_roughness_brdf(m, n, normalize(light.position - p), v) * e;
+          }
+        }
+        if (sun_geometry) {
+          for (const PortalSun& sun : lit.suns()) {
+            const Rgb e = sun_irradiance(*sun_geometry, std::span(&sun, 1), p, n);
+            if (max_component(e) > 0) l += metallic_roughness_brdf(m, n, sun.disc.direction, v) * e;
+          }
+        }
+        if (emitters != nullptr) {
+          l += lambertian_radiance(hemispherical_albedo(m),
+                                   emitter_direct_irradiance(emitters->placed(), &occluders, p, n));
+        }
+        return l;
+      }};
+  const auto glossy_radiance = [&](std::uint32_t triangle, Vec3 p, Vec3 n,
+                                   Vec3 v) -> std::optional<Rgb> {
+    if (glossy.empty() || triangle >= t.triangle_material.size()) return std::nullopt;
+    const std::int32_t g = glossy_of_material.at(t.triangle_material[triangle]);
+    if (g < 0) return std::nullopt;
+    // A stream per hit point: images are deterministic whatever the threads do.
+    const std::uint64_t seed = std::hash<double>{}(p.x * 7.0 + p.y * 131.0 + p.z * 1031.0);
+    return glossy_pixel_radiance(glossy_scene, glossy[static_cast<std::size_t>(g)], p, n, v,
+                                 kGlossySamples, seed);
+  };
   return shade_vertices(
       pinhole, {visible, positions, triangles, albedo, indirect,
                 [&](Vec3 p, Vec3 n) {
@@ -109,7 +178,7 @@ ShadedImages render_relit_scene(RelitScene& scene, const Camera& camera, int wid
                   }
                   return e;
                 },
-                background});
+                background, glossy_radiance});
 }
 
 }  // namespace relight

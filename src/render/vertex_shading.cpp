@@ -46,12 +46,19 @@ ShadedImages shade_vertices(const PinholeCamera& camera, const VertexShadingInpu
             e += vertex_rgb(in.irradiance, t[k]) * bary[k];
             albedo += vertex_rgb(in.vertex_albedo, t[k]) * bary[k];
           }
-          if (in.direct_at_hit) {
-            e += in.direct_at_hit(a * bary[0] + b * bary[1] + c * bary[2], normalize(face));
-          }
           // Per-vertex albedo is constant within a triangle (vertices split at material
           // boundaries), so ρ/π · E interpolates like per-vertex radiance.
-          const Rgb l = lambertian_radiance(albedo, e);
+          Rgb l;
+          if (in.direct_at_hit) {
+            const Vec3 p = a * bary[0] + b * bary[1] + c * bary[2], n = normalize(face);
+            const std::optional<Rgb> glossy =
+                in.glossy_radiance ? in.glossy_radiance(hit.triangle, p, n, dir * -1.0)
+                                   : std::nullopt;
+            e += in.direct_at_hit(p, n);
+            l = glossy ? *glossy : lambertian_radiance(albedo, e);
+          } else {
+            l = lambertian_radiance(albedo, e);
+          }
           e_sum += e;
           l_sum += l;
           ++covered;

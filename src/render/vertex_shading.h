@@ -6,6 +6,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -28,6 +29,11 @@ struct VertexShadingInput {
   // When set, a ray that meets no surface shows this luminance (the view out of a window:
   // the portal's shell); its illuminance stays NaN.
   std::function<Rgb(Vec3 origin, Vec3 dir)> background;
+  // With direct_at_hit, when set: the luminance a glossy surface sends toward the eye (issue
+  // 13; render/glossy_pixels.h) at a hit on `triangle` seen from direction v (unit, toward the
+  // eye) — the pixel's luminance instead of ρ/π E — or nothing for a Lambertian triangle.
+  std::function<std::optional<Rgb>(std::uint32_t triangle, Vec3 point, Vec3 normal, Vec3 v)>
+      glossy_radiance;
 };
 
 struct ShadedImages {

@@ -21,14 +21,14 @@ BounceSettings bounce_settings(const Scene& scene) {
   return bounce;
 }
 
-bool has_glossy(const Scene& scene) {
-  return std::any_of(scene.materials.begin(), scene.materials.end(),
+bool has_glossy(std::span<const Material> materials) {
+  return std::any_of(materials.begin(), materials.end(),
                      [](const Material& m) { return m.glossy && !m.portal; });
 }
 
 std::optional<RuntimeScene> make_runtime_scene(const TransferView& transfer, const Scene& scene) {
   if (scene.portals.empty() && scene.emitters.empty() && scene.objects.empty() &&
-      !(has_glossy(scene) && !transfer.scene.gather_rows.empty())) {
+      !(has_glossy(scene.materials) && !transfer.scene.gather_rows.empty())) {
     return std::nullopt;
   }
   return std::optional<RuntimeScene>(std::in_place, transfer.scene, bounce_settings(scene));
@@ -48,7 +48,7 @@ Relighter::Relighter(TransferView transfer, const Scene& scene, RelighterSetting
       state_(default_lighting_state(scene)),
       bounce_(bounce_settings(scene)),
       vertex_albedo_(transfer_.scene.vertex_albedo) {
-  make_glossy_bounce(scene);
+  make_glossy_bounce(scene.materials, transfer_.scene.vertex_albedo);
   terms_.push_back({&luminaires_, {}});
   terms_.push_back({&portals_, {}});
   if (!scene.emitters.empty()) {
@@ -72,24 +72,29 @@ Relighter::Relighter(TransferView transfer, const Scene& scene, RelighterSetting
   }
 }
 
-void Relighter::make_glossy_bounce(const Scene& scene) {
+void Relighter::make_glossy_bounce(std::span<const Material> materials,
+                                   std::span<const float> albedo) {
   const std::vector<std::uint32_t>& material_of = transfer_.scene.vertex_material;
-  if (!has_glossy(scene) || !runtime_ || !runtime_->can_bounce() || material_of.empty()) return;
-  std::vector<std::int32_t> glossy_of_material(scene.materials.size(), -1);
+  if (!has_glossy(materials) || !runtime_ || !runtime_->can_bounce() || material_of.empty()) {
+    luminaires_.set_glossy(nullptr);
+    glossy_bounce_.reset();
+    return;
+  }
+  std::vector<std::int32_t> glossy_of_material(materials.size(), -1);
   std::vector<MetallicRoughness> glossy;
-  for (std::size_t m = 0; m < scene.materials.size(); ++m) {
-    if (!scene.materials[m].glossy || scene.materials[m].portal) continue;
+  for (std::size_t m = 0; m < materials.size(); ++m) {
+    if (!materials[m].glossy || materials[m].portal) continue;
     glossy_of_material[m] = static_cast<std::int32_t>(glossy.size());
-    glossy.push_back(metallic_roughness_of(scene.materials[m]));
+    glossy.push_back(metallic_roughness_of(materials[m]));
   }
   std::vector<std::int32_t> glossy_of(material_of.size(), -1);
   for (std::size_t v = 0; v < material_of.size(); ++v) {
     if (material_of[v] != kNoMaterial) glossy_of[v] = glossy_of_material.at(material_of[v]);
   }
   const Receivers& receivers = runtime_->receiver_set();
+  luminaires_.set_glossy(nullptr);
   glossy_bounce_.emplace(runtime_->gather(), receivers.positions, receivers.normals,
-                         std::move(glossy_of), std::move(glossy), transfer_.scene.vertex_albedo,
-                         bounce_);
+                         std::move(glossy_of), std::move(glossy), albedo, bounce_);
   luminaires_.set_glossy(&*glossy_bounce_);
 }
 
@@ -143,6 +148,12 @@ void Relighter::set_materials(const std::vector<Material>& materials) {
   }
   albedo_edit_->set_albedo(vertex_albedo_);
   edit_dirty_ = true;
+  // The glossy surfaces' first bounce as edited: reflected by the edited BRDFs, less what the
+  // edited albedo reflects diffusely, bounced by the edited room (engine/glossy_first_bounce.h).
+  if (has_glossy(materials) || glossy_bounce_) {
+    make_glossy_bounce(materials, vertex_albedo_);
+    glossy_dirty_ = true;
+  }
   if (objects_) {
     objects_->set_albedo(vertex_albedo_, materials);
     objects_dirty_ = true;
@@ -172,7 +183,9 @@ bool Relighter::sum_edited(std::span<float> total) {
 
 void Relighter::update_objects() {
   // E0 with direct light, summed again when a term's state changed.
-  const bool light_changed = sum_edited(room_light_);
+  const bool light_changed = sum_edited(room_light_) || glossy_dirty_;
+  luminaires_.add_glossy(room_light_);
+  glossy_dirty_ = false;
   if (!light_changed && !objects_dirty_) return;
   const std::vector<LuminaireLight> lights = luminaires_.lights(luminaire_specs_);
   const std::vector<LuminaireLight> sensor_lights =
@@ -204,6 +217,8 @@ void Relighter::relight(std::span<float> out, bool include_direct) {
       sum_terms(0, out);
       for (std::size_t i = 0; i < out.size(); ++i) out[i] += edit_delta_[i];
     }
+    luminaires_.add_glossy(out);
+    glossy_dirty_ = false;
     return;
   }
   update_objects();
@@ -214,6 +229,7 @@ void Relighter::relight(std::span<float> out, bool include_direct) {
     if (albedo_edit_) {
       for (std::size_t i = 0; i < out.size(); ++i) out[i] += edit_delta_[i];
     }
+    luminaires_.add_glossy(out);
   }
   objects_->add_to_room(out, include_direct);
 }

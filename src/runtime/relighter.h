@@ -117,7 +117,9 @@ class Relighter {
   // it changed since the last call.
   bool sum_edited(std::span<float> total);
   void set_materials(const std::vector<Material>& materials);
-  void make_glossy_bounce(const Scene& scene);
+  // The glossy first bounce of the luminaires' light for `materials` (the scene's or as edited),
+  // bounced with `albedo` (3 per vertex); none when no material is glossy.
+  void make_glossy_bounce(std::span<const Material> materials, std::span<const float> albedo);
   void update_objects();
 
   TransferView transfer_;
@@ -138,6 +140,7 @@ class Relighter {
   std::optional<AlbedoEdit> albedo_edit_;
   std::vector<float> edit_total_, edit_delta_;  // 3 per receiver
   bool edit_dirty_ = false, edit_final_ = true, edit_solved_ = false;
+  bool glossy_dirty_ = false;  // the glossy first bounce was made again since the last relight
   int material_bounces_ = -1;
   bool objects_dirty_ = true;  // placements or E0 changed since the objects' last update
   std::size_t last_frame_bytes_ = 0;

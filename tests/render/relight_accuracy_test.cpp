@@ -325,7 +325,8 @@ TEST(RelightAccuracy, FurnishedRoomImageMatchesReference) {
   const RayTracer tracer(r.precomputed.mesh.positions, opaque, ids);
   const ShadedImages shaded = shade_vertices(
       camera,
-      {tracer, r.precomputed.mesh.positions, r.precomputed.mesh.triangles, albedo, e, {}, {}}, 4);
+      {tracer, r.precomputed.mesh.positions, r.precomputed.mesh.triangles, albedo, e, {}, {}, {}},
+      4);
 
   const std::vector<PlacedLuminaire> luminaires = place_luminaires(r.scene);
   const PreparedMesh mesh = prepare_mesh(r.scene.geometry, PreparationSettings{});
@@ -389,16 +390,17 @@ TEST(RelightAccuracy, FurnishedRoomImageMatchesReference) {
   std::vector<float> indirect(3 * relighter.receivers());
   relighter.relight(indirect, false);
   const std::vector<LuminaireLight> lights = pixel_lights(r.scene, relighter);
-  const ShadedImages pixel =
-      shade_vertices(camera,
-                     {tracer,
-                      r.precomputed.mesh.positions,
-                      r.precomputed.mesh.triangles,
-                      albedo,
-                      indirect,
-                      [&](Vec3 q, Vec3 n) { return luminaire_direct_irradiance(tracer, lights, q, n); },
-                      {}},
-                     4);
+  const ShadedImages pixel = shade_vertices(
+      camera,
+      {tracer,
+       r.precomputed.mesh.positions,
+       r.precomputed.mesh.triangles,
+       albedo,
+       indirect,
+       [&](Vec3 q, Vec3 n) { return luminaire_direct_irradiance(tracer, lights, q, n); },
+       {},
+       {}},
+      4);
   const Stats exact = compare_images(pixel.luminance);
   report("pixel", exact);
   EXPECT_LE(exact.mean, 0.02);

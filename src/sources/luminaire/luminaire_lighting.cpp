@@ -187,12 +187,19 @@ void LuminaireLighting::add_block(std::size_t b, bool include_direct,
       }
     }
     add_weighted_block(v.indirect.data() + b * k * 3 * kBlock, k, l.weights.data(), acc);
-    if (!l.glossy.empty()) {  // the glossy surfaces' first reflection, interreflected
-      const float* g = l.glossy.data() + 3 * base;
-      for (int c = 0; c < 3; ++c) {
-        for (std::size_t i = 0; i < count; ++i) acc[c][i] += l.rgb[c] * g[3 * i + c];
-      }
-    }
+  }
+}
+
+void LuminaireLighting::add_glossy(std::span<float> out) const {
+  if (glossy_ == nullptr) return;
+  for (const Lit& l : luminaires_) {
+    if (!l.active || l.glossy.empty()) continue;
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, out.size(), 3 * 4096),
+                      [&](const auto& range) {
+                        for (std::size_t i = range.begin(); i != range.end(); ++i) {
+                          out[i] += l.rgb[i % 3] * l.glossy[i];
+                        }
+                      });
   }
 }
 

@@ -45,10 +45,13 @@ class LuminaireLighting : public SourceTerm {
   void add_block(std::size_t block, bool include_direct, float (&acc)[3][kBlock]) const override;
 
   // The glossy surfaces' first reflection of each luminaire's direct light
-  // (engine/glossy_first_bounce.h), added per luminaire as rgb · Γ; recomputed when its aim or
-  // distribution changes. Null (or "sh" direct mode, which has no light direction per
-  // receiver): none. `glossy` must outlive the term.
+  // (engine/glossy_first_bounce.h), Γ per luminaire, recomputed when its aim or distribution
+  // changes. Null (or "sh" direct mode, which has no light direction per receiver): none.
+  // `glossy` must outlive the term.
   void set_glossy(const GlossyFirstBounce* glossy);
+  // out (3 per receiver) += Σ_j rgb_j · Γ_j. Not part of add_block: it is bounced with the
+  // materials as edited (runtime/relighter.h adds it after a material edit's correction).
+  void add_glossy(std::span<float> out) const;
   std::size_t transfer_bytes() const override;
 
   // The luminaires as the current state sets them, for exact direct light at any point
