@@ -27,9 +27,8 @@ namespace {
 
 namespace fs = std::filesystem;
 using testing::CommandResult;
-using testing::parse_csv;
-using testing::read_text;
 using testing::run_relight;
+using testing::sensor_lux;
 using testing::TempDir;
 
 const char* kRoom = R"({
@@ -70,13 +69,6 @@ const char* kRoom = R"({
   ]
 })";
 
-std::vector<double> lux_column(const fs::path& csv) {
-  std::vector<double> out;
-  const auto rows = parse_csv(read_text(csv));
-  for (std::size_t i = 1; i < rows.size(); ++i) out.push_back(std::stod(rows[i].at(8)));
-  return out;
-}
-
 class GlossyRoom : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
@@ -103,7 +95,7 @@ TEST_F(GlossyRoom, ProbeWithinThreePercentMeanAndTenWorstOfTheReference) {
   r = run_relight("reference '" + scene_.string() + "' --spp 131072 --seed 3 --sensors-out '" +
                   reference.string() + "' --no-progress");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const std::vector<double> fast = lux_column(probe), truth = lux_column(reference);
+  const std::vector<double> fast = sensor_lux(probe), truth = sensor_lux(reference);
   ASSERT_EQ(fast.size(), 50u);
   ASSERT_EQ(truth.size(), fast.size());
   double sum = 0, worst = 0;

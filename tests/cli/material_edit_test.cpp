@@ -21,9 +21,8 @@ namespace {
 
 namespace fs = std::filesystem;
 using testing::CommandResult;
-using testing::parse_csv;
-using testing::read_text;
 using testing::run_relight;
+using testing::sensor_lux;
 using testing::TempDir;
 
 // The room with `wall` (the +x wall's albedo) and `floor` (the floor material's keys).
@@ -79,10 +78,7 @@ class MaterialEdit : public ::testing::Test {
     const CommandResult r = run_relight("probe '" + rlt.string() + "' --state '" +
                                         state_file.string() + "' -o '" + csv.string() + "'");
     EXPECT_EQ(r.exit_code, 0) << r.err;
-    std::vector<double> out;
-    const auto rows = parse_csv(read_text(csv));
-    for (std::size_t i = 1; i < rows.size(); ++i) out.push_back(std::stod(rows[i].at(8)));
-    return out;
+    return sensor_lux(csv);
   }
   static TempDir dir_;
 };

@@ -56,4 +56,13 @@ inline std::vector<std::vector<std::string>> parse_csv(const std::string& text) 
   return rows;
 }
 
+// The `lux` column of a sensor CSV written by `relight probe -o` or `relight reference
+// --sensors-out` (docs: sensor,index,x,y,z,nx,ny,nz,lux,r,g,b), one value per sensor point.
+inline std::vector<double> sensor_lux(const std::filesystem::path& csv) {
+  std::vector<double> out;
+  const auto rows = parse_csv(read_text(csv));
+  for (std::size_t i = 1; i < rows.size(); ++i) out.push_back(std::stod(rows[i].at(8)));
+  return out;
+}
+
 }  // namespace relight::testing
