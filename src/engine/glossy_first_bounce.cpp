@@ -51,8 +51,9 @@ void GlossyFirstBounce::respond(std::span<const float> dir_x, std::span<const fl
                                 std::span<const float> dir_z, std::span<const float> direct,
                                 std::span<float> response) const {
   const std::size_t rows = positions_.size(), vertices = glossy_of_.size();
+  const std::size_t stride = direct.size() == 3 * rows ? 3 : 1;
   if (dir_x.size() != rows || dir_y.size() != rows || dir_z.size() != rows ||
-      direct.size() != rows || response.size() != 3 * rows) {
+      (direct.size() != rows && stride == 1) || response.size() != 3 * rows) {
     throw std::invalid_argument("GlossyFirstBounce: one light direction per receiver expected");
   }
   // c_r = Σ_{j glossy} G_rj (π f_j(l_j, ω_jr) − ρh_j) D_j.
@@ -60,10 +61,12 @@ void GlossyFirstBounce::respond(std::span<const float> dir_x, std::span<const fl
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rows, 64), [&](const auto& range) {
     for (std::size_t r = range.begin(); r != range.end(); ++r) {
       Rgb c;
-      for (std::size_t e = row_first_[r]; e < row_first_[r + 1]; ++e) {
-        const Entry& entry = entries_[e];
+      for (std::size_t k = row_first_[r]; k < row_first_[r + 1]; ++k) {
+        const Entry& entry = entries_[k];
         const std::size_t j = entry.vertex;
-        if (direct[j] <= 0) continue;
+        const Rgb light = stride == 1 ? Rgb{direct[j], direct[j], direct[j]}
+                                      : Rgb{direct[3 * j], direct[3 * j + 1], direct[3 * j + 2]};
+        if (max_component(light) <= 0) continue;
         const Vec3 to_r = positions_[r] - positions_[j];
         const double d = length(to_r);
         if (d <= 0) continue;
@@ -71,7 +74,7 @@ void GlossyFirstBounce::respond(std::span<const float> dir_x, std::span<const fl
         const Vec3 l{-dir_x[j], -dir_y[j], -dir_z[j]};
         const Rgb f = metallic_roughness_brdf(m, normals_[j], l, to_r / d);
         const Rgb rho{albedo_[3 * j], albedo_[3 * j + 1], albedo_[3 * j + 2]};
-        c += (f * kPi - rho) * (entry.weight * direct[j]);
+        c += (f * kPi - rho) * light * entry.weight;
       }
       once[3 * r] = static_cast<float>(c.r);
       once[3 * r + 1] = static_cast<float>(c.g);

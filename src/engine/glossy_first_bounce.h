@@ -1,6 +1,8 @@
-// The first reflection of a point light's direct light off glossy surfaces (issue 13): what a
-// polished floor throws onto the ceiling from a downlight — exactly in direction, at run time,
-// through the stored gather operator G.
+// The first reflection of a point light's (or the sun's) direct light off glossy surfaces
+// (issue 13): what a polished floor throws onto the ceiling from a downlight or a sun patch —
+// exactly in direction, at run time, through the stored gather operator G. Used by the
+// luminaires' term (per luminaire, sources/luminaire/luminaire_lighting.h) and the suns traced
+// behind clear glass (sources/portal/portal_lighting.h).
 //
 // The diffuse transfer bounces a glossy vertex j's light as a Lambertian surface of its
 // hemispherical albedo ρh_j (engine/material_reflectance.h): receiver r gathers G_rj ρh_j E_j.
@@ -42,8 +44,9 @@ class GlossyFirstBounce {
 
   bool empty() const { return entries_.empty(); }
 
-  // Γ (3 per receiver) for light from a point whose direction toward each receiver is
-  // (dir_x, dir_y, dir_z)[r] (unit, from the light) with irradiance direct[r] (no colour).
+  // Γ (3 per receiver) for light from a point (or the sun) whose direction toward each receiver
+  // is (dir_x, dir_y, dir_z)[r] (unit, from the light) with irradiance `direct`: 1 value per
+  // receiver (no colour: a luminaire's) or 3 (RGB: the sun through tinted glass).
   void respond(std::span<const float> dir_x, std::span<const float> dir_y,
                std::span<const float> dir_z, std::span<const float> direct,
                std::span<float> response) const;

@@ -77,6 +77,7 @@ void Relighter::make_glossy_bounce(std::span<const Material> materials,
   const std::vector<std::uint32_t>& material_of = transfer_.scene.vertex_material;
   if (!has_glossy(materials) || !runtime_ || !runtime_->can_bounce() || material_of.empty()) {
     luminaires_.set_glossy(nullptr);
+    portals_.set_glossy(nullptr);
     glossy_bounce_.reset();
     return;
   }
@@ -93,9 +94,16 @@ void Relighter::make_glossy_bounce(std::span<const Material> materials,
   }
   const Receivers& receivers = runtime_->receiver_set();
   luminaires_.set_glossy(nullptr);
+  portals_.set_glossy(nullptr);
   glossy_bounce_.emplace(runtime_->gather(), receivers.positions, receivers.normals,
                          std::move(glossy_of), std::move(glossy), albedo, bounce_);
   luminaires_.set_glossy(&*glossy_bounce_);
+  portals_.set_glossy(&*glossy_bounce_);
+}
+
+void Relighter::add_glossy(std::span<float> out) const {
+  luminaires_.add_glossy(out);
+  portals_.add_glossy(out);
 }
 
 void Relighter::set_state(const LightingState& state) {
@@ -184,7 +192,7 @@ bool Relighter::sum_edited(std::span<float> total) {
 void Relighter::update_objects() {
   // E0 with direct light, summed again when a term's state changed.
   const bool light_changed = sum_edited(room_light_) || glossy_dirty_;
-  luminaires_.add_glossy(room_light_);
+  add_glossy(room_light_);
   glossy_dirty_ = false;
   if (!light_changed && !objects_dirty_) return;
   const std::vector<LuminaireLight> lights = luminaires_.lights(luminaire_specs_);
@@ -217,7 +225,7 @@ void Relighter::relight(std::span<float> out, bool include_direct) {
       sum_terms(0, out);
       for (std::size_t i = 0; i < out.size(); ++i) out[i] += edit_delta_[i];
     }
-    luminaires_.add_glossy(out);
+    add_glossy(out);
     glossy_dirty_ = false;
     return;
   }
@@ -229,7 +237,7 @@ void Relighter::relight(std::span<float> out, bool include_direct) {
     if (albedo_edit_) {
       for (std::size_t i = 0; i < out.size(); ++i) out[i] += edit_delta_[i];
     }
-    luminaires_.add_glossy(out);
+    add_glossy(out);
   }
   objects_->add_to_room(out, include_direct);
 }

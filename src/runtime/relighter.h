@@ -120,6 +120,8 @@ class Relighter {
   // The glossy first bounce of the luminaires' light for `materials` (the scene's or as edited),
   // bounced with `albedo` (3 per vertex); none when no material is glossy.
   void make_glossy_bounce(std::span<const Material> materials, std::span<const float> albedo);
+  // out += the glossy first bounce of the luminaires and the suns.
+  void add_glossy(std::span<float> out) const;
   void update_objects();
 
   TransferView transfer_;

@@ -152,6 +152,7 @@ void PortalSetLighting::update_suns() {
   if (suns_.empty()) {
     sun_direct_.clear();
     sun_indirect_.clear();
+    sun_glossy_.clear();
     sun_seconds_ = 0;
     return;
   }
@@ -184,8 +185,50 @@ void PortalSetLighting::update_suns() {
         },
         0.05);
     sun_bounce_seconds_ = runtime_->bounce(reflected, sun_indirect_, warm);
+    respond_glossy(geometry, reflected);
   }
   sun_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void PortalSetLighting::set_glossy(const GlossyFirstBounce* glossy) {
+  glossy_ = glossy != nullptr && !glossy->empty() ? glossy : nullptr;
+  sun_keys_.clear();  // the suns' light made again, with their Γ
+  update_suns();
+}
+
+void PortalSetLighting::respond_glossy(const SunGeometry& geometry,
+                                       std::span<const float> reflected) {
+  sun_glossy_.clear();
+  if (glossy_ == nullptr || runtime_ == nullptr) return;
+  const std::size_t n = runtime_->receivers();
+  sun_glossy_.assign(3 * n, 0.0f);
+  std::vector<float> response(3 * n), own(suns_.size() > 1 ? 3 * n : 0);
+  for (const PortalSun& sun : suns_) {
+    // The sun's own light at the vertices: the suns' together when there is one.
+    std::span<const float> direct = reflected;
+    if (suns_.size() > 1) {
+      runtime_->hat_means(
+          [&](Vec3 p, Vec3 normal) {
+            return sun_irradiance(geometry, std::span(&sun, 1), p, normal, false);
+          },
+          4, own,
+          [&](Vec3 a, Vec3 b, Vec3 c, Vec3 normal) {
+            return sun_may_light_triangle(geometry, std::span(&sun, 1), a, b, c, normal);
+          },
+          0.05);
+      direct = own;
+    }
+    const Vec3 s = sun.disc.direction;
+    const std::vector<float> dx(n, static_cast<float>(-s.x)), dy(n, static_cast<float>(-s.y)),
+        dz(n, static_cast<float>(-s.z));
+    glossy_->respond(dx, dy, dz, direct, response);
+    for (std::size_t i = 0; i < 3 * n; ++i) sun_glossy_[i] += response[i];
+  }
+}
+
+void PortalSetLighting::add_glossy(std::span<float> out) const {
+  if (sun_glossy_.size() != out.size()) return;
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] += sun_glossy_[i];
 }
 
 bool PortalSetLighting::set_state(std::span<const PortalState> states) {

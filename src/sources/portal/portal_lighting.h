@@ -16,6 +16,7 @@
 #include <span>
 #include <vector>
 
+#include "engine/glossy_first_bounce.h"
 #include "engine/runtime_scene.h"
 #include "engine/source_term.h"
 #include "light/environment.h"
@@ -84,9 +85,16 @@ class PortalSetLighting : public SourceTerm {
   // Wall time of the last suns' update: the direct light at every receiver and its bounce.
   double sun_seconds() const { return sun_seconds_; }
   double sun_bounce_seconds() const { return sun_bounce_seconds_; }
+  // The glossy surfaces' first reflection of the suns (engine/glossy_first_bounce.h), made
+  // again with every sun update; null: none. `glossy` must outlive the term.
+  void set_glossy(const GlossyFirstBounce* glossy);
+  // out (3 per receiver) += the suns' Γ. Not part of add_block, like the luminaires'
+  // (runtime/relighter.h adds it after a material edit's correction).
+  void add_glossy(std::span<float> out) const;
 
  private:
   void update_suns();
+  void respond_glossy(const SunGeometry& geometry, std::span<const float> reflected);
 
   PortalTransferSet transfer_;
   const RuntimeScene* runtime_;
@@ -105,6 +113,8 @@ class PortalSetLighting : public SourceTerm {
   };
   std::vector<SunKey> sun_keys_;
   std::vector<float> sun_direct_, sun_indirect_;  // 3 per receiver (empty: no sun)
+  std::vector<float> sun_glossy_;                 // Γ of the suns, 3 per receiver (empty: none)
+  const GlossyFirstBounce* glossy_ = nullptr;
   double sun_seconds_ = 0, sun_bounce_seconds_ = 0;
 };
 
