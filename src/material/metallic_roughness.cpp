@@ -7,6 +7,8 @@
 #include <utility>
 #include <vector>
 
+#include <tbb/parallel_for.h>
+
 #include "math/frame.h"
 
 namespace relight {
@@ -123,16 +125,17 @@ class SpecularAlbedoTable {
     return static_cast<std::size_t>(j) * kMu + static_cast<std::size_t>(i);
   }
   SpecularAlbedoTable() : a_(std::size_t{kMu} * kR), b_(std::size_t{kMu} * kR) {
-    for (int j = 0; j < kR; ++j) {
+    // Each entry on its own (the quadrature is deterministic): the table is the same whatever
+    // the threads do.
+    tbb::parallel_for(0, kMu * kR, [&](int e) {
+      const int i = e % kMu, j = e / kMu;
       const double alpha = std::max(std::pow(roughness_of(j), 2), 1e-4);
-      for (int i = 0; i < kMu; ++i) {
-        const double mu = std::max(mu_of(static_cast<double>(i) / (kMu - 1)), 1e-4);
-        const Vec3 v{std::sqrt(1 - mu * mu), 0, mu};
-        const auto [a, b] = integrate(alpha, v);
-        a_[index(i, j)] = a;
-        b_[index(i, j)] = b;
-      }
-    }
+      const double mu = std::max(mu_of(static_cast<double>(i) / (kMu - 1)), 1e-4);
+      const Vec3 v{std::sqrt(1 - mu * mu), 0, mu};
+      const auto [a, b] = integrate(alpha, v);
+      a_[index(i, j)] = a;
+      b_[index(i, j)] = b;
+    });
     for (int j = 0; j < kR; ++j) {
       const double r = roughness_of(j);
       double a = 0, b = 0;
