@@ -204,7 +204,10 @@ void LuminaireLighting::add_glossy(std::span<float> out) const {
 }
 
 void LuminaireLighting::set_glossy(const GlossyFirstBounce* glossy) {
-  glossy_ = glossy != nullptr && !glossy->empty() && !transfer_.direct_sh_mode ? glossy : nullptr;
+  const GlossyFirstBounce* now =
+      glossy != nullptr && !glossy->empty() && !transfer_.direct_sh_mode ? glossy : nullptr;
+  if (now == glossy_ && now == nullptr) return;
+  glossy_ = now;
   for (std::size_t j = 0; j < luminaires_.size(); ++j) respond_glossy(j);
 }
 

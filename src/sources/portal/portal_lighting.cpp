@@ -191,8 +191,13 @@ void PortalSetLighting::update_suns() {
 }
 
 void PortalSetLighting::set_glossy(const GlossyFirstBounce* glossy) {
-  glossy_ = glossy != nullptr && !glossy->empty() ? glossy : nullptr;
-  sun_keys_.clear();  // the suns' light made again, with their Γ
+  const GlossyFirstBounce* now = glossy != nullptr && !glossy->empty() ? glossy : nullptr;
+  if (now == glossy_ && now == nullptr) return;
+  glossy_ = now;
+  // The suns' light made again with their Γ, solved from nothing as at construction (a warm
+  // start stops at a looser tolerance: the same scene would light differently).
+  sun_keys_.clear();
+  sun_indirect_.clear();
   update_suns();
 }
 
