@@ -7,6 +7,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "common/input_error.h"
 #include "engine/material_reflectance.h"
 #include "engine/transfer_blocks.h"
 
@@ -128,10 +129,11 @@ void Relighter::set_materials(const std::vector<Material>& materials) {
   }
   if (materials == state_.materials) return;
   const std::vector<std::uint32_t>& material_of = transfer_.scene.vertex_material;
+  // Files written before live material edits: the state asks what the file cannot do.
   if (material_of.empty()) {
-    throw std::invalid_argument(
-        "Relighter: this transfer file does not record the vertices' materials, which live "
-        "material edits need (run relight precompute again)");
+    fail_input("the state's materials",
+               "this transfer file does not record the vertices' materials, which live material "
+               "edits need (run relight precompute again)");
   }
   // The vertices' albedo under the edited materials; a vertex no triangle uses keeps its own.
   const std::span<const float> stored = transfer_.scene.vertex_albedo;
@@ -145,9 +147,9 @@ void Relighter::set_materials(const std::vector<Material>& materials) {
   }
   if (!albedo_edit_) {
     if (transfer_.scene.gather_rows.empty()) {
-      throw std::invalid_argument(
-          "Relighter: live material edits need the gather operator in the transfer file (run "
-          "relight precompute again)");
+      fail_input("the state's materials",
+                 "live material edits need the gather operator, which this transfer file does "
+                 "not keep (run relight precompute again)");
     }
     if (!runtime_) runtime_.emplace(transfer_.scene, bounce_);
     albedo_edit_.emplace(runtime_->gather(), stored, bounce_);
