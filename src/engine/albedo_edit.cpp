@@ -63,12 +63,7 @@ int AlbedoEdit::solve(std::span<const float> total, std::span<float> delta, int 
   if (max_bounces != 0) {
     BounceSettings settings = settings_;
     if (max_bounces > 0) settings.max_bounces = std::min(settings.max_bounces, max_bounces);
-    const RgbGather op{vertices, rows, edited_,
-                       [&](std::size_t r, std::span<const float> reflected, float(&sum)[3]) {
-                         gather_rgb_row(gather_.matrix, static_cast<Eigen::Index>(r), reflected,
-                                        sum);
-                       },
-                       nullptr};
+    const RgbGather op = stored_rgb_gather(gather_, edited_);
     bounces = solve_bounces_rgb(op, once_, bounced_, warm, settings);
   } else {
     std::fill(bounced_.begin(), bounced_.end(), 0.0f);

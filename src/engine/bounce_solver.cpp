@@ -192,12 +192,16 @@ int solve_bounces_rgb(const GatherOperator& gather, const Receivers& receivers,
     albedo[3 * v + 1] = static_cast<float>(a.g);
     albedo[3 * v + 2] = static_cast<float>(a.b);
   }
-  const RgbGather op{vertices, n, albedo,
-                     [&](std::size_t r, std::span<const float> reflected, float(&sum)[3]) {
-                       gather_rgb_row(g, static_cast<Eigen::Index>(r), reflected, sum);
-                     },
-                     nullptr};
-  return solve_bounces_rgb(op, direct, indirect, warm, settings);
+  return solve_bounces_rgb(stored_rgb_gather(gather, albedo), direct, indirect, warm, settings);
+}
+
+RgbGather stored_rgb_gather(const GatherOperator& gather, std::span<const float> albedo) {
+  const Gather& g = gather.matrix;
+  return {static_cast<std::size_t>(g.cols()), static_cast<std::size_t>(g.rows()), albedo,
+          [&g](std::size_t r, std::span<const float> reflected, float(&sum)[3]) {
+            gather_rgb_row(g, static_cast<Eigen::Index>(r), reflected, sum);
+          },
+          nullptr};
 }
 
 int solve_bounces_rgb(const RgbGather& op, std::span<const float> direct, std::span<float> indirect,

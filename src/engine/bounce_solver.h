@@ -86,6 +86,10 @@ struct RgbGather {
 int solve_bounces_rgb(const RgbGather& op, std::span<const float> direct, std::span<float> indirect,
                       bool warm, const BounceSettings& settings);
 
+// The stored operator as an RgbGather whose vertices reflect `albedo` (3 per vertex); both must
+// outlive it.
+RgbGather stored_rgb_gather(const GatherOperator& gather, std::span<const float> albedo);
+
 // Σ_j G_rj · reflected[3j … 3j+2] of one row of a stored gather operator.
 void gather_rgb_row(const Eigen::SparseMatrix<float, Eigen::RowMajor>& gather, Eigen::Index row,
                     std::span<const float> reflected, float (&sum)[3]);

@@ -50,7 +50,7 @@ GlossyFirstBounce::GlossyFirstBounce(const GatherOperator& gather, std::span<con
 void GlossyFirstBounce::respond(std::span<const float> dir_x, std::span<const float> dir_y,
                                 std::span<const float> dir_z, std::span<const float> direct,
                                 std::span<float> response) const {
-  const std::size_t rows = positions_.size(), vertices = glossy_of_.size();
+  const std::size_t rows = positions_.size();
   const std::size_t stride = direct.size() == 3 * rows ? 3 : 1;
   if (dir_x.size() != rows || dir_y.size() != rows || dir_z.size() != rows ||
       (direct.size() != rows && stride == 1) || response.size() != 3 * rows) {
@@ -83,11 +83,7 @@ void GlossyFirstBounce::respond(std::span<const float> dir_x, std::span<const fl
   });
   // Γ = c + X, X = G ρ (c + X).
   std::vector<float> bounced(3 * rows, 0.0f);
-  const RgbGather op{vertices, rows, albedo_,
-                     [&](std::size_t r, std::span<const float> reflected, float(&sum)[3]) {
-                       gather_rgb_row(gather_.matrix, static_cast<Eigen::Index>(r), reflected, sum);
-                     },
-                     nullptr};
+  const RgbGather op = stored_rgb_gather(gather_, albedo_);
   solve_bounces_rgb(op, once, bounced, false, settings_);
   for (std::size_t i = 0; i < 3 * rows; ++i) response[i] = once[i] + bounced[i];
 }

@@ -7,6 +7,10 @@
 // light through it). Pinned by tests/engine/material_reflectance_test.cpp.
 #pragma once
 
+#include <cstdint>
+#include <span>
+#include <vector>
+
 #include "material/metallic_roughness.h"
 #include "math/rgb.h"
 #include "scene/scene.h"
@@ -20,6 +24,25 @@ inline MetallicRoughness metallic_roughness_of(const Material& m) {
 inline Rgb bounce_albedo(const Material& m) {
   if (m.portal) return {};
   return m.glossy ? hemispherical_albedo(metallic_roughness_of(m)) : m.albedo;
+}
+
+// The glossy materials of a material list (window glass never is): per material its index
+// into `brdf`, or −1 when it is Lambertian or glass.
+struct GlossyMaterials {
+  std::vector<std::int32_t> index;
+  std::vector<MetallicRoughness> brdf;
+  bool empty() const { return brdf.empty(); }
+};
+
+inline GlossyMaterials glossy_materials(std::span<const Material> materials) {
+  GlossyMaterials g;
+  g.index.assign(materials.size(), -1);
+  for (std::size_t m = 0; m < materials.size(); ++m) {
+    if (!materials[m].glossy || materials[m].portal) continue;
+    g.index[m] = static_cast<std::int32_t>(g.brdf.size());
+    g.brdf.push_back(metallic_roughness_of(materials[m]));
+  }
+  return g;
 }
 
 }  // namespace relight

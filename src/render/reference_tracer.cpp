@@ -225,16 +225,12 @@ ReferenceScene make_reference_scene(const Scene& scene, const PreparedMesh& mesh
     ref.openings.push_back(opening);
   }
   ref.triangle_albedo.reserve(mesh.triangles.size());
-  std::vector<std::int32_t> glossy_of(scene.materials.size(), -1);
-  for (std::size_t m = 0; m < scene.materials.size(); ++m) {
-    if (!scene.materials[m].glossy || scene.materials[m].portal) continue;
-    glossy_of[m] = static_cast<std::int32_t>(ref.glossy.size());
-    ref.glossy.push_back(metallic_roughness_of(scene.materials[m]));
-  }
+  GlossyMaterials glossy = glossy_materials(scene.materials);
   for (std::uint32_t m : mesh.triangle_material) {
     ref.triangle_albedo.push_back(scene.materials.at(m).albedo);
-    ref.triangle_glossy.push_back(glossy_of.at(m));
+    ref.triangle_glossy.push_back(glossy.index.at(m));
   }
+  ref.glossy = std::move(glossy.brdf);
   return ref;
 }
 

@@ -108,14 +108,7 @@ ShadedImages render_relit_scene(RelitScene& scene, const Camera& camera, int wid
   // Glossy room triangles (the state's materials) shade by their BRDF (render/glossy_pixels.h):
   // the exact direct light's highlights and the room's reflection gathered from the relit
   // vertices. Objects' triangles shade as diffuse.
-  const std::vector<Material>& materials = lit.state().materials;
-  std::vector<MetallicRoughness> glossy;
-  std::vector<std::int32_t> glossy_of_material(materials.size(), -1);
-  for (std::size_t m = 0; m < materials.size(); ++m) {
-    if (!materials[m].glossy || materials[m].portal) continue;
-    glossy_of_material[m] = static_cast<std::int32_t>(glossy.size());
-    glossy.push_back(metallic_roughness_of(materials[m]));
-  }
+  const GlossyMaterials glossy = glossy_materials(lit.state().materials);
   std::vector<float> vertex_radiance;
   if (!glossy.empty()) {
     const std::vector<float> total =
@@ -161,11 +154,11 @@ ShadedImages render_relit_scene(RelitScene& scene, const Camera& camera, int wid
   const auto glossy_radiance = [&](std::uint32_t triangle, Vec3 p, Vec3 n,
                                    Vec3 v) -> std::optional<Rgb> {
     if (glossy.empty() || triangle >= t.triangle_material.size()) return std::nullopt;
-    const std::int32_t g = glossy_of_material.at(t.triangle_material[triangle]);
+    const std::int32_t g = glossy.index.at(t.triangle_material[triangle]);
     if (g < 0) return std::nullopt;
     // A stream per hit point: images are deterministic whatever the threads do.
     const std::uint64_t seed = std::hash<double>{}(p.x * 7.0 + p.y * 131.0 + p.z * 1031.0);
-    return glossy_pixel_radiance(glossy_scene, glossy[static_cast<std::size_t>(g)], p, n, v,
+    return glossy_pixel_radiance(glossy_scene, glossy.brdf[static_cast<std::size_t>(g)], p, n, v,
                                  kGlossySamples, seed);
   };
   return shade_vertices(

@@ -22,14 +22,9 @@ BounceSettings bounce_settings(const Scene& scene) {
   return bounce;
 }
 
-bool has_glossy(std::span<const Material> materials) {
-  return std::any_of(materials.begin(), materials.end(),
-                     [](const Material& m) { return m.glossy && !m.portal; });
-}
-
 std::optional<RuntimeScene> make_runtime_scene(const TransferView& transfer, const Scene& scene) {
   if (scene.portals.empty() && scene.emitters.empty() && scene.objects.empty() &&
-      !(has_glossy(scene.materials) && !transfer.scene.gather_rows.empty())) {
+      (glossy_materials(scene.materials).empty() || transfer.scene.gather_rows.empty())) {
     return std::nullopt;
   }
   return std::optional<RuntimeScene>(std::in_place, transfer.scene, bounce_settings(scene));
@@ -76,28 +71,28 @@ Relighter::Relighter(TransferView transfer, const Scene& scene, RelighterSetting
 void Relighter::make_glossy_bounce(std::span<const Material> materials,
                                    std::span<const float> albedo) {
   const std::vector<std::uint32_t>& material_of = transfer_.scene.vertex_material;
-  if (!has_glossy(materials) || !runtime_ || !runtime_->can_bounce() || material_of.empty()) {
+  GlossyMaterials glossy = glossy_materials(materials);
+  if (glossy.empty() || !runtime_ || !runtime_->can_bounce() || material_of.empty()) {
     luminaires_.set_glossy(nullptr);
     portals_.set_glossy(nullptr);
     glossy_bounce_.reset();
     return;
   }
-  std::vector<std::int32_t> glossy_of_material(materials.size(), -1);
-  std::vector<MetallicRoughness> glossy;
-  for (std::size_t m = 0; m < materials.size(); ++m) {
-    if (!materials[m].glossy || materials[m].portal) continue;
-    glossy_of_material[m] = static_cast<std::int32_t>(glossy.size());
-    glossy.push_back(metallic_roughness_of(materials[m]));
-  }
   std::vector<std::int32_t> glossy_of(material_of.size(), -1);
   for (std::size_t v = 0; v < material_of.size(); ++v) {
-    if (material_of[v] != kNoMaterial) glossy_of[v] = glossy_of_material.at(material_of[v]);
+    if (material_of[v] != kNoMaterial) glossy_of[v] = glossy.index.at(material_of[v]);
   }
+  // Made in place: the terms keep their pointer and relight once, with the new one (and
+  // none, should making it fail).
   const Receivers& receivers = runtime_->receiver_set();
-  luminaires_.set_glossy(nullptr);
-  portals_.set_glossy(nullptr);
-  glossy_bounce_.emplace(runtime_->gather(), receivers.positions, receivers.normals,
-                         std::move(glossy_of), std::move(glossy), albedo, bounce_);
+  try {
+    glossy_bounce_.emplace(runtime_->gather(), receivers.positions, receivers.normals,
+                           std::move(glossy_of), std::move(glossy.brdf), albedo, bounce_);
+  } catch (...) {
+    luminaires_.set_glossy(nullptr);
+    portals_.set_glossy(nullptr);
+    throw;
+  }
   luminaires_.set_glossy(&*glossy_bounce_);
   portals_.set_glossy(&*glossy_bounce_);
 }
@@ -160,7 +155,7 @@ void Relighter::set_materials(const std::vector<Material>& materials) {
   edit_dirty_ = true;
   // The glossy surfaces' first bounce as edited: reflected by the edited BRDFs, less what the
   // edited albedo reflects diffusely, bounced by the edited room (engine/glossy_first_bounce.h).
-  if (has_glossy(materials) || glossy_bounce_) {
+  if (!glossy_materials(materials).empty() || glossy_bounce_) {
     make_glossy_bounce(materials, vertex_albedo_);
     glossy_dirty_ = true;
   }
