@@ -66,6 +66,7 @@ void advance_sky(EnvironmentSpec& e, int frame) {
       e.rotate_deg += 1;
       break;
     case EnvironmentType::kCieSky:
+    case EnvironmentType::kPerezSky:
       if (e.sun.placement == SunPlacement::kPlaceAndTime) {
         CivilDateTime& t = e.sun.local_time;
         t.minute = (t.minute + 1) % 60;

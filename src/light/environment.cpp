@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "light/environment_map_cubemap.h"
+#include "light/perez_sky.h"
 #include "light/sun_position.h"
 #include "math/cubemap.h"
 #include "math/equirect.h"
@@ -246,6 +247,13 @@ Environment make_environment(const EnvironmentSpec& spec, std::shared_ptr<const 
                                                spec.ground_albedo, spec.sun_illuminance)
               : make_sky_from_horizontal_illuminance(spec.sky_type, sun, spec.scaling_value,
                                                      spec.ground_albedo, spec.sun_illuminance));
+    }
+    case EnvironmentType::kPerezSky: {
+      const PerezWeather weather{
+          spec.direct_normal_irradiance, spec.diffuse_horizontal_irradiance, spec.dew_point_c,
+          spec.sun.placement == SunPlacement::kPlaceAndTime ? day_of_year(spec.sun.local_time) : 0};
+      return make_sky_environment(
+          make_perez_sky(weather, sun_direction(spec.sun), spec.ground_albedo));
     }
   }
   throw std::invalid_argument("unknown environment type");

@@ -44,22 +44,65 @@ double angle_between(Vec3 a, Vec3 b) {
   return std::atan2(length(cross(a, b)), dot(a, b));
 }
 
-double relative(int sky_type, const CieSkyParameters& p, double norm, Vec3 dir, Vec3 sun) {
+// The Perez formula's gradation and indicatrix (sky_model.h, SkyFormula).
+double perez_gradation(const CieSkyParameters& p, double cos_zenith) {
+  return 1.0 + p.a * std::exp(p.b / std::max(cos_zenith, 0.01));
+}
+double perez_indicatrix(const CieSkyParameters& p, double gamma) {
+  const double c = std::cos(gamma);
+  return 1.0 + p.c * std::exp(p.d * gamma) + p.e * c * c;
+}
+
+// The dome's formula: which one, and its parameters.
+struct Dome {
+  SkyFormula formula = SkyFormula::kCie;
+  int sky_type = 0;
+  CieSkyParameters p;
+};
+
+double relative(const Dome& dome, double norm, Vec3 dir, Vec3 sun) {
   const double cos_z = std::max(dir.y, 0.0);
-  if (sky_type == 0) return (1.0 + 2.0 * cos_z) / 3.0;
-  return cie_indicatrix(p, angle_between(dir, sun)) * cie_gradation(p, cos_z) * norm;
+  if (dome.formula == SkyFormula::kPerez) {
+    return perez_indicatrix(dome.p, angle_between(dir, sun)) * perez_gradation(dome.p, cos_z) *
+           norm;
+  }
+  if (dome.sky_type == 0) return (1.0 + 2.0 * cos_z) / 3.0;
+  return cie_indicatrix(dome.p, angle_between(dir, sun)) * cie_gradation(dome.p, cos_z) * norm;
 }
 
-// 1 / (f(Zs)·φ(0)) for the types that need it.
-double normaliser(int sky_type, const CieSkyParameters& p, Vec3 sun) {
-  if (sky_type == 0) return 1.0;
+// 1 / (f(Zs)·φ(0)): the relative luminance at the zenith made 1.
+double normaliser(const Dome& dome, Vec3 sun) {
   const double zs = std::acos(std::clamp(sun.y, -1.0, 1.0));
-  return 1.0 / (cie_indicatrix(p, zs) * cie_gradation(p, 1.0));
+  if (dome.formula == SkyFormula::kPerez) {
+    return 1.0 / (perez_indicatrix(dome.p, zs) * perez_gradation(dome.p, 1.0));
+  }
+  if (dome.sky_type == 0) return 1.0;
+  return 1.0 / (cie_indicatrix(dome.p, zs) * cie_gradation(dome.p, 1.0));
 }
 
-SkyModel make_sky(int sky_type, Vec3 sun_direction, double ground_albedo,
-                  double sun_normal_illuminance) {
+Dome cie_dome(int sky_type) {
   check_type(sky_type);
+  return {SkyFormula::kCie, sky_type,
+          sky_type == 0 ? CieSkyParameters{} : cie_sky_parameters(sky_type)};
+}
+Dome dome_of(const SkyModel& sky) {
+  return {sky.formula, sky.sky_type, sky.parameters};
+}
+
+// ∫ (L/Lz) cos Z dω over the dome, by sky_dome_quadrature.
+double relative_horizontal_illuminance(const Dome& dome, Vec3 sun, int n_zenith, int n_azimuth) {
+  const double norm = normaliser(dome, sun);
+  const DomeQuadrature rule = sky_dome_quadrature(sun, n_zenith, n_azimuth);
+  double total = 0;
+  for (std::size_t i = 0; i < rule.weights.size(); ++i) {
+    const Vec3 d = rule.directions[i];
+    total += rule.weights[i] * d.y * relative(dome, norm, d, sun);
+  }
+  return total;
+}
+
+SkyModel make_sky(const Dome& dome, Vec3 sun_direction, double ground_albedo,
+                  double sun_normal_illuminance) {
   if (!(length(sun_direction) > 0) || !is_finite(sun_direction)) {
     throw std::invalid_argument("sun direction must be finite and non-zero");
   }
@@ -70,10 +113,11 @@ SkyModel make_sky(int sky_type, Vec3 sun_direction, double ground_albedo,
     throw std::invalid_argument("sun illuminance must be finite and >= 0");
   }
   SkyModel sky;
-  sky.sky_type = sky_type;
+  sky.formula = dome.formula;
+  sky.sky_type = dome.sky_type;
+  sky.parameters = dome.p;
   sky.sun_direction = normalize(sun_direction);
-  if (sky_type != 0) sky.parameters = cie_sky_parameters(sky_type);
-  sky.indicatrix_normaliser = normaliser(sky_type, sky.parameters, sky.sun_direction);
+  sky.indicatrix_normaliser = normaliser(dome, sky.sun_direction);
   sky.ground_albedo = ground_albedo;
   if (sun_normal_illuminance > 0 && sky.sun_direction.y > 0) {
     sky.sun = make_sun_disc(sky.sun_direction, sun_normal_illuminance);
@@ -85,6 +129,20 @@ SkyModel make_sky(int sky_type, Vec3 sun_direction, double ground_albedo,
 void finish(SkyModel& sky) {
   sky.ground_luminance =
       sky.ground_albedo * (sky.sky_horizontal_illuminance + sky.sun_horizontal_illuminance) / kPi;
+}
+
+SkyModel sky_from_horizontal_illuminance(const Dome& dome, Vec3 sun_direction,
+                                         double horizontal_illuminance, double ground_albedo,
+                                         double sun_normal_illuminance) {
+  if (!(horizontal_illuminance >= 0) || !std::isfinite(horizontal_illuminance)) {
+    throw std::invalid_argument("horizontal illuminance must be finite and >= 0");
+  }
+  SkyModel sky = make_sky(dome, sun_direction, ground_albedo, sun_normal_illuminance);
+  sky.zenith_luminance =
+      horizontal_illuminance / relative_horizontal_illuminance(dome, sky.sun_direction, 192, 384);
+  sky.sky_horizontal_illuminance = horizontal_illuminance;
+  finish(sky);
+  return sky;
 }
 
 }  // namespace
@@ -107,9 +165,8 @@ double cie_indicatrix(const CieSkyParameters& p, double chi) {
 }
 
 double sky_relative_luminance(int sky_type, Vec3 dir, Vec3 sun_dir) {
-  check_type(sky_type);
-  const CieSkyParameters p = sky_type == 0 ? CieSkyParameters{} : cie_sky_parameters(sky_type);
-  return relative(sky_type, p, normaliser(sky_type, p, sun_dir), dir, sun_dir);
+  const Dome dome = cie_dome(sky_type);
+  return relative(dome, normaliser(dome, sun_dir), dir, sun_dir);
 }
 
 DomeQuadrature sky_dome_quadrature(Vec3 sun_dir, int n_zenith, int n_azimuth) {
@@ -169,17 +226,8 @@ DomeQuadrature sky_dome_quadrature(Vec3 sun_dir, int n_zenith, int n_azimuth) {
 
 double sky_relative_horizontal_illuminance(int sky_type, Vec3 sun_dir, int n_zenith,
                                            int n_azimuth) {
-  check_type(sky_type);
-  const Vec3 sun = normalize(sun_dir);
-  const CieSkyParameters p = sky_type == 0 ? CieSkyParameters{} : cie_sky_parameters(sky_type);
-  const double norm = normaliser(sky_type, p, sun);
-  const DomeQuadrature rule = sky_dome_quadrature(sun, n_zenith, n_azimuth);
-  double total = 0;
-  for (std::size_t i = 0; i < rule.weights.size(); ++i) {
-    const Vec3 d = rule.directions[i];
-    total += rule.weights[i] * d.y * relative(sky_type, p, norm, d, sun);
-  }
-  return total;
+  return relative_horizontal_illuminance(cie_dome(sky_type), normalize(sun_dir), n_zenith,
+                                         n_azimuth);
 }
 
 SunDisc make_sun_disc(Vec3 direction, double normal_illuminance) {
@@ -205,7 +253,7 @@ SkyModel make_sky_from_zenith_luminance(int sky_type, Vec3 sun_direction, double
   if (!(zenith_luminance >= 0) || !std::isfinite(zenith_luminance)) {
     throw std::invalid_argument("zenith luminance must be finite and >= 0");
   }
-  SkyModel sky = make_sky(sky_type, sun_direction, ground_albedo, sun_normal_illuminance);
+  SkyModel sky = make_sky(cie_dome(sky_type), sun_direction, ground_albedo, sun_normal_illuminance);
   sky.zenith_luminance = zenith_luminance;
   sky.sky_horizontal_illuminance =
       zenith_luminance * sky_relative_horizontal_illuminance(sky_type, sky.sun_direction);
@@ -216,21 +264,24 @@ SkyModel make_sky_from_zenith_luminance(int sky_type, Vec3 sun_direction, double
 SkyModel make_sky_from_horizontal_illuminance(int sky_type, Vec3 sun_direction,
                                               double horizontal_illuminance, double ground_albedo,
                                               double sun_normal_illuminance) {
-  if (!(horizontal_illuminance >= 0) || !std::isfinite(horizontal_illuminance)) {
-    throw std::invalid_argument("horizontal illuminance must be finite and >= 0");
-  }
-  SkyModel sky = make_sky(sky_type, sun_direction, ground_albedo, sun_normal_illuminance);
-  sky.zenith_luminance =
-      horizontal_illuminance / sky_relative_horizontal_illuminance(sky_type, sky.sun_direction);
-  sky.sky_horizontal_illuminance = horizontal_illuminance;
-  finish(sky);
-  return sky;
+  return sky_from_horizontal_illuminance(cie_dome(sky_type), sun_direction, horizontal_illuminance,
+                                         ground_albedo, sun_normal_illuminance);
+}
+
+SkyModel make_perez_sky_from_horizontal_illuminance(const CieSkyParameters& coefficients,
+                                                    Vec3 sun_direction,
+                                                    double horizontal_illuminance,
+                                                    double ground_albedo,
+                                                    double sun_normal_illuminance) {
+  return sky_from_horizontal_illuminance({SkyFormula::kPerez, 0, coefficients}, sun_direction,
+                                         horizontal_illuminance, ground_albedo,
+                                         sun_normal_illuminance);
 }
 
 double sky_diffuse_luminance(const SkyModel& sky, Vec3 dir) {
   if (dir.y < 0) return sky.ground_luminance;
   return sky.zenith_luminance *
-         relative(sky.sky_type, sky.parameters, sky.indicatrix_normaliser, dir, sky.sun_direction);
+         relative(dome_of(sky), sky.indicatrix_normaliser, dir, sky.sun_direction);
 }
 
 double sky_luminance(const SkyModel& sky, Vec3 dir) {

@@ -99,10 +99,20 @@ double sun_disc_luminance(const SunDisc& disc, Vec3 dir);
 
 // ---- A complete sky: dome, ground, optional sun ----------------------------------------
 
+// The relative luminance formula of a sky dome. kCie: the ISO 15469 general sky of `sky_type`
+// (above). kPerez: the Perez all-weather sky (light/perez_sky.h), the same product of a
+// gradation and an indicatrix with coefficients (a..e) that vary continuously with the weather,
+//   l(Z, γ) = (1 + a·exp(b / max(cos Z, 0.01)))·(1 + c·exp(d·γ) + e·cos²γ),
+// normalised to 1 at the zenith. Unlike the CIE indicatrix there is no −exp(dπ/2) term, and b
+// may be positive (horizon brightening of clear skies): cos Z is held at 0.01 (Z ≤ 89.4°), the
+// clamp Radiance's gendaylit sky function uses, so the dome's integral stays finite.
+enum class SkyFormula { kCie, kPerez };
+
 struct SkyModel {
-  int sky_type = 0;                       // 0 = traditional overcast, 1..15
+  SkyFormula formula = SkyFormula::kCie;
+  int sky_type = 0;                       // kCie: 0 = traditional overcast, 1..15
   Vec3 sun_direction{0, 1, 0};            // sun position used by the luminance distribution
-  CieSkyParameters parameters;            // of sky_type (all 0 for type 0)
+  CieSkyParameters parameters;            // of sky_type (all 0 for type 0), or Perez's a..e
   double indicatrix_normaliser = 1;       // 1 / (f(Zs)·φ(0)) (1 for type 0)
   double zenith_luminance = 0;            // Lz, cd/m²
   double sky_horizontal_illuminance = 0;  // E_h of the dome alone, lx
@@ -120,6 +130,15 @@ SkyModel make_sky_from_zenith_luminance(int sky_type, Vec3 sun_direction, double
 SkyModel make_sky_from_horizontal_illuminance(int sky_type, Vec3 sun_direction,
                                               double horizontal_illuminance, double ground_albedo,
                                               double sun_normal_illuminance);
+
+// A Perez all-weather sky (formula kPerez) with the luminance coefficients a..e, scaled by the
+// dome's diffuse horizontal illuminance; otherwise as make_sky_from_horizontal_illuminance.
+// light/perez_sky.h computes the coefficients and illuminances from weather data.
+SkyModel make_perez_sky_from_horizontal_illuminance(const CieSkyParameters& coefficients,
+                                                    Vec3 sun_direction,
+                                                    double horizontal_illuminance,
+                                                    double ground_albedo,
+                                                    double sun_normal_illuminance);
 
 // Luminance (cd/m²) of the dome (dir.y >= 0) or ground (dir.y < 0), WITHOUT the sun disc: the
 // continuous part that quadratures and cubemap averages handle.

@@ -172,7 +172,25 @@ void parse_cie_sky(const JsonNode& node, EnvironmentSpec& spec) {
   }
 }
 
+void parse_perez(const JsonNode& node, EnvironmentSpec& spec) {
+  node.expect_keys({"type", "direct_normal_irradiance", "diffuse_horizontal_irradiance",
+                    "dew_point_c", "ground_albedo", "sun"});
+  spec.type = EnvironmentType::kPerezSky;
+  spec.direct_normal_irradiance = number_in(node.at("direct_normal_irradiance"), 0, kMaxIrradiance);
+  spec.diffuse_horizontal_irradiance =
+      number_in(node.at("diffuse_horizontal_irradiance"), 0, kMaxIrradiance);
+  if (const auto d = node.find("dew_point_c")) spec.dew_point_c = number_in(*d, -90, 60);
+  if (const auto g = node.find("ground_albedo")) spec.ground_albedo = number_in(*g, 0, 1);
+  spec.sun = parse_sun(node.at("sun"));
+}
+
 }  // namespace
+
+int day_of_year(const CivilDateTime& t) {
+  int day = t.day;
+  for (int m = 1; m < t.month; ++m) day += days_in_month(t.year, m);
+  return day;
+}
 
 bool sky_type_needs_sun(int sky_type) {
   return sky_type == 2 || sky_type == 4 || (sky_type >= 6 && sky_type <= 15);
@@ -233,9 +251,11 @@ EnvironmentSpec parse_environment(const JsonNode& node, const fs::path& base_dir
     parse_map(node, base_dir, require_files, spec);
   } else if (type == "cie_sky") {
     parse_cie_sky(node, spec);
+  } else if (type == "perez") {
+    parse_perez(node, spec);
   } else {
     node.at("type").fail("unknown environment type \"" + type +
-                         "\" (expected uniform, map or cie_sky)");
+                         "\" (expected uniform, map, cie_sky or perez)");
   }
   return spec;
 }

@@ -10,6 +10,8 @@
 //     "sun": { "latitude", "longitude", "utc_offset", "datetime" }
 //          | { "azimuth_deg", "altitude_deg" },
 //     "sun_illuminance": lx }
+//   { "type": "perez", "direct_normal_irradiance": W/m², "diffuse_horizontal_irradiance": W/m²,
+//     "dew_point_c": °C, "ground_albedo": 0..1, "sun": { as cie_sky } }
 //
 // Conventions (world frame: metres, right-handed, y up; NORTH IS −z, EAST IS +x):
 //  * uniform: the same luminance in every direction of the sphere. "color" is a tint that is
@@ -43,6 +45,14 @@
 //    "sun_illuminance" (default 0 = no sun disc, 0..140000 lx): the illuminance on a plane
 //    normal to the sun from the 0.53° sun disc (direct normal illuminance; the extraterrestrial
 //    value is about 133 800 lx). A sun below the horizon contributes nothing.
+//  * perez: the Perez all-weather sky (Perez, Seals & Michalsky 1993) of one weather record,
+//    as light/perez_sky.h computes it: "direct_normal_irradiance" and
+//    "diffuse_horizontal_irradiance" (W/m², 0..1500, both required) give the sky's clearness
+//    and brightness; the Perez et al. 1990 luminous efficacies turn them into the sun disc's
+//    normal illuminance and the dome's diffuse horizontal illuminance. "dew_point_c" (°C,
+//    −90..60, optional) sets the atmosphere's precipitable water (2 cm without it).
+//    "ground_albedo" as cie_sky. "sun" is required; with a date (place and time) the
+//    extraterrestrial irradiance follows the earth's orbit, with angles its mean (1367 W/m²).
 #pragma once
 
 #include <filesystem>
@@ -55,12 +65,14 @@
 
 namespace relight {
 
-enum class EnvironmentType { kUniform, kMap, kCieSky };
+enum class EnvironmentType { kUniform, kMap, kCieSky, kPerezSky };
 
 // sky_type value of the traditional CIE overcast sky ("overcast").
 inline constexpr int kTraditionalOvercastSky = 0;
 // Upper bound accepted for sun_illuminance (lx).
 inline constexpr double kMaxSunIlluminance = 140000.0;
+// Upper bound accepted for a Perez sky's irradiances (W/m²; the solar constant is 1361–1367).
+inline constexpr double kMaxIrradiance = 1500.0;
 
 enum class SkyScaling { kHorizontalIlluminance, kZenithLuminance };
 
@@ -105,13 +117,20 @@ struct EnvironmentSpec {
   double ground_albedo = 0.2;
   SunSpec sun;
   double sun_illuminance = 0;  // lx on a plane normal to the sun; 0 = no sun disc
-  std::string where;           // "FILE:JSON-PATH" of the object, for messages
+  // perez (with sun and ground_albedo above)
+  double direct_normal_irradiance = 0;       // W/m²
+  double diffuse_horizontal_irradiance = 0;  // W/m²
+  std::optional<double> dew_point_c;         // °C
+  std::string where;                         // "FILE:JSON-PATH" of the object, for messages
   bool operator==(const EnvironmentSpec&) const = default;
 };
 
 // True for the CIE standard sky types whose luminance distribution depends on the sun's
 // position (an indicatrix with c != 0 or e != 0): 2, 4, 6..15.
 bool sky_type_needs_sun(int sky_type);
+
+// The day of the year of a civil date, 1..366.
+int day_of_year(const CivilDateTime& t);
 
 // Parses "YYYY-MM-DDTHH:MM[:SS[.fff]]" (a 'T' or one space between date and time); checks the
 // calendar (leap years) and the clock (hour 0..23, minute 0..59, second < 60). Years

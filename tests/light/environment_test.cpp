@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "light/environment.h"
+#include "light/perez_sky.h"
 #include "light/sun_position.h"
 #include "math/cubemap.h"
 #include "math/equirect.h"
@@ -296,6 +297,39 @@ TEST(Environment, SkyFromSpecWithPlaceAndTime) {
   EnvironmentSpec map_spec;
   map_spec.type = EnvironmentType::kMap;
   EXPECT_THROW(make_environment(map_spec), std::invalid_argument);
+}
+
+// A Perez spec is the Perez sky of its record, with the sun of its place and time and the
+// extraterrestrial irradiance of its date.
+TEST(Environment, PerezSkyFromSpec) {
+  EnvironmentSpec spec;
+  spec.type = EnvironmentType::kPerezSky;
+  spec.direct_normal_irradiance = 600;
+  spec.diffuse_horizontal_irradiance = 150;
+  spec.dew_point_c = 9.0;
+  spec.ground_albedo = 0.25;
+  spec.sun.placement = SunPlacement::kPlaceAndTime;
+  spec.sun.latitude_deg = 51.4779;
+  spec.sun.longitude_deg = -0.0015;
+  spec.sun.utc_offset_hours = 1.0;
+  spec.sun.local_time = {2021, 6, 21, 13, 0, 0};
+  const Environment env = make_environment(spec);
+  const Vec3 sun = sun_direction(spec.sun);
+  const SkyModel expected = make_perez_sky({600, 150, 9.0, 172}, sun, 0.25);
+  ASSERT_EQ(env.kind, EnvironmentKind::kSky);
+  EXPECT_EQ(env.sky.formula, SkyFormula::kPerez);
+  EXPECT_DOUBLE_EQ(env.sky.sky_horizontal_illuminance, expected.sky_horizontal_illuminance);
+  EXPECT_DOUBLE_EQ(env.sky.ground_luminance, expected.ground_luminance);
+  ASSERT_TRUE(env.sun().has_value());
+  EXPECT_DOUBLE_EQ(env.sun()->normal_illuminance, expected.sun->normal_illuminance);
+  // Another day of the year changes Δ and so the efficacy.
+  const SkyModel january = make_perez_sky({600, 150, 9.0, 1}, sun, 0.25);
+  EXPECT_NE(env.sky.sky_horizontal_illuminance, january.sky_horizontal_illuminance);
+  // The sun below the horizon: no disc, the dome as the record says.
+  spec.sun.local_time = {2021, 6, 21, 23, 0, 0};
+  const Environment night = make_environment(spec);
+  EXPECT_FALSE(night.sun().has_value());
+  EXPECT_GT(night.sky.sky_horizontal_illuminance, 0);
 }
 
 }  // namespace

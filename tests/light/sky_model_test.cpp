@@ -9,25 +9,10 @@
 
 #include "light/sky_model.h"
 #include "light/sun_position.h"
+#include "sky_test_support.h"
 
 namespace relight {
 namespace {
-
-// Independent check of E_h = ∫ L cos Z dω: midpoint rule in (cos Z, azimuth), the azimuth grid
-// offset from the sun's (error O(h²), h = 1/n).
-double midpoint_horizontal_illuminance(const SkyModel& sky, int n) {
-  double sum = 0;
-  for (int k = 0; k < n; ++k) {
-    const double mu = (k + 0.5) / n, s = std::sqrt(1 - mu * mu);
-    double ring = 0;
-    for (int j = 0; j < 2 * n; ++j) {
-      const double az = 0.123 + 2 * kPi * (j + 0.5) / (2 * n);
-      ring += sky_diffuse_luminance(sky, {s * std::sin(az), mu, -s * std::cos(az)});
-    }
-    sum += mu * ring;
-  }
-  return sum * (1.0 / n) * (2 * kPi / (2 * n));
-}
 
 TEST(SkyModel, TraditionalOvercastHorizontalIlluminanceIsSevenPiOverNine) {
   const double e = sky_relative_horizontal_illuminance(0, {0, 1, 0});

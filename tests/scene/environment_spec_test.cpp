@@ -90,6 +90,29 @@ TEST(EnvironmentSpec, CieSkyDefaults) {
   EXPECT_EQ(a.sun.utc_offset_hours, 0);
 }
 
+TEST(EnvironmentSpec, PerezSkyFromAWeatherRecord) {
+  const EnvironmentSpec s = parse(R"({"env": {"type": "perez", "direct_normal_irradiance": 640,
+      "diffuse_horizontal_irradiance": 120.5, "dew_point_c": -3.5,
+      "sun": {"latitude": 48.1, "longitude": 11.6, "utc_offset": 1,
+              "datetime": "2025-03-01T11:30"}}})");
+  EXPECT_EQ(s.type, EnvironmentType::kPerezSky);
+  EXPECT_EQ(s.direct_normal_irradiance, 640);
+  EXPECT_EQ(s.diffuse_horizontal_irradiance, 120.5);
+  ASSERT_TRUE(s.dew_point_c.has_value());
+  EXPECT_EQ(*s.dew_point_c, -3.5);
+  EXPECT_EQ(s.ground_albedo, 0.2);
+  EXPECT_EQ(s.sun.placement, SunPlacement::kPlaceAndTime);
+  EXPECT_EQ(day_of_year(s.sun.local_time), 60);
+  EXPECT_EQ(day_of_year({2024, 3, 1, 0, 0, 0}), 61);  // a leap year
+  EXPECT_EQ(day_of_year({2023, 12, 31, 0, 0, 0}), 365);
+  const EnvironmentSpec no_dew = parse(R"({"env": {"type": "perez", "direct_normal_irradiance": 0,
+      "diffuse_horizontal_irradiance": 80, "ground_albedo": 0.35,
+      "sun": {"azimuth_deg": 120, "altitude_deg": 20}}})");
+  EXPECT_FALSE(no_dew.dew_point_c.has_value());
+  EXPECT_EQ(no_dew.ground_albedo, 0.35);
+  EXPECT_NE(s, no_dew);
+}
+
 TEST(EnvironmentSpec, ErrorsNameTheJsonPath) {
   struct Case {
     const char* text;
@@ -101,6 +124,21 @@ TEST(EnvironmentSpec, ErrorsNameTheJsonPath) {
       {R"({"env": {"type": "uniform", "luminance": 1, "bogus": 2}})",
        "scene.json:/env/bogus: unknown key \"bogus\""},
       {R"({"env": {"type": "sunny"}})", "scene.json:/env/type: unknown environment type"},
+      {R"({"env": {"type": "perez", "direct_normal_irradiance": 100,
+           "diffuse_horizontal_irradiance": 50}})",
+       "scene.json:/env: missing required key \"sun\""},
+      {R"({"env": {"type": "perez", "direct_normal_irradiance": 9999,
+           "diffuse_horizontal_irradiance": 50, "sun": {"azimuth_deg": 0, "altitude_deg": 9}}})",
+       "scene.json:/env/direct_normal_irradiance: must lie in 0..1500"},
+      {R"({"env": {"type": "perez", "direct_normal_irradiance": 100,
+           "sun": {"azimuth_deg": 0, "altitude_deg": 9}}})",
+       "scene.json:/env: missing required key \"diffuse_horizontal_irradiance\""},
+      {R"({"env": {"type": "perez", "direct_normal_irradiance": 1, "dew_point_c": "warm",
+           "diffuse_horizontal_irradiance": 50, "sun": {"azimuth_deg": 0, "altitude_deg": 9}}})",
+       "scene.json:/env/dew_point_c: expected a number"},
+      {R"({"env": {"type": "perez", "direct_normal_irradiance": 1, "sky_type": 3,
+           "diffuse_horizontal_irradiance": 50, "sun": {"azimuth_deg": 0, "altitude_deg": 9}}})",
+       "scene.json:/env/sky_type: unknown key"},
       {R"({"env": {"type": "uniform"}})", "scene.json:/env: missing required key \"luminance\""},
       {R"({"env": {"type": "uniform", "luminance": -1}})", "scene.json:/env/luminance: must be"},
       {R"({"env": {"type": "uniform", "luminance": 1, "color": [0, 0, 0]}})",
