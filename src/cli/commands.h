@@ -18,6 +18,7 @@ void add_demo_command(CLI::App& app, Action& action);
 void add_precompute_command(CLI::App& app, Action& action);
 void add_render_command(CLI::App& app, Action& action);
 void add_probe_command(CLI::App& app, Action& action);
+void add_annual_command(CLI::App& app, Action& action);
 void add_bench_command(CLI::App& app, Action& action);
 void add_analyze_command(CLI::App& app, Action& action);
 void add_serve_command(CLI::App& app, Action& action);

@@ -9,6 +9,14 @@
 
 namespace relight {
 
+std::string csv_name(const std::string& name) {
+  // Sensor names are free text: quote them when they contain CSV metacharacters.
+  if (name.find_first_of(",\"\n") == std::string::npos) return name;
+  std::string quoted = "\"";
+  for (const char ch : name) quoted += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+  return quoted + "\"";
+}
+
 std::string sensor_csv(const Scene& scene, const std::vector<Rgb>& e) {
   std::string csv = "sensor,index,x,y,z,nx,ny,nz,lux,r,g,b\n";
   std::size_t k = 0;
@@ -20,14 +28,7 @@ std::string sensor_csv(const Scene& scene, const std::vector<Rgb>& e) {
       std::snprintf(line, sizeof line, ",%zu,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n",
                     i, p.x, p.y, p.z, s.normal.x, s.normal.y, s.normal.z, luminance(c), c.r, c.g,
                     c.b);
-      // Sensor names are free text: quote them when they contain CSV metacharacters.
-      if (s.name.find_first_of(",\"\n") != std::string::npos) {
-        std::string quoted = "\"";
-        for (char ch : s.name) quoted += ch == '"' ? std::string("\"\"") : std::string(1, ch);
-        csv += quoted + "\"";
-      } else {
-        csv += s.name;
-      }
+      csv += csv_name(s.name);
       csv += line;
     }
   }

@@ -19,6 +19,10 @@ struct SensorStatistics {
   double e_avg = 0, e_min = 0, e_max = 0, u0 = 0;  // lux; U0 dimensionless
 };
 
+// A sensor set's name as a CSV field: quoted (with doubled quotes) when it holds a comma, a
+// quote or a newline.
+std::string csv_name(const std::string& name);
+
 // `illuminance` holds one value per sensor point in scene order (set by set).
 std::string sensor_csv(const Scene& scene, const std::vector<Rgb>& illuminance);
 void write_sensor_csv(const std::filesystem::path& file, const Scene& scene,

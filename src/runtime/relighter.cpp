@@ -40,7 +40,7 @@ Relighter::Relighter(TransferView transfer, const Scene& scene, RelighterSetting
           {transfer_.luminaires, transfer_.receivers, transfer_.sh_order, transfer_.direct_sh_mode},
           scene, settings.window),
       portals_({transfer_.portals, transfer_.receivers, transfer_.portal_sh_order},
-               runtime_ ? &*runtime_ : nullptr, scene),
+               runtime_ ? &*runtime_ : nullptr, scene, settings.warm_sun_bounce),
       state_(default_lighting_state(scene)),
       bounce_(bounce_settings(scene)),
       vertex_albedo_(transfer_.scene.vertex_albedo) {

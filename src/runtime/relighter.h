@@ -29,6 +29,9 @@ namespace relight {
 struct RelighterSettings {
   ShWindow window = ShWindow::kSigma;  // applied to the SH weights of every luminaire
   EmitterLightingSettings emitters;    // sampling of near-field emitters
+  // A moved sun's bounce starts from the last one (PortalSetLighting): false for a sequence
+  // of unrelated skies whose every frame must equal a fresh process's (`relight annual`).
+  bool warm_sun_bounce = true;
 };
 
 class Relighter {

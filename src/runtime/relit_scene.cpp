@@ -8,9 +8,10 @@
 namespace relight {
 
 RelitScene::RelitScene(const std::filesystem::path& rlt,
-                       const std::optional<std::filesystem::path>& state_file)
+                       const std::optional<std::filesystem::path>& state_file,
+                       const RelighterSettings& settings)
     : transfer_(std::make_unique<TransferFile>(open_transfer_file(rlt))) {
-  relighter_ = std::make_unique<Relighter>(transfer_->view, transfer_->scene);
+  relighter_ = std::make_unique<Relighter>(transfer_->view, transfer_->scene, settings);
   irradiance_.resize(3 * relighter_->receivers());
   apply(state_file ? load_lighting_state(transfer_->scene, *state_file)
                    : default_lighting_state(transfer_->scene));

@@ -23,7 +23,8 @@ class RelitScene {
  public:
   // Opens `rlt` and lights it with the state in `state_file`, or the scene's own state.
   RelitScene(const std::filesystem::path& rlt,
-             const std::optional<std::filesystem::path>& state_file);
+             const std::optional<std::filesystem::path>& state_file,
+             const RelighterSettings& settings = {});
 
   const TransferFile& transfer() const { return *transfer_; }
   const Scene& scene() const { return transfer_->scene; }

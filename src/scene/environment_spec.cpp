@@ -19,11 +19,6 @@ bool is_leap_year(int y) {
   return (y % 4 == 0 && y % 100 != 0) || y % 400 == 0;
 }
 
-int days_in_month(int y, int m) {
-  static constexpr int kDays[12] = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
-  return m == 2 && is_leap_year(y) ? 29 : kDays[m - 1];
-}
-
 // Reads exactly `digits` decimal digits at text[pos] and advances pos.
 std::optional<int> read_digits(std::string_view text, std::size_t& pos, int digits) {
   if (pos + digits > text.size()) return std::nullopt;
@@ -185,6 +180,11 @@ void parse_perez(const JsonNode& node, EnvironmentSpec& spec) {
 }
 
 }  // namespace
+
+int days_in_month(int y, int m) {
+  static constexpr int kDays[12] = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
+  return m == 2 && is_leap_year(y) ? 29 : kDays[m - 1];
+}
 
 int day_of_year(const CivilDateTime& t) {
   int day = t.day;

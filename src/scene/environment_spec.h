@@ -129,7 +129,9 @@ struct EnvironmentSpec {
 // position (an indicatrix with c != 0 or e != 0): 2, 4, 6..15.
 bool sky_type_needs_sun(int sky_type);
 
-// The day of the year of a civil date, 1..366.
+// The days of a month (1..12) of the Gregorian calendar, and the day of the year of a civil
+// date, 1..366.
+int days_in_month(int year, int month);
 int day_of_year(const CivilDateTime& t);
 
 // Parses "YYYY-MM-DDTHH:MM[:SS[.fff]]" (a 'T' or one space between date and time); checks the

@@ -114,8 +114,8 @@ void update_portal_lighting(PortalLighting& lighting, std::uint32_t index,
 }
 
 PortalSetLighting::PortalSetLighting(PortalTransferSet transfer, const RuntimeScene* runtime,
-                                     const Scene& scene)
-    : transfer_(transfer), runtime_(runtime), scene_(&scene) {
+                                     const Scene& scene, bool warm_sun_bounce)
+    : transfer_(transfer), runtime_(runtime), scene_(&scene), warm_sun_bounce_(warm_sun_bounce) {
   if (transfer_.portals.size() != scene.portals.size() ||
       (!scene.portals.empty() && (!runtime || runtime->receivers() != transfer_.receivers))) {
     throw std::invalid_argument("PortalSetLighting: transfer and scene disagree on portals");
@@ -173,8 +173,8 @@ void PortalSetLighting::update_suns() {
   // disc's centre or not: a patch edge crossing a triangle is placed to a quarter of its
   // width or 5 cm), over the triangles the sun may reach, bounced through the stored gather
   // operator; a sun that moved a little starts from the last solution (bounce_solver.h).
-  const bool warm = sun_indirect_.size() == 3 * n;
-  sun_indirect_.resize(3 * n, 0.0f);
+  const bool warm = warm_sun_bounce_ && sun_indirect_.size() == 3 * n;
+  if (!warm) sun_indirect_.assign(3 * n, 0.0f);
   if (runtime_->can_bounce()) {
     std::vector<float> reflected(3 * n);
     runtime_->hat_means(

@@ -67,8 +67,12 @@ class PortalSetLighting : public SourceTerm {
  public:
   // Lit as the scene sets every portal. `runtime` traces the suns and bounces their light
   // (without a stored gather operator the suns' interreflection is left out); it may be null
-  // only for a scene without portals.
-  PortalSetLighting(PortalTransferSet transfer, const RuntimeScene* runtime, const Scene& scene);
+  // only for a scene without portals. With `warm_sun_bounce`, a sun that moved starts its
+  // bounce from the last solution and stops at the looser kWarmBounceTolerance (dragging the
+  // time of day); without, every sun is solved from nothing, as in a fresh process (`relight
+  // annual`, whose hours agree with `relight probe` for each of them).
+  PortalSetLighting(PortalTransferSet transfer, const RuntimeScene* runtime, const Scene& scene,
+                    bool warm_sun_bounce = true);
 
   // Applies the portals' states (scene order). Returns whether the term's sum changed.
   bool set_state(std::span<const PortalState> states);
@@ -112,6 +116,7 @@ class PortalSetLighting : public SourceTerm {
     bool operator==(const SunKey&) const = default;
   };
   std::vector<SunKey> sun_keys_;
+  bool warm_sun_bounce_ = true;
   std::vector<float> sun_direct_, sun_indirect_;  // 3 per receiver (empty: no sun)
   std::vector<float> sun_glossy_;                 // Γ of the suns, 3 per receiver (empty: none)
   const GlossyFirstBounce* glossy_ = nullptr;

@@ -1,0 +1,145 @@
+// A year of daylight through the precomputed transfer; see annual_daylight.h.
+#include "runtime/annual_daylight.h"
+
+#include <chrono>
+
+#include "light/environment.h"
+#include "math/rgb.h"
+#include "scene/json_node.h"
+#include "sources/portal/portal_sun.h"
+
+namespace relight {
+
+namespace {
+
+std::optional<int> parse_clock(std::string_view text) {
+  if (text.size() != 5 || text[2] != ':') return std::nullopt;
+  for (const int i : {0, 1, 3, 4}) {
+    if (text[i] < '0' || text[i] > '9') return std::nullopt;
+  }
+  const int h = (text[0] - '0') * 10 + (text[1] - '0');
+  const int m = (text[3] - '0') * 10 + (text[4] - '0');
+  if (m > 59 || h > 24 || (h == 24 && m != 0)) return std::nullopt;
+  return h * 60 + m;
+}
+
+// The record's evaluation time, h − 30 min local standard time.
+CivilDateTime evaluation_time(const WeatherRecord& r) {
+  return {r.year, r.month, r.day, r.hour - 1, 30, 0};
+}
+
+bool occupied(const OccupiedPeriod& period, const WeatherRecord& r) {
+  const int minutes = (r.hour - 1) * 60 + 30;
+  return minutes >= period.start_minutes && minutes < period.end_minutes;
+}
+
+}  // namespace
+
+std::optional<OccupiedPeriod> parse_occupied_period(std::string_view text) {
+  const std::size_t dash = text.find('-');
+  if (dash == std::string_view::npos) return std::nullopt;
+  const auto start = parse_clock(text.substr(0, dash));
+  const auto end = parse_clock(text.substr(dash + 1));
+  if (!start || !end || *start >= *end) return std::nullopt;
+  return OccupiedPeriod{*start, *end};
+}
+
+EnvironmentSpec record_sky(const WeatherLocation& location, const WeatherRecord& record) {
+  EnvironmentSpec sky;
+  sky.type = EnvironmentType::kPerezSky;
+  sky.direct_normal_irradiance = record.direct_normal_irradiance;
+  sky.diffuse_horizontal_irradiance = record.diffuse_horizontal_irradiance;
+  sky.dew_point_c = record.dew_point_c;
+  sky.ground_albedo = 0.2;
+  sky.sun.placement = SunPlacement::kPlaceAndTime;
+  sky.sun.latitude_deg = location.latitude_deg;
+  sky.sun.longitude_deg = location.longitude_deg;
+  sky.sun.utc_offset_hours = location.time_zone_hours;
+  sky.sun.local_time = evaluation_time(record);
+  sky.where = "weather record";
+  return sky;
+}
+
+AnnualHours annual_hours(const WeatherFile& weather, const OccupiedPeriod& period) {
+  AnnualHours out;
+  for (const WeatherRecord& r : weather.records) {
+    if (!occupied(period, r)) continue;
+    ++out.occupied;
+    EnvironmentSpec sky = record_sky(weather.location, r);
+    if (sun_direction(sky.sun).y <= 0) continue;
+    sky.where = "weather record at line " + std::to_string(r.line);
+    out.hours.push_back({r, std::move(sky)});
+  }
+  return out;
+}
+
+LightingState annual_base_state(const Scene& scene,
+                                const std::optional<std::filesystem::path>& file) {
+  LightingState state = default_lighting_state(scene);
+  nlohmann::json document = nlohmann::json::object();
+  if (file) {
+    document = read_json_file(*file);
+    apply_lighting_state(state, scene, document, file->string(),
+                         file->has_parent_path() ? file->parent_path() : ".");
+  }
+  const auto named = [&](const char* kind, const std::string& name) {
+    const auto k = document.is_object() ? document.find(kind) : document.end();
+    return k != document.end() && k->is_object() && k->contains(name);
+  };
+  for (std::size_t j = 0; j < scene.luminaires.size(); ++j) {
+    if (!named("luminaires", scene.luminaires[j].name)) state.luminaires[j].on = false;
+  }
+  for (std::size_t e = 0; e < scene.emitters.size(); ++e) {
+    if (!named("emitters", scene.emitters[e].name)) state.emitters[e].on = false;
+  }
+  return state;
+}
+
+AnnualValues annual_sensor_values(RelitScene& relit, const LightingState& base,
+                                  std::span<const AnnualHour> hours,
+                                  std::span<const std::size_t> sensors,
+                                  const std::function<void()>& on_hour) {
+  const auto start = std::chrono::steady_clock::now();
+  const Scene& scene = relit.scene();
+  // Each chosen sensor's point and normal.
+  std::vector<Vec3> points, normals;
+  std::vector<std::size_t> set_of;
+  for (std::size_t s = 0, k = 0; s < scene.sensors.size(); ++s) {
+    for (std::size_t i = 0; i < scene.sensors[s].points.size(); ++i, ++k) set_of.push_back(s);
+  }
+  for (const std::size_t k : sensors) {
+    const SensorSet& set = scene.sensors[set_of.at(k)];
+    std::size_t first = 0;
+    for (std::size_t s = 0; s < set_of[k]; ++s) first += scene.sensors[s].points.size();
+    points.push_back(set.points[k - first]);
+    normals.push_back(set.normal);
+  }
+  AnnualValues out;
+  out.sensors = sensors.size();
+  out.lux.reserve(hours.size() * sensors.size());
+  out.direct_sun_lux.reserve(hours.size() * sensors.size());
+  LightingState state = base;
+  for (const AnnualHour& hour : hours) {
+    for (PortalState& p : state.portals) p.environment = hour.sky;
+    relit.apply(state);
+    for (std::size_t p = 0; p < state.portals.size(); ++p) {
+      out.shell_seconds += relit.relighter().shell_seconds(p);
+    }
+    const std::vector<Rgb> e = relit.sensor_irradiance();
+    const Relighter& relighter = relit.relighter();
+    for (std::size_t c = 0; c < sensors.size(); ++c) {
+      out.lux.push_back(static_cast<float>(luminance(e[sensors[c]])));
+      const Rgb sun =
+          relighter.suns().empty()
+              ? Rgb{}
+              : sun_irradiance(relighter.sun_geometry(), relighter.suns(), points[c], normals[c]);
+      out.direct_sun_lux.push_back(static_cast<float>(luminance(sun)));
+    }
+    if (on_hour) on_hour();
+  }
+  out.total_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+}  // namespace relight

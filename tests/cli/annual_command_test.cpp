@@ -1,0 +1,192 @@
+// `relight annual` (issue 17): a year of daylight from an EnergyPlus weather file.
+//  * Consistency: for 20 random hours, the hourly illuminance equals `relight probe --state`
+//    with that hour's Perez sky in the window within 0.1 %.
+//  * The per-sensor metrics are those of the hourly values (DA300 and the UDI bands counted
+//    again from --hourly-out), and the stdout summary's sDA300 those of the per-sensor DA.
+//  * Bad arguments and a bad weather file: exit 2 with the file, line and field.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <random>
+#include <set>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "light/epw_weather.h"
+#include "run_command.h"
+#include "support/daylight_room.h"
+#include "support/synthetic_epw.h"
+
+namespace relight {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::parse_csv;
+using testing::read_text;
+using testing::run_relight;
+using testing::TempDir;
+
+// The south-window room (grey, albedo 0.5) with a 3 × 4 floor grid, precomputed.
+struct AnnualRoom {
+  TempDir dir;
+  fs::path rlt, epw;
+  testing::SyntheticPlace place;
+  AnnualRoom() {
+    testing::WindowRoom room;
+    room.south_window = testing::kWindow;
+    room.albedo = 0.5;
+    nlohmann::json scene = testing::window_room_json(room);
+    scene["sensors"] = {{{"name", "floor"},
+                         {"grid",
+                          {{"corner", {0.5, 0.8, 0.5}},
+                           {"u", {3, 0, 0}},
+                           {"v", {0, 0, 4}},
+                           {"nu", 3},
+                           {"nv", 4}}}}};
+    scene["precompute"] = {{"max_edge", 0.5}, {"gather_rays", 64}, {"sensor_gather_rays", 256}};
+    const fs::path file = dir.write("room.json", scene.dump());
+    rlt = dir.path() / "room.rlt";
+    EXPECT_EQ(
+        run_relight("precompute '" + file.string() + "' -o '" + rlt.string() + "' --no-progress")
+            .exit_code,
+        0);
+    place.first_month = 3;  // March and April: equinox suns, ~600 occupied hours
+    place.last_month = 4;
+    epw = dir.write("spring.epw", testing::synthetic_epw(place));
+  }
+};
+
+const AnnualRoom& annual_room() {
+  static const AnnualRoom room;
+  return room;
+}
+
+TEST(AnnualCommand, HourlyValuesEqualProbeWithThatHoursPerezSky) {
+  const AnnualRoom& room = annual_room();
+  const fs::path hourly = room.dir.path() / "hourly.csv", results = room.dir.path() / "year.csv";
+  const auto r =
+      run_relight("annual '" + room.rlt.string() + "' --weather '" + room.epw.string() + "' -o '" +
+                  results.string() + "' --hourly-out '" + hourly.string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::printf("%s", r.out.c_str());
+  // (month, day, hour) → the 12 sensors' lux.
+  std::map<std::tuple<int, int, int>, std::vector<double>> by_hour;
+  const auto rows = parse_csv(read_text(hourly));
+  ASSERT_EQ(rows.at(0),
+            (std::vector<std::string>{"month", "day", "hour", "sensor", "index", "lux"}));
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    by_hour[{std::stoi(rows[i][0]), std::stoi(rows[i][1]), std::stoi(rows[i][2])}].push_back(
+        std::stod(rows[i][5]));
+  }
+  ASSERT_GT(by_hour.size(), 500u);
+  for (const auto& [key, lux] : by_hour) ASSERT_EQ(lux.size(), 12u);
+
+  const WeatherFile weather = parse_epw(read_text(room.epw), "spring.epw");
+  std::vector<std::tuple<int, int, int>> keys;
+  for (const auto& [key, lux] : by_hour) keys.push_back(key);
+  std::mt19937 rng(17);
+  std::shuffle(keys.begin(), keys.end(), rng);
+  double worst = 0;
+  for (int k = 0; k < 20; ++k) {
+    const auto [month, day, hour] = keys[k];
+    const auto record = std::find_if(weather.records.begin(), weather.records.end(), [&](auto& w) {
+      return w.month == month && w.day == day && w.hour == hour;
+    });
+    ASSERT_NE(record, weather.records.end());
+    char datetime[32];
+    std::snprintf(datetime, sizeof datetime, "%04d-%02d-%02dT%02d:30", record->year, month, day,
+                  hour - 1);
+    nlohmann::json sky = {{"type", "perez"},
+                          {"direct_normal_irradiance", record->direct_normal_irradiance},
+                          {"diffuse_horizontal_irradiance", record->diffuse_horizontal_irradiance},
+                          {"sun",
+                           {{"latitude", room.place.latitude_deg},
+                            {"longitude", room.place.longitude_deg},
+                            {"utc_offset", room.place.time_zone_hours},
+                            {"datetime", datetime}}}};
+    if (record->dew_point_c) sky["dew_point_c"] = *record->dew_point_c;
+    const nlohmann::json state = {{"portals", {{"south window", {{"environment", sky}}}}}};
+    const fs::path state_file = room.dir.write("hour.json", state.dump());
+    const fs::path probe = room.dir.path() / "hour.csv";
+    ASSERT_EQ(run_relight("probe '" + room.rlt.string() + "' --state '" + state_file.string() +
+                          "' -o '" + probe.string() + "'")
+                  .exit_code,
+              0);
+    const std::vector<double> expected = testing::sensor_lux(probe);
+    const std::vector<double>& got = by_hour[keys[k]];
+    ASSERT_EQ(expected.size(), got.size());
+    for (std::size_t s = 0; s < got.size(); ++s) {
+      worst = std::max(worst, std::abs(got[s] - expected[s]) / std::max(expected[s], 1.0));
+      EXPECT_NEAR(got[s], expected[s], 1e-3 * expected[s] + 0.01)
+          << month << "/" << day << " hour " << hour << " sensor " << s;
+    }
+  }
+  std::printf("[ measured ] annual vs probe over 20 hours: worst |Δ|/E %.2e\n", worst);
+
+  // The per-sensor metrics are the hourly values counted.
+  const auto metrics = parse_csv(read_text(results));
+  ASSERT_EQ(metrics.size(), 13u);
+  EXPECT_EQ(metrics[0],
+            (std::vector<std::string>{"sensor", "index", "x", "y", "z", "da300", "udi_fell_short",
+                                      "udi_useful", "udi_exceeded", "ase_hours"}));
+  double da_sum = 0;
+  int sda = 0;
+  for (std::size_t s = 0; s < 12; ++s) {
+    double da = 0, short_ = 0, useful = 0, exceeded = 0;
+    for (const auto& [key, lux] : by_hour) {
+      da += lux[s] >= 300;
+      short_ += lux[s] < 100;
+      useful += lux[s] >= 100 && lux[s] <= 2000;
+      exceeded += lux[s] > 2000;
+    }
+    const double n = static_cast<double>(by_hour.size());
+    const auto& row = metrics[s + 1];
+    EXPECT_EQ(row[0], "floor");
+    EXPECT_EQ(row[1], std::to_string(s));
+    EXPECT_NEAR(std::stod(row[5]), da / n, 1e-6);
+    EXPECT_NEAR(std::stod(row[6]), short_ / n, 1e-6);
+    EXPECT_NEAR(std::stod(row[7]), useful / n, 1e-6);
+    EXPECT_NEAR(std::stod(row[8]), exceeded / n, 1e-6);
+    EXPECT_LE(std::stoi(row[9]), static_cast<int>(n));
+    da_sum += da / n;
+    sda += da / n >= 0.5;
+  }
+  // The window's sun patch: some floor points see more than 250 hours of direct sun in spring.
+  int sunny = 0;
+  for (std::size_t s = 1; s < metrics.size(); ++s) sunny += std::stoi(metrics[s][9]) > 0;
+  EXPECT_GT(sunny, 0);
+  char summary[64];
+  std::snprintf(summary, sizeof summary, "sDA300/50%% %.1f%%", 100.0 * sda / 12);
+  EXPECT_NE(r.out.find(summary), std::string::npos) << r.out;
+  std::snprintf(summary, sizeof summary, "mean DA300 %.1f%%", 100.0 * da_sum / 12);
+  EXPECT_NE(r.out.find(summary), std::string::npos) << r.out;
+}
+
+TEST(AnnualCommand, BadArgumentsAndWeatherFilesExitTwo) {
+  const AnnualRoom& room = annual_room();
+  const std::string base = "annual '" + room.rlt.string() + "' --weather ";
+  testing::expect_input_error(
+      run_relight(base + "'" + room.epw.string() + "' --occupied 18:00-08:00"), "--occupied");
+  testing::expect_input_error(run_relight(base + "'" + room.epw.string() + "' --sensors ceiling"),
+                              "--sensors: the scene has no sensor set \"ceiling\"");
+  std::string text = read_text(room.epw);
+  text.replace(text.find("\n2023,3,2,"), 10, "\n2023,3,x,");
+  const fs::path bad = room.dir.write("bad.epw", text);
+  testing::expect_input_error(run_relight(base + "'" + bad.string() + "'"),
+                              bad.string() + ":33: field 3 (day)");
+  testing::expect_input_error(
+      run_relight(base + "'" + (room.dir.path() / "none.epw").string() + "'"),
+      (room.dir.path() / "none.epw").string());
+  // Night only: nothing to evaluate.
+  testing::expect_input_error(
+      run_relight(base + "'" + room.epw.string() + "' --occupied 00:00-02:00"),
+      room.epw.string() + ": no occupied hour has the sun up");
+}
+
+}  // namespace
+}  // namespace relight
