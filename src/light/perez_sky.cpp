@@ -121,7 +121,7 @@ PerezSkyCondition perez_sky_condition(const PerezWeather& weather, Vec3 sun_dire
 
 CieSkyParameters perez_luminance_coefficients(const PerezSkyCondition& condition) {
   const double z = condition.zenith;
-  double delta = condition.brightness;
+  double delta = std::clamp(condition.brightness, kPerezMinBrightness, kPerezMaxBrightness);
   if (condition.clearness > 1.065 && condition.clearness < 2.8) delta = std::max(delta, 0.2);
   const auto& x = kLuminance[condition.bin];
   const auto linear = [&](int i) {

@@ -14,8 +14,11 @@
 //  * Luminance coefficients (Perez et al. 1993, Table 1 and Eq. 2–3): for each of a..e and each
 //    bin, x = x1 + x2·Z + Δ·(x3 + x4·Z); in the first bin (overcast) c and d take the forms
 //      c = exp((Δ·(c1 + c2·Z))^c3) − c4,  d = −exp(Δ·(d1 + d2·Z)) + d3 + Δ·d4.
-//    For 1.065 < ε < 2.8, Δ is held at 0.2 or more in these formulas (gendaylit's correction,
-//    which keeps intermediate skies with a very dark dome from turning the gradation over).
+//    Δ is held in 0.01..0.6 in these formulas, the range the model was fitted to (gendaylit
+//    refuses records outside it; a low sun under a bright overcast reaches Δ ≈ 1, where the
+//    first bin's c grows to ~10²); for 1.065 < ε < 2.8 it is held at 0.2 or more
+//    (gendaylit's correction, which keeps intermediate skies with a very dark dome from turning
+//    the gradation over). The efficacies below take Δ as it is.
 //    The distribution itself is SkyFormula::kPerez of light/sky_model.h.
 //  * Luminous efficacies (Perez et al. 1990, Table 4, Eq. 7–8), W the atmospheric precipitable
 //    water in cm:
@@ -39,6 +42,7 @@
 namespace relight {
 
 inline constexpr double kSolarConstant = 1367.0;  // W/m², as Perez et al. 1990 and gendaylit
+inline constexpr double kPerezMinBrightness = 0.01, kPerezMaxBrightness = 0.6;
 
 // The weather a Perez sky is made from.
 struct PerezWeather {

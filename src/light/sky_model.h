@@ -102,11 +102,17 @@ double sun_disc_luminance(const SunDisc& disc, Vec3 dir);
 // The relative luminance formula of a sky dome. kCie: the ISO 15469 general sky of `sky_type`
 // (above). kPerez: the Perez all-weather sky (light/perez_sky.h), the same product of a
 // gradation and an indicatrix with coefficients (a..e) that vary continuously with the weather,
-//   l(Z, γ) = (1 + a·exp(b / max(cos Z, 0.01)))·(1 + c·exp(d·γ) + e·cos²γ),
-// normalised to 1 at the zenith. Unlike the CIE indicatrix there is no −exp(dπ/2) term, and b
-// may be positive (horizon brightening of clear skies): cos Z is held at 0.01 (Z ≤ 89.4°), the
-// clamp Radiance's gendaylit sky function uses, so the dome's integral stays finite.
+//   l(Z, γ) = max(0, (1 + a·exp(b / max(cos Z, 0.1)))·(1 + c·exp(d·γ) + e·cos²γ)),
+// normalised to 1 at the zenith. Unlike the CIE indicatrix there is no −exp(dπ/2) term. Where
+// the fitted coefficients leave the formula's domain it is guarded, as Radiance's gendaymtx
+// does: b may come out positive (high suns with a dark, partly clear sky), and then the
+// gradation grows without bound toward the horizon — it is held at its value 5.7° above the
+// horizon (cos Z ≥ 0.1; gendaymtx samples no sky below 6°); negative luminances (a gradation
+// that changes sign) are 0; a zenith of luminance (nearly) 0 is not normalised to 1 (the
+// dome is then scaled by its horizontal illuminance alone).
 enum class SkyFormula { kCie, kPerez };
+inline constexpr double kPerezMinCosZenith = 0.1;
+inline constexpr double kPerezMinZenith = 1e-6;
 
 struct SkyModel {
   SkyFormula formula = SkyFormula::kCie;
