@@ -14,13 +14,11 @@
 #include "material/lambert.h"
 #include "math/frame.h"
 #include "math/sampling.h"
+#include "sources/luminaire/luminaire_direct.h"
 
 namespace relight {
 
 namespace {
-
-// Keeps the shadow ray from reaching a luminaire that sits on a surface.
-constexpr double kLightMargin = 1e-4;  // m
 
 // Per-sample state: the random stream and a count of rays cast (for Mrays/s).
 struct PathContext {

@@ -1,5 +1,8 @@
 #include "render/relit_scene_image.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <optional>
 
 #include "engine/material_reflectance.h"
@@ -55,7 +58,75 @@ std::vector<float> with_objects(std::span<const float> room, std::size_t vertice
 // BRDF samples of the room's reflection per glossy sub-pixel (the image takes 2 × 2 of them).
 constexpr int kGlossySamples = 64;
 
+// The windows' light along a ray: the shell of the first portal it crosses, and with
+// `with_suns` the suns' discs (traced exactly, so not in the shell).
+Rgb window_luminance(const Relighter& lit, const RayTracer& windows, Vec3 origin, Vec3 dir,
+                     bool with_suns) {
+  const RayHit hit = windows.intersect({origin, dir});
+  if (!hit.hit()) return Rgb{};
+  Rgb l = lit.shell(hit.triangle).radiance(dir);
+  if (!with_suns) return l;
+  for (const PortalSun& sun : lit.suns()) {
+    if (sun.portal == hit.triangle && sun_disc_luminance(sun.disc, normalize(dir)) > 0) {
+      l += sun.illuminance * (sun.disc.luminance / sun.disc.normal_illuminance);
+    }
+  }
+  return l;
+}
+
+// The relit scene as vertex shading sees it: the room (and the objects as the state places
+// them), the vertices' light and the windows.
+struct VertexView {
+  std::optional<ShownScene> shown;
+  std::vector<float> irradiance;
+};
+
+VertexView make_vertex_view(RelitScene& scene) {
+  const TransferFile& t = scene.transfer();
+  const Relighter& lit = scene.relighter();
+  const ObjectLighting* objects = lit.objects();
+  VertexView view;
+  if (objects != nullptr) {
+    view.shown = shown_with_objects(t, lit.vertex_albedo(), *objects);
+    view.irradiance = with_objects(scene.irradiance(), t.vertex_count, objects->irradiance(true));
+  } else {
+    view.irradiance.assign(scene.irradiance().begin(), scene.irradiance().end());
+  }
+  return view;
+}
+
+VertexShadingInput vertex_input(RelitScene& scene, const VertexView& view,
+                                std::function<Rgb(Vec3, Vec3)> background) {
+  const TransferFile& t = scene.transfer();
+  if (view.shown) {
+    return {*view.shown->tracer,   view.shown->positions,
+            view.shown->triangles, view.shown->albedo,
+            view.irradiance,       {},
+            std::move(background), {}};
+  }
+  return {
+      scene.opaque_tracer(), t.positions, t.triangles,           scene.relighter().vertex_albedo(),
+      view.irradiance,       {},          std::move(background), {}};
+}
+
 }  // namespace
+
+std::vector<Rgb> relit_scene_luminance(RelitScene& scene, std::span<const Ray> rays,
+                                       bool with_suns) {
+  const VertexView view = make_vertex_view(scene);
+  const RayTracer& windows = scene.portal_tracer();
+  const Relighter& lit = scene.relighter();
+  const VertexShadingInput input = vertex_input(scene, view, [&](Vec3 origin, Vec3 dir) {
+    return window_luminance(lit, windows, origin, dir, with_suns);
+  });
+  std::vector<Rgb> out(rays.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rays.size(), 256), [&](const auto& r) {
+    for (std::size_t i = r.begin(); i != r.end(); ++i) {
+      out[i] = shade_ray(input, rays[i].origin, rays[i].direction).luminance;
+    }
+  });
+  return out;
+}
 
 ShadedImages render_relit_scene(RelitScene& scene, const Camera& camera, int width, int height,
                                 bool pixel_direct) {
@@ -75,23 +146,10 @@ ShadedImages render_relit_scene(RelitScene& scene, const Camera& camera, int wid
       shown ? std::span<const float>(shown->albedo) : lit.vertex_albedo();
   const Occluders occluders = objects != nullptr ? objects->occluders() : Occluders(room);
   const auto background = [&](Vec3 origin, Vec3 dir) {
-    const RayHit hit = windows.intersect({origin, dir});
-    if (!hit.hit()) return Rgb{};
-    Rgb l = lit.shell(hit.triangle).radiance(dir);
-    for (const PortalSun& sun : lit.suns()) {  // traced exactly, so not in the shell
-      if (sun.portal == hit.triangle && sun_disc_luminance(sun.disc, normalize(dir)) > 0) {
-        l += sun.illuminance * (sun.disc.luminance / sun.disc.normal_illuminance);
-      }
-    }
-    return l;
+    return window_luminance(lit, windows, origin, dir, true);
   };
   if (!pixel_direct) {
-    const std::vector<float> irradiance =
-        objects != nullptr
-            ? with_objects(scene.irradiance(), t.vertex_count, objects->irradiance(true))
-            : std::vector<float>(scene.irradiance().begin(), scene.irradiance().end());
-    return shade_vertices(pinhole,
-                          {visible, positions, triangles, albedo, irradiance, {}, background, {}});
+    return shade_vertices(pinhole, vertex_input(scene, make_vertex_view(scene), background));
   }
   std::vector<float> indirect = scene.indirect_irradiance();
   if (objects != nullptr) {

@@ -5,6 +5,9 @@
 // the current shell of their portal.
 #pragma once
 
+#include <span>
+#include <vector>
+
 #include "render/camera.h"
 #include "render/vertex_shading.h"
 #include "runtime/relit_scene.h"
@@ -13,5 +16,11 @@ namespace relight {
 
 ShadedImages render_relit_scene(RelitScene& scene, const Camera& camera, int width, int height,
                                 bool pixel_direct = false);
+
+// The luminance (cd/m², RGB) seen along each ray, shaded as render_relit_scene without
+// pixel_direct (vertex light interpolated; a window shows its shell, and the suns' discs only
+// `with_suns`); 0 where nothing is seen. For views that are no pinhole camera (render/glare.h).
+std::vector<Rgb> relit_scene_luminance(RelitScene& scene, std::span<const Ray> rays,
+                                       bool with_suns);
 
 }  // namespace relight

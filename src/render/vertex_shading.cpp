@@ -8,16 +8,54 @@
 
 namespace relight {
 
+RaySample shade_ray(const VertexShadingInput& in, Vec3 origin, Vec3 dir) {
+  const auto vertex_rgb = [](std::span<const float> values, std::uint32_t v) {
+    const std::size_t i = 3 * std::size_t{v};
+    return Rgb{values[i], values[i + 1], values[i + 2]};
+  };
+  RaySample out;
+  const RayHit hit = in.tracer.intersect({origin, dir});
+  if (!hit.hit()) {
+    if (in.background) {
+      out.background = true;
+      out.luminance = in.background(origin, dir);
+    }
+    return out;
+  }
+  const Triangle& t = in.triangles[hit.triangle];
+  const Vec3 a = in.positions[t[0]], b = in.positions[t[1]], c = in.positions[t[2]];
+  const Vec3 face = cross(b - a, c - a);
+  if (dot(face, dir) >= 0) return out;  // back faces absorb: black
+  const double bary[3] = {1 - hit.u - hit.v, hit.u, hit.v};
+  Rgb e, albedo;
+  for (int k = 0; k < 3; ++k) {
+    e += vertex_rgb(in.irradiance, t[k]) * bary[k];
+    albedo += vertex_rgb(in.vertex_albedo, t[k]) * bary[k];
+  }
+  // Per-vertex albedo is constant within a triangle (vertices split at material
+  // boundaries), so ρ/π · E interpolates like per-vertex radiance.
+  Rgb l;
+  if (in.direct_at_hit) {
+    const Vec3 p = a * bary[0] + b * bary[1] + c * bary[2], n = normalize(face);
+    const std::optional<Rgb> glossy =
+        in.glossy_radiance ? in.glossy_radiance(hit.triangle, p, n, dir * -1.0) : std::nullopt;
+    e += in.direct_at_hit(p, n);
+    l = glossy ? *glossy : lambertian_radiance(albedo, e);
+  } else {
+    l = lambertian_radiance(albedo, e);
+  }
+  out.surface = true;
+  out.luminance = l;
+  out.illuminance = e;
+  return out;
+}
+
 ShadedImages shade_vertices(const PinholeCamera& camera, const VertexShadingInput& in,
                             int samples_per_axis) {
   const int w = camera.width, h = camera.height;
   const double nan = std::numeric_limits<double>::quiet_NaN();
   ShadedImages out{make_image(w, h), make_image(w, h)};
   const int spp = samples_per_axis * samples_per_axis;
-  auto vertex_rgb = [](std::span<const float> values, std::uint32_t v) {
-    const std::size_t i = 3 * std::size_t{v};
-    return Rgb{values[i], values[i + 1], values[i + 2]};
-  };
   tbb::parallel_for(tbb::blocked_range<int>(0, h), [&](const tbb::blocked_range<int>& rows) {
     for (int y = rows.begin(); y != rows.end(); ++y) {
       for (int x = 0; x < w; ++x) {
@@ -27,40 +65,11 @@ ShadedImages shade_vertices(const PinholeCamera& camera, const VertexShadingInpu
           const int row = s / samples_per_axis, column = s % samples_per_axis;
           const double sx = (column + 0.5) / samples_per_axis;
           const double sy = (row + 0.5) / samples_per_axis;
-          const Vec3 dir = camera.direction(x + sx, y + sy);
-          const RayHit hit = in.tracer.intersect({camera.eye, dir});
-          if (!hit.hit()) {
-            if (in.background) {
-              l_sum += in.background(camera.eye, dir);
-              ++escaped;
-            }
-            continue;
-          }
-          const Triangle& t = in.triangles[hit.triangle];
-          const Vec3 a = in.positions[t[0]], b = in.positions[t[1]], c = in.positions[t[2]];
-          const Vec3 face = cross(b - a, c - a);
-          if (dot(face, dir) >= 0) continue;  // back faces absorb: black
-          const double bary[3] = {1 - hit.u - hit.v, hit.u, hit.v};
-          Rgb e, albedo;
-          for (int k = 0; k < 3; ++k) {
-            e += vertex_rgb(in.irradiance, t[k]) * bary[k];
-            albedo += vertex_rgb(in.vertex_albedo, t[k]) * bary[k];
-          }
-          // Per-vertex albedo is constant within a triangle (vertices split at material
-          // boundaries), so ρ/π · E interpolates like per-vertex radiance.
-          Rgb l;
-          if (in.direct_at_hit) {
-            const Vec3 p = a * bary[0] + b * bary[1] + c * bary[2], n = normalize(face);
-            const std::optional<Rgb> glossy =
-                in.glossy_radiance ? in.glossy_radiance(hit.triangle, p, n, dir * -1.0)
-                                   : std::nullopt;
-            e += in.direct_at_hit(p, n);
-            l = glossy ? *glossy : lambertian_radiance(albedo, e);
-          } else {
-            l = lambertian_radiance(albedo, e);
-          }
-          e_sum += e;
-          l_sum += l;
+          const RaySample sample = shade_ray(in, camera.eye, camera.direction(x + sx, y + sy));
+          l_sum += sample.luminance;
+          if (sample.background) ++escaped;
+          if (!sample.surface) continue;
+          e_sum += sample.illuminance;
           ++covered;
         }
         Rgb& lum = out.luminance.at(x, y);

@@ -36,6 +36,15 @@ struct VertexShadingInput {
       glossy_radiance;
 };
 
+// What one ray of shade_vertices sees from `origin` along `dir`: a front surface (its
+// luminance and illuminance), the background (luminance only), or nothing (a back face, or no
+// hit without a background).
+struct RaySample {
+  bool surface = false, background = false;
+  Rgb luminance, illuminance;
+};
+RaySample shade_ray(const VertexShadingInput& input, Vec3 origin, Vec3 dir);
+
 struct ShadedImages {
   Image luminance;    // cd/m² per channel; NaN where no front surface (or background) is seen
   Image illuminance;  // lux per channel; NaN likewise

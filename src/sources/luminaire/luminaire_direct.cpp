@@ -12,9 +12,6 @@ namespace relight {
 
 namespace {
 
-// Keeps the shadow ray from reaching a luminaire that sits on a surface.
-constexpr double kLightMargin = 1e-4;  // m
-
 bool is_round(OpeningShape s) {
   switch (s) {
     case OpeningShape::kCircular:

@@ -48,6 +48,10 @@ struct DirectFactor {
 DirectFactor direct_factor(const Occluders& occluders, Vec3 p, Vec3 n, Vec3 luminaire_position,
                            const std::vector<Vec3>& opening_offsets, std::uint64_t& rays);
 
+// Keeps a shadow ray toward a luminaire from reaching the luminaire (or the surface it sits
+// on): the ray stops this far short of it, m.
+inline constexpr double kLightMargin = 1e-4;
+
 // A luminaire as a lighting state sets it, for its exact direct light at any point: at each
 // pixel of an image (render/pixel_direct.h) and at the vertices of movable objects
 // (sources/object/object_lighting.h).

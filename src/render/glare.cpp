@@ -1,0 +1,169 @@
+// Glare at an observer's eye: UGR and DGP; formulas and choices in glare.h.
+#include "render/glare.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "math/rgb.h"
+#include "render/pixel_direct.h"
+#include "render/relit_scene_image.h"
+#include "sources/luminaire/luminaire_direct.h"
+#include "sources/portal/portal_sun.h"
+#include "trace/ray_tracer.h"
+
+namespace relight {
+
+namespace {
+
+constexpr double kGlareFactor = 5;  // sources: brighter than 5 × the view's mean luminance
+
+// A luminous opening projected toward the unit photometric-frame direction u (x along C0,
+// the length; y along C90, the width; z along the aim), m².
+double projected_area(const LuminousOpening& o, Vec3 u) {
+  const double w = o.width_m, l = o.length_m, h = o.height_m;
+  const double side = std::sqrt(u.x * u.x + u.y * u.y);
+  switch (o.shape) {
+    case OpeningShape::kPoint:
+      return 0;
+    case OpeningShape::kRectangular:
+    case OpeningShape::kRectangularWithLuminousSides:
+      return w * l * std::abs(u.z) + h * (w * std::abs(u.x) + l * std::abs(u.y));
+    default:  // round shapes: an ellipse of axes l × w, a cylinder of height h about it
+      return kPi / 4 * w * l * std::abs(u.z) + 0.5 * (w + l) * h * side;
+  }
+}
+
+}  // namespace
+
+double guth_position_index(Vec3 view, Vec3 up, Vec3 source) {
+  const double forward = dot(source, view);
+  const double sigma = degrees(std::acos(std::clamp(forward, -1.0, 1.0)));
+  const Vec3 side = source - view * forward;  // the source's offset from the line of sight
+  const double right = length(cross(view, up) * dot(side, cross(view, up)));
+  const double above = std::abs(dot(side, up));  // below: mirrored (glare.h)
+  const double tau = degrees(std::atan2(right, above));
+  const double ln_p = (35.2 - 0.31889 * tau - 1.22 * std::exp(-2 * tau / 9)) * 1e-3 * sigma +
+                      (21 + 0.26667 * tau - 0.002963 * tau * tau) * 1e-5 * sigma * sigma;
+  return std::exp(ln_p);
+}
+
+GlareResult evaluate_glare(RelitScene& scene, Vec3 eye, Vec3 view_direction, int n) {
+  if (!(length(view_direction) > 0)) throw std::invalid_argument("glare: a zero view direction");
+  const Vec3 view = normalize(view_direction);
+  const Vec3 world_up = std::abs(view.y) > 0.999 ? Vec3{0, 0, -1} : Vec3{0, 1, 0};
+  const Vec3 up = normalize(world_up - view * dot(world_up, view));
+  const Vec3 right = cross(view, up);
+  const Relighter& lit = scene.relighter();
+  const Scene& s = scene.scene();
+  GlareResult out;
+
+  // The view hemisphere, 2n² directions of equal solid angle.
+  const int rows = n, columns = 2 * n;
+  const double omega = 2 * kPi / (rows * columns);
+  std::vector<Ray> rays;
+  rays.reserve(static_cast<std::size_t>(rows) * columns);
+  for (int i = 0; i < rows; ++i) {
+    const double c = (i + 0.5) / rows, sn = std::sqrt(1 - c * c);
+    for (int j = 0; j < columns; ++j) {
+      const double phi = 2 * kPi * (j + 0.5) / columns;
+      rays.push_back({eye, view * c + up * (sn * std::cos(phi)) + right * (sn * std::sin(phi))});
+    }
+  }
+  const std::vector<Rgb> seen = relit_scene_luminance(scene, rays, false);
+  double e_view = 0;
+  for (std::size_t k = 0; k < rays.size(); ++k) {
+    e_view += luminance(seen[k]) * dot(rays[k].direction, view) * omega;
+  }
+
+  // The luminaires' direct light, exactly, and each luminaire in view as a source.
+  const std::vector<LuminaireLight> lights = pixel_lights(s, lit);
+  const Occluders occluders =
+      lit.objects() != nullptr ? lit.objects()->occluders() : Occluders(scene.opaque_tracer());
+  out.luminaire_direct_ev = luminance(luminaire_direct_irradiance(occluders, lights, eye, view));
+  std::vector<GlareSource> luminaires;
+  double ugr_sum = 0;
+  bool any_luminaire = false;
+  for (std::size_t j = 0; j < lights.size(); ++j) {
+    const LuminaireLight& light = lights[j];
+    if (max_component(light.rgb) <= 0) continue;
+    const Vec3 to = light.position - eye;
+    const double r = length(to);
+    const Vec3 d = to / r;
+    if (dot(d, view) <= 0 || r <= kLightMargin) continue;
+    if (occluders.occluded(Ray{eye, d, 0, r - kLightMargin})) continue;
+    const Vec3 u = light.frame.to_photometric(d * -1.0);
+    const double intensity = luminance(light.rgb) * light.distribution->intensity(u);
+    if (intensity <= 0) continue;
+    const double area =
+        projected_area(luminaire_opening(s.luminaires[j], light.distribution->opening()), u);
+    if (!(area > 0)) {
+      out.unrated.push_back(s.luminaires[j].name);
+      continue;
+    }
+    const double p = guth_position_index(view, up, d);
+    GlareSource src{"luminaire", s.luminaires[j].name, d, intensity / area, area / (r * r), p};
+    if (dot(d, up) > 0) {  // UGR: above the line of sight
+      ugr_sum += src.luminance * src.luminance * src.solid_angle / (p * p);
+      any_luminaire = true;
+    }
+    luminaires.push_back(src);
+  }
+
+  // The suns, exactly.
+  double sun_ev = 0;
+  std::vector<GlareSource> suns;
+  if (!lit.suns().empty()) {
+    SunGeometry geometry = lit.sun_geometry();
+    geometry.occluders = occluders;
+    for (const PortalSun& sun : lit.suns()) {
+      const double e = luminance(sun_irradiance(geometry, std::span(&sun, 1), eye, view));
+      if (e <= 0) continue;
+      sun_ev += e;
+      const double l =
+          luminance(sun.illuminance) * sun.disc.luminance / sun.disc.normal_illuminance;
+      suns.push_back({"sun", s.portals.at(sun.portal).name, sun.disc.direction,
+                      l * sun_disc_fraction(geometry, sun, eye), sun.disc.solid_angle,
+                      guth_position_index(view, up, sun.disc.direction)});
+    }
+  }
+
+  out.ev = e_view + out.luminaire_direct_ev + sun_ev;
+  out.background_luminance = (out.ev - out.luminaire_direct_ev) / kPi;
+  if (any_luminaire && out.background_luminance > 0) {
+    out.ugr = 8 * std::log10(0.25 / out.background_luminance * ugr_sum);
+  }
+
+  // DGP: every source brighter than 5 × E_v/π.
+  const double threshold = kGlareFactor * out.ev / kPi;
+  double dgp_sum = 0;
+  const auto add = [&](const GlareSource& src) {
+    if (src.luminance <= threshold || out.ev <= 0) return;
+    dgp_sum += src.luminance * src.luminance * src.solid_angle /
+               (std::pow(out.ev, 1.87) * src.position_index * src.position_index);
+    out.sources.push_back(src);
+  };
+  // The view's bright directions add to the sum one by one, and are reported as one source:
+  // their solid angle, mean luminance and mean direction.
+  GlareSource bright{"view", "", {}, 0, 0, 1};
+  for (std::size_t k = 0; k < rays.size(); ++k) {
+    const double l = luminance(seen[k]);
+    if (l <= threshold || out.ev <= 0) continue;
+    const double p = guth_position_index(view, up, rays[k].direction);
+    dgp_sum += l * l * omega / (std::pow(out.ev, 1.87) * p * p);
+    bright.solid_angle += omega;
+    bright.luminance += l * omega;
+    bright.direction += rays[k].direction * (l * omega);
+  }
+  if (bright.solid_angle > 0) {
+    bright.luminance /= bright.solid_angle;
+    bright.direction = normalize(bright.direction);
+    bright.position_index = guth_position_index(view, up, bright.direction);
+    out.sources.push_back(bright);
+  }
+  for (const GlareSource& src : luminaires) add(src);
+  for (const GlareSource& src : suns) add(src);
+  out.dgp = 5.87e-5 * out.ev + 9.18e-2 * std::log10(1 + dgp_sum) + 0.16;
+  return out;
+}
+
+}  // namespace relight
