@@ -231,6 +231,12 @@ LightingState load_lighting_state(const Scene& scene, const std::filesystem::pat
   return state;
 }
 
+LightingState maintained_state(LightingState state, double mf) {
+  for (LuminaireState& l : state.luminaires) l.dimmer *= mf;
+  for (EmitterState& e : state.emitters) e.luminance *= mf;
+  return state;
+}
+
 Scene scene_with_state(const Scene& scene, const LightingState& state) {
   if (state.luminaires.size() != scene.luminaires.size() ||
       state.portals.size() != scene.portals.size()) {

@@ -36,6 +36,10 @@ void apply_lighting_state(LightingState& state, const Scene& scene, const nlohma
 
 LightingState load_lighting_state(const Scene& scene, const std::filesystem::path& file);
 
+// The state as its electric lighting is maintained (CIE 97, EN 12464-1): every luminaire's
+// dimmer and every emitter's luminance times the maintenance factor `mf`; daylight as it is.
+LightingState maintained_state(LightingState state, double mf);
+
 // The scene as `state` lights it, for code that reads a Scene (the reference tracer): each
 // luminaire's aim, C0, distribution, colour and dimmer (0 when off), each portal's environment,
 // tint and frost; the movable objects placed into `geometry` (hidden ones left out, the

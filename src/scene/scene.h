@@ -50,12 +50,29 @@ struct Luminaire {
   std::string where;  // "FILE:JSON-PATH", for messages
 };
 
+// An observer of a task area for its glare check: the eye and the direction it looks.
+struct TaskObserver {
+  Vec3 position;
+  Vec3 view{0, 0, -1};  // unit
+};
+
+// What EN 12464-1 asks of a task area (issue 17, `relight probe --check`): the maintained
+// average illuminance Ē >= em, the uniformity U0 = Emin/Ē >= u0, and UGR <= ugr_l at each
+// observer; each requirement optional.
+struct TaskRequirements {
+  std::optional<double> em;     // lx
+  std::optional<double> u0;     // 0..1
+  std::optional<double> ugr_l;  // UGR limit
+  std::vector<TaskObserver> observers;
+};
+
 struct SensorSet {
   std::string name;
   std::vector<Vec3> points;
   Vec3 normal{0, 1, 0};  // unit; every point of the set faces this way
   // Grid layout when the set came from a grid (index j*nu + i), 0 otherwise.
   int nu = 0, nv = 0;
+  std::optional<TaskRequirements> task = std::nullopt;  // a task area (EN 12464-1)
 };
 
 // A window (Yue et al. 2009 §3): the triangles of its portal materials, through which light
@@ -160,6 +177,9 @@ struct Scene {
   std::vector<Emitter> emitters;
   std::vector<MovableObject> objects;
   PrecomputeSettings precompute;
+  // CIE 97 maintenance factor of the electric lighting (0..1]; none when the scene does not
+  // declare it (taken as 1 with a warning by the checks: EN 12464-1 asks for it).
+  std::optional<double> maintenance_factor;
 
   Bounds bounds() const;
   std::size_t sensor_count() const;

@@ -296,8 +296,9 @@ struct Loader {
   void load_sensors(const JsonNode& node) {
     std::set<std::string> names;
     for (const JsonNode& s : node.elements()) {
-      s.expect_keys({"name", "grid", "points", "normal"});
+      s.expect_keys({"name", "grid", "points", "normal", "task"});
       SensorSet set;
+      if (const auto t = s.find("task")) set.task = parse_task(*t);
       set.name = s.at("name").string();
       if (!names.insert(set.name).second)
         s.at("name").fail("duplicate sensor set \"" + set.name + "\"");
@@ -323,6 +324,29 @@ struct Loader {
       }
       scene.sensors.push_back(std::move(set));
     }
+  }
+
+  static TaskRequirements parse_task(const JsonNode& t) {
+    if (!t.is_object()) t.fail("expected an object");
+    t.expect_keys({"em", "u0", "ugr_l", "observers"});
+    TaskRequirements task;
+    if (const auto e = t.find("em")) task.em = e->number_at_least(0);
+    if (const auto u = t.find("u0")) {
+      task.u0 = u->number_at_least(0);
+      if (*task.u0 > 1) u->fail("u0 is a ratio Emin/Eavg in 0..1");
+    }
+    if (const auto g = t.find("ugr_l")) task.ugr_l = g->number_at_least(0);
+    if (const auto o = t.find("observers")) {
+      for (const JsonNode& obs : o->elements()) {
+        obs.expect_keys({"position", "view"});
+        task.observers.push_back({obs.at("position").vec3(), obs.at("view").direction()});
+      }
+    }
+    if (task.ugr_l && task.observers.empty()) {
+      t.at("ugr_l").fail("a UGR limit needs \"observers\": [{\"position\", \"view\"}, ...]");
+    }
+    if (!task.em && !task.u0 && !task.ugr_l) t.fail("give at least one of em, u0, ugr_l");
+    return task;
   }
 
   void load_cameras(const JsonNode& node) {
@@ -510,7 +534,8 @@ Scene scene_from_json(const nlohmann::json& document, const fs::path& file,
                       const EmbeddedFiles* embedded) {
   const JsonNode root(document, file.string(), "/");
   root.expect_keys({"description", "materials", "geometry", "luminaires", "sensors", "cameras",
-                    "portals", "exterior", "emitters", "objects", "precompute"});
+                    "portals", "exterior", "emitters", "objects", "precompute",
+                    "maintenance_factor"});
   Loader loader;
   loader.scene.file = file;
   loader.base_dir = file.has_parent_path() ? file.parent_path() : fs::path(".");
@@ -526,6 +551,11 @@ Scene scene_from_json(const nlohmann::json& document, const fs::path& file,
   if (const auto n = root.find("emitters")) loader.load_emitters(*n);
   if (const auto n = root.find("objects")) loader.load_objects(*n);
   if (const auto n = root.find("precompute")) loader.load_precompute(*n);
+  if (const auto n = root.find("maintenance_factor")) {
+    const double mf = n->number_at_least(0);
+    if (!(mf > 0 && mf <= 1)) n->fail("a maintenance factor lies in (0, 1]");
+    loader.scene.maintenance_factor = mf;
+  }
   for (const Vec3& p : loader.scene.geometry.positions) {
     if (!is_finite(p)) root.at("geometry").fail("geometry has a non-finite coordinate");
   }
