@@ -22,6 +22,7 @@ int run_cli(int argc, char** argv) {
   add_probe_command(app, action);
   add_annual_command(app, action);
   add_glare_command(app, action);
+  add_report_command(app, action);
   add_bench_command(app, action);
   add_analyze_command(app, action);
   add_serve_command(app, action);

@@ -20,6 +20,7 @@ void add_render_command(CLI::App& app, Action& action);
 void add_probe_command(CLI::App& app, Action& action);
 void add_annual_command(CLI::App& app, Action& action);
 void add_glare_command(CLI::App& app, Action& action);
+void add_report_command(CLI::App& app, Action& action);
 void add_bench_command(CLI::App& app, Action& action);
 void add_analyze_command(CLI::App& app, Action& action);
 void add_serve_command(CLI::App& app, Action& action);
