@@ -93,6 +93,7 @@ export class WindowsPanel {
       [
         ['uniform', 'uniform sky'],
         ['cie_sky', 'CIE sky (and sun)'],
+        ['perez', 'Perez sky (weather)'],
         ['map', 'HDR map'],
       ],
       { title: 'What the window sees', testid: `env-type-${i}`, onChange: (t) => this._switchType(b, t) },
@@ -113,6 +114,12 @@ export class WindowsPanel {
     if (b.p.environment?.type === type) return this._setEnv(b.p, clone(b.p.environment));
     if (type === 'uniform') return this._setEnv(b.p, { type, luminance: 1000 });
     if (type === 'cie_sky') return this._setEnv(b.p, { type, sky_type: 'overcast', horizontal_illuminance: 10000 });
+    if (type === 'perez') {
+      return this._setEnv(b.p, {
+        type, direct_normal_irradiance: 600, diffuse_horizontal_irradiance: 120,
+        sun: { latitude: 48.14, longitude: 11.58, utc_offset: 1, datetime: '2026-03-21T12:00' },
+      });
+    }
     // A map needs a file first.
     b.pendingMap = true;
     this._form(b, { type: 'map', file: '', rotate_deg: 0, scale: 1 });
@@ -181,58 +188,14 @@ export class WindowsPanel {
       if (env.zenith_luminance !== undefined) num('zenith_luminance', 'Zenith', { min: 0, unit: 'cd/m²' }, 'Luminance of the sky at the zenith, cd/m²');
       else num('horizontal_illuminance', 'Sky', { min: 0, unit: 'lx' }, 'Diffuse horizontal illuminance of the sky (without the sun), lx; 10000 lx is a bright overcast day');
       num('ground_albedo', 'Albedo', { min: 0, max: 1, step: 0.01 }, 'Reflectance of the ground below the horizon (Lambertian), 0..1; default 0.2');
-      const mode = select(
-        [
-          ['none', 'no sun'],
-          ['place', 'by place and local time'],
-          ['angles', 'by azimuth and altitude'],
-        ],
-        {
-          title: 'Where the sun is. North is −z and east +x; azimuths from north, clockwise toward east. CIE sky types other than 1, 3, 5 and overcast need a sun position.',
-          value: sunMode(env),
-          testid: `sun-mode-${b.i}`,
-          onChange: (m) => {
-            if (m === 'none') {
-              delete b.env.sun;
-              delete b.env.sun_illuminance; // a sun disc needs a sun position
-            }
-            if (m === 'place') b.env.sun = { latitude: 48.14, longitude: 11.58, utc_offset: 1, datetime: '2026-03-21T12:00' };
-            if (m === 'angles') b.env.sun = { azimuth_deg: 180, altitude_deg: 35 };
-            if (m !== 'none' && b.env.sun_illuminance === undefined) b.env.sun_illuminance = 70000;
-            commit();
-          },
-        },
-      );
-      f.append(row('Sun', mode, 'Sun position'));
-      const sun = () => b.env.sun;
-      if (sunMode(env) === 'place') {
-        num('latitude', 'Latitude', { min: -90, max: 90, unit: '°' }, 'Latitude in degrees, north positive', sun);
-        num('longitude', 'Longitude', { min: -180, max: 180, unit: '°' }, 'Longitude in degrees, east positive', sun);
-        num('utc_offset', 'UTC offset', { min: -14, max: 14, unit: 'h' }, 'Local time minus UTC, hours (e.g. 1 for CET, 2 for CEST)', sun);
-        const date = el('input', { type: 'date', title: 'Local date', dataset: { testid: `sun-date-${b.i}` } });
-        const time = el('input', { type: 'time', title: 'Local time (HH:MM)', dataset: { testid: `sun-time-${b.i}` } });
-        const scrub = el('input', { type: 'range', min: 0, max: 1439, step: 5, title: 'Time of day: drag to move the sun through the day', class: 'time-slider', dataset: { testid: `sun-time-slider-${b.i}` } });
-        const setDT = () => {
-          if (!date.value || !time.value) return;
-          b.env.sun.datetime = `${date.value}T${time.value.slice(0, 5)}`;
-          commit();
-        };
-        date.addEventListener('change', setDT);
-        time.addEventListener('change', setDT);
-        scrub.addEventListener('input', () => {
-          const m = Number(scrub.value);
-          time.value = `${pad(Math.floor(m / 60))}:${pad(m % 60)}`;
-          setDT();
-        });
-        b.fields.date = date;
-        b.fields.time = time;
-        b.fields.scrub = scrub;
-        f.append(row('Date', date, 'Local date'), row('Time', [time, scrub], 'Local time'));
-      } else if (sunMode(env) === 'angles') {
-        num('azimuth_deg', 'Azimuth', { min: -360, max: 360, unit: '°' }, 'Sun azimuth from north, clockwise toward east (180 = south)', sun);
-        num('altitude_deg', 'Altitude', { min: -90, max: 90, unit: '°' }, 'Sun altitude above the horizon', sun);
-      }
+      this._sunForm(b, env, f, num, commit, true);
       if (sunMode(env) !== 'none') num('sun_illuminance', 'Sun disc', { min: 0, unit: 'lx' }, 'Illuminance of the sun normal to its direction, lx (0 = no sun disc; clear sky ≈ 70000–100000)');
+    } else if (env.type === 'perez') {
+      num('direct_normal_irradiance', 'Direct', { min: 0, max: 1500, unit: 'W/m²' }, 'Direct normal irradiance of the weather record, W/m² (clear sky ≈ 600–900)');
+      num('diffuse_horizontal_irradiance', 'Diffuse', { min: 0, max: 1500, unit: 'W/m²' }, 'Diffuse horizontal irradiance of the weather record, W/m² (overcast ≈ 50–300)');
+      num('dew_point_c', 'Dew point', { min: -90, max: 60, unit: '°C' }, 'Surface dew point, °C: the atmosphere\'s water, which sets the luminous efficacy (empty: 2 cm of precipitable water)');
+      num('ground_albedo', 'Albedo', { min: 0, max: 1, step: 0.01 }, 'Reflectance of the ground below the horizon (Lambertian), 0..1; default 0.2');
+      this._sunForm(b, env, f, num, commit, false);
     } else if (env.type === 'map') {
       const file = el('input', { type: 'text', placeholder: 'sky.exr or sky.hdr', title: 'Equirectangular HDR map (.exr or .hdr) in cd/m²; relative paths resolve against the folder of the .rlt. Press Enter to apply.' });
       const apply = () => {
@@ -247,6 +210,61 @@ export class WindowsPanel {
       num('scale', 'Scale', { min: 0, step: 'any' }, 'Multiplier on the map values (cd/m²)');
     }
     this._fill(b);
+  }
+
+  // The sun's rows of an environment form (a Perez sky always has a sun: no 'none').
+  _sunForm(b, env, f, num, commit, allowNone) {
+    const mode = select(
+      [
+        ...(allowNone ? [['none', 'no sun']] : []),
+        ['place', 'by place and local time'],
+        ['angles', 'by azimuth and altitude'],
+      ],
+      {
+        title: 'Where the sun is. North is −z and east +x; azimuths from north, clockwise toward east. CIE sky types other than 1, 3, 5 and overcast need a sun position.',
+        value: sunMode(env),
+        testid: `sun-mode-${b.i}`,
+        onChange: (m) => {
+          if (m === 'none') {
+            delete b.env.sun;
+            delete b.env.sun_illuminance; // a sun disc needs a sun position
+          }
+          if (m === 'place') b.env.sun = { latitude: 48.14, longitude: 11.58, utc_offset: 1, datetime: '2026-03-21T12:00' };
+          if (m === 'angles') b.env.sun = { azimuth_deg: 180, altitude_deg: 35 };
+          if (allowNone && m !== 'none' && b.env.sun_illuminance === undefined) b.env.sun_illuminance = 70000;
+          commit();
+        },
+      },
+    );
+    f.append(row('Sun', mode, 'Sun position'));
+    const sun = () => b.env.sun;
+    if (sunMode(env) === 'place') {
+      num('latitude', 'Latitude', { min: -90, max: 90, unit: '°' }, 'Latitude in degrees, north positive', sun);
+      num('longitude', 'Longitude', { min: -180, max: 180, unit: '°' }, 'Longitude in degrees, east positive', sun);
+      num('utc_offset', 'UTC offset', { min: -14, max: 14, unit: 'h' }, 'Local time minus UTC, hours (e.g. 1 for CET, 2 for CEST)', sun);
+      const date = el('input', { type: 'date', title: 'Local date', dataset: { testid: `sun-date-${b.i}` } });
+      const time = el('input', { type: 'time', title: 'Local time (HH:MM)', dataset: { testid: `sun-time-${b.i}` } });
+      const scrub = el('input', { type: 'range', min: 0, max: 1439, step: 5, title: 'Time of day: drag to move the sun through the day', class: 'time-slider', dataset: { testid: `sun-time-slider-${b.i}` } });
+      const setDT = () => {
+        if (!date.value || !time.value) return;
+        b.env.sun.datetime = `${date.value}T${time.value.slice(0, 5)}`;
+        commit();
+      };
+      date.addEventListener('change', setDT);
+      time.addEventListener('change', setDT);
+      scrub.addEventListener('input', () => {
+        const m = Number(scrub.value);
+        time.value = `${pad(Math.floor(m / 60))}:${pad(m % 60)}`;
+        setDT();
+      });
+      b.fields.date = date;
+      b.fields.time = time;
+      b.fields.scrub = scrub;
+      f.append(row('Date', date, 'Local date'), row('Time', [time, scrub], 'Local time'));
+    } else if (sunMode(env) === 'angles') {
+      num('azimuth_deg', 'Azimuth', { min: -360, max: 360, unit: '°' }, 'Sun azimuth from north, clockwise toward east (180 = south)', sun);
+      num('altitude_deg', 'Altitude', { min: -90, max: 90, unit: '°' }, 'Sun altitude above the horizon', sun);
+    }
   }
 
   // Puts the values of b.env into the form's fields (those not being edited).
@@ -265,6 +283,13 @@ export class WindowsPanel {
       put('zenith_luminance', env.zenith_luminance);
       put('ground_albedo', env.ground_albedo ?? 0.2);
       put('sun_illuminance', env.sun_illuminance ?? 0);
+    } else if (env.type === 'perez') {
+      put('direct_normal_irradiance', env.direct_normal_irradiance);
+      put('diffuse_horizontal_irradiance', env.diffuse_horizontal_irradiance);
+      put('dew_point_c', env.dew_point_c);
+      put('ground_albedo', env.ground_albedo ?? 0.2);
+    }
+    if (env.type === 'cie_sky' || env.type === 'perez') {
       const s = env.sun || {};
       put('latitude', s.latitude);
       put('longitude', s.longitude);
@@ -278,7 +303,8 @@ export class WindowsPanel {
         const [hh, mm] = t.split(':').map(Number);
         if (b.fields.scrub && !b.fields.scrub._dragging) put('scrub', String(hh * 60 + mm));
       }
-    } else if (env.type === 'map') {
+    }
+    if (env.type === 'map') {
       put('file', env.file);
       put('rotate_deg', env.rotate_deg ?? 0);
       put('scale', env.scale ?? 1);
