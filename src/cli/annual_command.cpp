@@ -47,7 +47,11 @@ std::vector<ChosenSet> choose_sets(const Scene& scene, const std::string& names)
                                  [&](const ChosenSet& c) { return c.set->name == name; });
     if (it == all.end()) {
       std::string known;
-      for (const ChosenSet& c : all) known += (known.empty() ? "\"" : ", \"") + c.set->name + "\"";
+      for (const ChosenSet& c : all) {
+        known += known.empty() ? "\"" : ", \"";
+        known += c.set->name;
+        known += '"';
+      }
       fail_input("--sensors",
                  "the scene has no sensor set \"" + name + "\" (it has " + known + ")");
     }

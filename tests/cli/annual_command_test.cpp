@@ -37,24 +37,7 @@ struct AnnualRoom {
   fs::path rlt, epw;
   testing::SyntheticPlace place;
   AnnualRoom() {
-    testing::WindowRoom room;
-    room.south_window = testing::kWindow;
-    room.albedo = 0.5;
-    nlohmann::json scene = testing::window_room_json(room);
-    scene["sensors"] = {{{"name", "floor"},
-                         {"grid",
-                          {{"corner", {0.5, 0.8, 0.5}},
-                           {"u", {3, 0, 0}},
-                           {"v", {0, 0, 4}},
-                           {"nu", 3},
-                           {"nv", 4}}}}};
-    scene["precompute"] = {{"max_edge", 0.5}, {"gather_rays", 64}, {"sensor_gather_rays", 256}};
-    const fs::path file = dir.write("room.json", scene.dump());
-    rlt = dir.path() / "room.rlt";
-    EXPECT_EQ(
-        run_relight("precompute '" + file.string() + "' -o '" + rlt.string() + "' --no-progress")
-            .exit_code,
-        0);
+    rlt = testing::precompute_scene(dir, "room", testing::south_window_room(0.8).dump());
     place.first_month = 3;  // March and April: equinox suns, ~600 occupied hours
     place.last_month = 4;
     epw = dir.write("spring.epw", testing::synthetic_epw(place));

@@ -33,13 +33,7 @@ nlohmann::json glare(const fs::path& rlt, const std::string& args) {
 }
 
 fs::path precompute(const TempDir& dir, const nlohmann::json& scene, const std::string& name) {
-  const fs::path file = dir.write(name + ".json", scene.dump());
-  const fs::path rlt = dir.path() / (name + ".rlt");
-  EXPECT_EQ(
-      run_relight("precompute '" + file.string() + "' -o '" + rlt.string() + "' --no-progress")
-          .exit_code,
-      0);
-  return rlt;
+  return testing::precompute_scene(dir, name, scene.dump());
 }
 
 // A black room whose south window (x 1..3, y 0.9..2.1 on z = 5) shows a uniform 3000 cd/m²;
@@ -93,11 +87,7 @@ TEST(GlareCommand, UgrOfOneLuminaireMatchesTheFormulaByHand) {
   testing::WindowRoom room;
   room.albedo = 0.5;
   nlohmann::json scene = testing::window_room_json(room);
-  scene["luminaires"] = {{{"name", "panel"},
-                          {"position", {2, 2.9, 3}},
-                          {"aim", {0, -1, 0}},
-                          {"size", {0.6, 0.6, 0}},
-                          {"distribution", {{"type", "isotropic"}, {"candela", 1000}}}}};
+  scene["luminaires"] = {testing::panel_luminaire("panel")};
   scene["precompute"] = {{"max_edge", 0.5}, {"gather_rays", 64}};
   const fs::path rlt = precompute(dir, scene, "panel");
   const nlohmann::json g = glare(rlt, "--observer 2,1.2,1 --view 0,0,1");

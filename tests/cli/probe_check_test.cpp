@@ -24,11 +24,7 @@ nlohmann::json panel_room() {
   testing::WindowRoom room;
   room.albedo = 0.5;
   nlohmann::json scene = testing::window_room_json(room);
-  scene["luminaires"] = {{{"name", "panel"},
-                          {"position", {2, 2.9, 3}},
-                          {"aim", {0, -1, 0}},
-                          {"size", {0.6, 0.6, 0}},
-                          {"distribution", {{"type", "isotropic"}, {"candela", 1000}}}}};
+  scene["luminaires"] = {testing::panel_luminaire("panel")};
   scene["sensors"] = {
       {{"name", "desk"},
        {"grid",
@@ -38,13 +34,7 @@ nlohmann::json panel_room() {
 }
 
 fs::path precompute(const TempDir& dir, const nlohmann::json& scene, const std::string& name) {
-  const fs::path file = dir.write(name + ".json", scene.dump());
-  const fs::path rlt = dir.path() / (name + ".rlt");
-  EXPECT_EQ(
-      run_relight("precompute '" + file.string() + "' -o '" + rlt.string() + "' --no-progress")
-          .exit_code,
-      0);
-  return rlt;
+  return testing::precompute_scene(dir, name, scene.dump());
 }
 
 // The number after `label` on the line of stdout that starts with it.

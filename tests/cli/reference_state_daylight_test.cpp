@@ -67,19 +67,7 @@ std::pair<double, double> agreement(const Readings& r, const std::string& name) 
 }
 
 nlohmann::json south_window_room() {
-  testing::WindowRoom room;
-  room.south_window = testing::kWindow;
-  room.albedo = 0.5;
-  nlohmann::json scene = testing::window_room_json(room);
-  scene["sensors"] = {{{"name", "floor"},
-                       {"grid",
-                        {{"corner", {0.5, 0.001, 0.5}},
-                         {"u", {3, 0, 0}},
-                         {"v", {0, 0, 4}},
-                         {"nu", 3},
-                         {"nv", 4}}}}};
-  scene["precompute"] = {{"max_edge", 0.5}, {"gather_rays", 64}, {"sensor_gather_rays", 256}};
-  return scene;
+  return testing::south_window_room(0.001);
 }
 
 TEST(ReferenceState, ExteriorObjectsAreTracedAsTheStatePlacesThem) {

@@ -26,11 +26,7 @@ TEST(ReportCommand, AWindowRoomWithATaskAndAMonthOfDaylight) {
   room.south_window = testing::kWindow;
   room.albedo = 0.5;
   nlohmann::json scene = testing::window_room_json(room);
-  scene["luminaires"] = {{{"name", "panel <A&B>"},
-                          {"position", {2, 2.9, 3}},
-                          {"aim", {0, -1, 0}},
-                          {"size", {0.6, 0.6, 0}},
-                          {"distribution", {{"type", "isotropic"}, {"candela", 1000}}}}};
+  scene["luminaires"] = {testing::panel_luminaire("panel <A&B>")};
   scene["sensors"] = {
       {{"name", "desk \"north\""},
        {"grid",
@@ -38,12 +34,7 @@ TEST(ReportCommand, AWindowRoomWithATaskAndAMonthOfDaylight) {
        {"task", {{"em", 100000}, {"u0", 0.1}}}}};
   scene["maintenance_factor"] = 0.8;
   scene["precompute"] = {{"max_edge", 0.5}, {"gather_rays", 64}, {"sensor_gather_rays", 256}};
-  const fs::path file = dir.write("room.json", scene.dump());
-  const fs::path rlt = dir.path() / "room.rlt";
-  ASSERT_EQ(
-      run_relight("precompute '" + file.string() + "' -o '" + rlt.string() + "' --no-progress")
-          .exit_code,
-      0);
+  const fs::path rlt = testing::precompute_scene(dir, "room", scene.dump());
   testing::SyntheticPlace place;
   place.first_month = place.last_month = 9;
   const fs::path epw = dir.write("september.epw", testing::synthetic_epw(place));

@@ -35,6 +35,17 @@ inline CommandResult run_relight(const std::string& arguments, const std::string
   return r;
 }
 
+// Writes `scene_json` as NAME.json in `dir` and precomputes it to NAME.rlt (its path).
+inline std::filesystem::path precompute_scene(const TempDir& dir, const std::string& name,
+                                              const std::string& scene_json) {
+  const std::filesystem::path file = dir.write(name + ".json", scene_json);
+  const std::filesystem::path rlt = dir.path() / (name + ".rlt");
+  const CommandResult r =
+      run_relight("precompute '" + file.string() + "' -o '" + rlt.string() + "' --no-progress");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  return rlt;
+}
+
 // Exit 2 and exactly one line on stderr, starting "error: " + prefix.
 inline void expect_input_error(const CommandResult& r, const std::string& prefix) {
   EXPECT_EQ(r.exit_code, 2) << r.err;

@@ -135,4 +135,32 @@ inline nlohmann::json window_room_json(const WindowRoom& room) {
           {"portals", portals}};
 }
 
+// The default room with its south window, grey (albedo 0.5), a 3 × 4 grid "floor" of
+// sensors at `sensor_height` (x 0.5..3.5, z 0.5..4.5), and a small precompute.
+inline nlohmann::json south_window_room(double sensor_height) {
+  WindowRoom room;
+  room.south_window = kWindow;
+  room.albedo = 0.5;
+  nlohmann::json scene = window_room_json(room);
+  scene["sensors"] = {{{"name", "floor"},
+                       {"grid",
+                        {{"corner", {0.5, sensor_height, 0.5}},
+                         {"u", {3, 0, 0}},
+                         {"v", {0, 0, 4}},
+                         {"nu", 3},
+                         {"nv", 4}}}}};
+  scene["precompute"] = {{"max_edge", 0.5}, {"gather_rays", 64}, {"sensor_gather_rays", 256}};
+  return scene;
+}
+
+// A 0.6 × 0.6 m isotropic 1000 cd luminaire at (2, 2.9, 3) aimed down (its luminous area
+// from "size"), for glare and task checks with closed forms.
+inline nlohmann::json panel_luminaire(const std::string& name) {
+  return {{"name", name},
+          {"position", {2, 2.9, 3}},
+          {"aim", {0, -1, 0}},
+          {"size", {0.6, 0.6, 0}},
+          {"distribution", {{"type", "isotropic"}, {"candela", 1000}}}};
+}
+
 }  // namespace relight::testing
