@@ -39,7 +39,7 @@ double guth_position_index(Vec3 view, Vec3 up, Vec3 source) {
   const double forward = dot(source, view);
   const double sigma = degrees(std::acos(std::clamp(forward, -1.0, 1.0)));
   const Vec3 side = source - view * forward;  // the source's offset from the line of sight
-  const double right = length(cross(view, up) * dot(side, cross(view, up)));
+  const double right = std::abs(dot(side, cross(view, up)));
   const double above = std::abs(dot(side, up));  // below: mirrored (glare.h)
   const double tau = degrees(std::atan2(right, above));
   const double ln_p = (35.2 - 0.31889 * tau - 1.22 * std::exp(-2 * tau / 9)) * 1e-3 * sigma +

@@ -2,6 +2,7 @@
 #include "runtime/annual_daylight.h"
 
 #include <chrono>
+#include <optional>
 
 #include "light/environment.h"
 #include "math/rgb.h"
@@ -127,12 +128,16 @@ AnnualValues annual_sensor_values(RelitScene& relit, const LightingState& base,
     }
     const std::vector<Rgb> e = relit.sensor_irradiance();
     const Relighter& relighter = relit.relighter();
+    // ASE's direct sunlight: the suns traced past the room and the movable objects as placed.
+    std::optional<SunGeometry> geometry;
+    if (!relighter.suns().empty()) {
+      geometry.emplace(relighter.sun_geometry());
+      if (relighter.objects() != nullptr) geometry->occluders = relighter.objects()->occluders();
+    }
     for (std::size_t c = 0; c < sensors.size(); ++c) {
       out.lux.push_back(static_cast<float>(luminance(e[sensors[c]])));
       const Rgb sun =
-          relighter.suns().empty()
-              ? Rgb{}
-              : sun_irradiance(relighter.sun_geometry(), relighter.suns(), points[c], normals[c]);
+          geometry ? sun_irradiance(*geometry, relighter.suns(), points[c], normals[c]) : Rgb{};
       out.direct_sun_lux.push_back(static_cast<float>(luminance(sun)));
     }
     if (on_hour) on_hour();
