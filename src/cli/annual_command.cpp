@@ -107,10 +107,8 @@ int run_annual(const AnnualArgs& args) {
                    args.occupied + "\"");
   }
   const WeatherFile weather = read_epw(args.weather);
-  RelighterSettings settings;
-  settings.warm_sun_bounce = false;  // every hour as `relight probe` lights it
-  RelitScene relit(args.rlt, std::nullopt, settings);
-  const Scene& scene = relit.scene();
+  const std::unique_ptr<RelitScene> relit = open_for_annual(args.rlt);
+  const Scene& scene = relit->scene();
   if (scene.portals.empty())
     fail_input(args.rlt, "the scene has no windows (portals) for daylight");
   if (scene.sensor_count() == 0) fail_input(args.rlt, "the scene has no sensors");
@@ -132,20 +130,21 @@ int run_annual(const AnnualArgs& args) {
 
   Progress progress("annual", hours.hours.size());
   const AnnualValues values =
-      annual_sensor_values(relit, base, hours.hours, columns, [&] { progress.advance(); });
+      annual_sensor_values(*relit, base, hours.hours, columns, [&] { progress.advance(); });
   progress.finish();
   const std::vector<SensorDaylight> daylight =
       sensor_daylight(values.lux, values.direct_sun_lux, values.sensors);
-  std::size_t column = 0;
-  for (const ChosenSet& c : sets) {
-    const std::size_t n = c.set->points.size();
-    const SetDaylight d = set_daylight(values.lux, values.sensors, daylight, column, n);
+  std::vector<std::size_t> counts;
+  for (const ChosenSet& c : sets) counts.push_back(c.set->points.size());
+  const std::vector<SetDaylight> per_set =
+      sets_daylight(values.lux, values.sensors, daylight, counts);
+  for (std::size_t k = 0; k < sets.size(); ++k) {
+    const SetDaylight& d = per_set[k];
     std::printf(
         "%s: %zu points  sDA300/50%% %.1f%%  ASE1000,250h %.1f%%  mean DA300 %.1f%%  "
         "EN 17037 daylight provision: %s\n",
-        c.set->name.c_str(), n, 100 * d.sda300, 100 * d.ase, 100 * d.mean_da300,
+        sets[k].set->name.c_str(), counts[k], 100 * d.sda300, 100 * d.ase, 100 * d.mean_da300,
         daylight_provision_name(d.en17037));
-    column += n;
   }
   std::printf("annual: %zu hours x %zu sensors in %.2f s (shells %.2f s, sums and suns %.2f s)\n",
               hours.hours.size(), values.sensors, values.total_seconds, values.shell_seconds,

@@ -27,17 +27,15 @@ std::optional<std::filesystem::path> state_path(const std::string& state) {
 
 AnnualReport year_of_daylight(const ReportArgs& args) {
   const WeatherFile weather = read_epw(args.weather);
-  RelighterSettings settings;
-  settings.warm_sun_bounce = false;  // every hour as `relight probe` lights it
-  RelitScene relit(args.rlt, std::nullopt, settings);
-  const Scene& scene = relit.scene();
+  const std::unique_ptr<RelitScene> relit = open_for_annual(args.rlt);
+  const Scene& scene = relit->scene();
   const AnnualHours hours = annual_hours(weather, OccupiedPeriod{});
   if (hours.hours.empty()) fail_input(args.weather, "no occupied hour has the sun up");
   std::vector<std::size_t> all(scene.sensor_count());
   for (std::size_t k = 0; k < all.size(); ++k) all[k] = k;
   Progress progress("annual", hours.hours.size());
   const AnnualValues values =
-      annual_sensor_values(relit, annual_base_state(scene, state_path(args.state)), hours.hours,
+      annual_sensor_values(*relit, annual_base_state(scene, state_path(args.state)), hours.hours,
                            all, [&] { progress.advance(); });
   progress.finish();
   AnnualReport out;
@@ -50,12 +48,9 @@ AnnualReport year_of_daylight(const ReportArgs& args) {
                 hours.hours.size());
   out.weather = heading;
   out.per_sensor = sensor_daylight(values.lux, values.direct_sun_lux, values.sensors);
-  std::size_t first = 0;
-  for (const SensorSet& set : scene.sensors) {
-    out.per_set.push_back(
-        set_daylight(values.lux, values.sensors, out.per_sensor, first, set.points.size()));
-    first += set.points.size();
-  }
+  std::vector<std::size_t> counts;
+  for (const SensorSet& set : scene.sensors) counts.push_back(set.points.size());
+  out.per_set = sets_daylight(values.lux, values.sensors, out.per_sensor, counts);
   return out;
 }
 

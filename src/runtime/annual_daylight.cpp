@@ -57,7 +57,7 @@ EnvironmentSpec record_sky(const WeatherLocation& location, const WeatherRecord&
   sky.sun.longitude_deg = location.longitude_deg;
   sky.sun.utc_offset_hours = location.time_zone_hours;
   sky.sun.local_time = evaluation_time(record);
-  sky.where = "weather record";
+  sky.where = "weather record at line " + std::to_string(record.line);
   return sky;
 }
 
@@ -68,10 +68,15 @@ AnnualHours annual_hours(const WeatherFile& weather, const OccupiedPeriod& perio
     ++out.occupied;
     EnvironmentSpec sky = record_sky(weather.location, r);
     if (sun_direction(sky.sun).y <= 0) continue;
-    sky.where = "weather record at line " + std::to_string(r.line);
     out.hours.push_back({r, std::move(sky)});
   }
   return out;
+}
+
+std::unique_ptr<RelitScene> open_for_annual(const std::filesystem::path& rlt) {
+  RelighterSettings settings;
+  settings.warm_sun_bounce = false;
+  return std::make_unique<RelitScene>(rlt, std::nullopt, settings);
 }
 
 LightingState annual_base_state(const Scene& scene,
@@ -102,18 +107,16 @@ AnnualValues annual_sensor_values(RelitScene& relit, const LightingState& base,
                                   const std::function<void()>& on_hour) {
   const auto start = std::chrono::steady_clock::now();
   const Scene& scene = relit.scene();
-  // Each chosen sensor's point and normal.
-  std::vector<Vec3> points, normals;
-  std::vector<std::size_t> set_of;
-  for (std::size_t s = 0, k = 0; s < scene.sensors.size(); ++s) {
-    for (std::size_t i = 0; i < scene.sensors[s].points.size(); ++i, ++k) set_of.push_back(s);
+  // Every sensor point's position and normal, scene order; the chosen ones are read by index.
+  std::vector<Vec3> all_points, all_normals;
+  for (const SensorSet& set : scene.sensors) {
+    all_points.insert(all_points.end(), set.points.begin(), set.points.end());
+    all_normals.insert(all_normals.end(), set.points.size(), set.normal);
   }
+  std::vector<Vec3> points, normals;
   for (const std::size_t k : sensors) {
-    const SensorSet& set = scene.sensors[set_of.at(k)];
-    std::size_t first = 0;
-    for (std::size_t s = 0; s < set_of[k]; ++s) first += scene.sensors[s].points.size();
-    points.push_back(set.points[k - first]);
-    normals.push_back(set.normal);
+    points.push_back(all_points.at(k));
+    normals.push_back(all_normals.at(k));
   }
   AnnualValues out;
   out.sensors = sensors.size();

@@ -16,6 +16,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string_view>
@@ -36,7 +37,8 @@ struct OccupiedPeriod {
 // "HH:MM-HH:MM" (end up to 24:00, after start); nullopt otherwise.
 std::optional<OccupiedPeriod> parse_occupied_period(std::string_view text);
 
-// The Perez sky of a record at its evaluation time (h − 30 min), ground albedo 0.2.
+// The Perez sky of a record at its evaluation time (h − 30 min), ground albedo 0.2; messages
+// name the record's line.
 EnvironmentSpec record_sky(const WeatherLocation& location, const WeatherRecord& record);
 
 struct AnnualHour {
@@ -50,6 +52,10 @@ struct AnnualHours {
   std::size_t occupied = 0;
 };
 AnnualHours annual_hours(const WeatherFile& weather, const OccupiedPeriod& period);
+
+// `rlt` opened for a year of hours: every sun's bounce solved from nothing
+// (RelighterSettings::warm_sun_bounce), so that each hour equals `relight probe` with its sky.
+std::unique_ptr<RelitScene> open_for_annual(const std::filesystem::path& rlt);
 
 // The state the year starts from (see above); `document` is the state file's, if any.
 LightingState annual_base_state(const Scene& scene,

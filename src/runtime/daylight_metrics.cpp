@@ -103,4 +103,16 @@ SetDaylight set_daylight(std::span<const float> lux, std::size_t sensors,
   return out;
 }
 
+std::vector<SetDaylight> sets_daylight(std::span<const float> lux, std::size_t sensors,
+                                       std::span<const SensorDaylight> per_sensor,
+                                       std::span<const std::size_t> counts) {
+  std::vector<SetDaylight> out;
+  std::size_t first = 0;
+  for (const std::size_t count : counts) {
+    out.push_back(set_daylight(lux, sensors, per_sensor, first, count));
+    first += count;
+  }
+  return out;
+}
+
 }  // namespace relight

@@ -49,5 +49,9 @@ struct SetDaylight {
 SetDaylight set_daylight(std::span<const float> lux, std::size_t sensors,
                          std::span<const SensorDaylight> per_sensor, std::size_t first,
                          std::size_t count);
+// Every set of consecutive columns, `counts[k]` points for set k.
+std::vector<SetDaylight> sets_daylight(std::span<const float> lux, std::size_t sensors,
+                                       std::span<const SensorDaylight> per_sensor,
+                                       std::span<const std::size_t> counts);
 
 }  // namespace relight
