@@ -52,8 +52,12 @@ std::vector<ChosenSet> choose_sets(const Scene& scene, const std::string& names)
         known += c.set->name;
         known += '"';
       }
-      fail_input("--sensors",
-                 "the scene has no sensor set \"" + name + "\" (it has " + known + ")");
+      std::string reason = "the scene has no sensor set \"";
+      reason += name;
+      reason += "\" (it has ";
+      reason += known;
+      reason += ')';
+      fail_input("--sensors", reason);
     }
     chosen.push_back(*it);
   }
@@ -135,6 +139,7 @@ int run_annual(const AnnualArgs& args) {
   const std::vector<SensorDaylight> daylight =
       sensor_daylight(values.lux, values.direct_sun_lux, values.sensors);
   std::vector<std::size_t> counts;
+  counts.reserve(sets.size());
   for (const ChosenSet& c : sets) counts.push_back(c.set->points.size());
   const std::vector<SetDaylight> per_set =
       sets_daylight(values.lux, values.sensors, daylight, counts);
