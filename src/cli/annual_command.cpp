@@ -151,9 +151,13 @@ int run_annual(const AnnualArgs& args) {
         sets[k].set->name.c_str(), counts[k], 100 * d.sda300, 100 * d.ase, 100 * d.mean_da300,
         daylight_provision_name(d.en17037));
   }
-  std::printf("annual: %zu hours x %zu sensors in %.2f s (shells %.2f s, sums and suns %.2f s)\n",
-              hours.hours.size(), values.sensors, values.total_seconds, values.shell_seconds,
-              values.total_seconds - values.shell_seconds);
+  const RuntimeScene* runtime = relit->relighter().runtime_scene();
+  const double importance = runtime != nullptr ? runtime->sensor_importance_seconds() : 0;
+  std::printf(
+      "annual: %zu hours x %zu sensors in %.2f s (the sensors' importance %.2f s, once; "
+      "shells %.2f s; sums and suns %.2f s)\n",
+      hours.hours.size(), values.sensors, importance + values.total_seconds, importance,
+      values.shell_seconds, values.total_seconds - values.shell_seconds);
   if (!args.output.empty()) {
     write_text_atomically(args.output, results_csv(sets, daylight));
     std::printf("wrote %s\n", args.output.c_str());

@@ -182,4 +182,22 @@ double RuntimeScene::bounce(std::span<const float> direct, std::span<float> indi
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+void RuntimeScene::solve_sensor_importance() {
+  if (!gather_) throw std::invalid_argument("RuntimeScene: no gather operator stored");
+  if (!importance_) importance_ = sensor_importance(*gather_, receivers_, bounce_);
+}
+
+double RuntimeScene::bounce_to_sensors(std::span<const float> direct,
+                                       std::span<float> indirect) const {
+  if (!importance_) throw std::logic_error("RuntimeScene: the sensors' importance is not solved");
+  if (indirect.size() != 3 * receivers()) {
+    throw std::invalid_argument("RuntimeScene::bounce_to_sensors: one RGB per receiver");
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const std::size_t first = 3 * vertex_count_;
+  std::fill(indirect.begin(), indirect.begin() + static_cast<std::ptrdiff_t>(first), 0.0f);
+  sensor_indirect(*importance_, direct, indirect.subspan(first));
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 }  // namespace relight

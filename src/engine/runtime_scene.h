@@ -30,6 +30,7 @@
 #include "engine/bounce_solver.h"
 #include "engine/gather_operator.h"
 #include "engine/receivers.h"
+#include "engine/sensor_importance.h"
 #include "math/rgb.h"
 #include "math/vec3.h"
 #include "trace/ray_tracer.h"
@@ -120,6 +121,16 @@ class RuntimeScene {
   // Returns the wall time, seconds. Needs can_bounce().
   double bounce(std::span<const float> direct, std::span<float> indirect, bool warm) const;
 
+  // Solves every sensor's importance (engine/sensor_importance.h) once, for
+  // bounce_to_sensors: seconds on a room (the demo room's 414 sensors). Needs can_bounce().
+  void solve_sensor_importance();
+  bool has_sensor_importance() const { return importance_.has_value(); }
+  // Wall time of its solve, seconds (0 before it).
+  double sensor_importance_seconds() const { return importance_ ? importance_->seconds : 0; }
+  // bounce() at the sensor rows alone, through their importance: the vertex rows of
+  // `indirect` are set to 0. Needs solve_sensor_importance(). Returns the wall time, seconds.
+  double bounce_to_sensors(std::span<const float> direct, std::span<float> indirect) const;
+
  private:
   std::size_t vertex_count_ = 0;
   std::vector<Vec3> ray_points_;  // per receiver
@@ -129,6 +140,7 @@ class RuntimeScene {
   RayTracer occluders_, glass_;
   std::vector<BoundingSphere> glass_bounds_;  // per portal
   std::optional<GatherOperator> gather_;
+  std::optional<SensorImportance> importance_;
   Receivers receivers_;  // positions, normals, albedo per receiver (0 at sensors)
   BounceSettings bounce_;
   // Vertex → the (triangle, corner) pairs around it, compressed: [first[v], first[v + 1]).

@@ -76,6 +76,7 @@ AnnualHours annual_hours(const WeatherFile& weather, const OccupiedPeriod& perio
 std::unique_ptr<RelitScene> open_for_annual(const std::filesystem::path& rlt) {
   RelighterSettings settings;
   settings.warm_sun_bounce = false;
+  settings.sensors_only = true;
   return std::make_unique<RelitScene>(rlt, std::nullopt, settings);
 }
 

@@ -22,12 +22,28 @@ BounceSettings bounce_settings(const Scene& scene) {
   return bounce;
 }
 
-std::optional<RuntimeScene> make_runtime_scene(const TransferView& transfer, const Scene& scene) {
+// Whether relight() may compute the sensor rows alone (RelighterSettings::sensors_only): the
+// suns' bounce needs the gather operator, and movable objects and glossy surfaces light the
+// sensors through the whole room's light.
+bool can_read_sensors_only(const TransferView& transfer, const Scene& scene) {
+  return !transfer.scene.gather_rows.empty() && scene.objects.empty() &&
+         glossy_materials(scene.materials).empty();
+}
+
+std::optional<RuntimeScene> make_runtime_scene(const TransferView& transfer, const Scene& scene,
+                                               bool sensors_only) {
   if (scene.portals.empty() && scene.emitters.empty() && scene.objects.empty() &&
       (glossy_materials(scene.materials).empty() || transfer.scene.gather_rows.empty())) {
     return std::nullopt;
   }
-  return std::optional<RuntimeScene>(std::in_place, transfer.scene, bounce_settings(scene));
+  std::optional<RuntimeScene> runtime(std::in_place, transfer.scene, bounce_settings(scene));
+  if (sensors_only && !scene.portals.empty()) runtime->solve_sensor_importance();
+  return runtime;
+}
+
+SunBounce sun_bounce(const RelighterSettings& settings, bool sensors_only) {
+  if (sensors_only) return SunBounce::kSensors;
+  return settings.warm_sun_bounce ? SunBounce::kWarm : SunBounce::kCold;
 }
 
 }  // namespace
@@ -35,15 +51,19 @@ std::optional<RuntimeScene> make_runtime_scene(const TransferView& transfer, con
 Relighter::Relighter(TransferView transfer, const Scene& scene, RelighterSettings settings)
     : transfer_(std::move(transfer)),
       luminaire_specs_(scene.luminaires),
-      runtime_(make_runtime_scene(transfer_, scene)),
+      runtime_(make_runtime_scene(
+          transfer_, scene, settings.sensors_only && can_read_sensors_only(transfer_, scene))),
       luminaires_(
           {transfer_.luminaires, transfer_.receivers, transfer_.sh_order, transfer_.direct_sh_mode},
           scene, settings.window),
       portals_({transfer_.portals, transfer_.receivers, transfer_.portal_sh_order},
-               runtime_ ? &*runtime_ : nullptr, scene, settings.warm_sun_bounce),
+               runtime_ ? &*runtime_ : nullptr, scene,
+               sun_bounce(settings, runtime_ && runtime_->has_sensor_importance())),
       state_(default_lighting_state(scene)),
       bounce_(bounce_settings(scene)),
-      vertex_albedo_(transfer_.scene.vertex_albedo) {
+      vertex_albedo_(transfer_.scene.vertex_albedo),
+      warm_sun_bounce_(settings.warm_sun_bounce),
+      sensors_only_(settings.sensors_only && can_read_sensors_only(transfer_, scene)) {
   make_glossy_bounce(scene.materials, transfer_.scene.vertex_albedo);
   terms_.push_back({&luminaires_, {}});
   terms_.push_back({&portals_, {}});
@@ -123,6 +143,12 @@ void Relighter::set_materials(const std::vector<Material>& materials) {
     throw std::invalid_argument("Relighter: the state's materials are not the scene's");
   }
   if (materials == state_.materials) return;
+  // An edit lights the sensors through the whole room's light: every row from now on.
+  if (sensors_only_) {
+    sensors_only_ = false;
+    portals_.set_sun_bounce(warm_sun_bounce_ ? SunBounce::kWarm : SunBounce::kCold);
+    for (Term& term : terms_) term.sums[0].valid = term.sums[1].valid = false;
+  }
   const std::vector<std::uint32_t>& material_of = transfer_.scene.vertex_material;
   // Files written before live material edits: the state asks what the file cannot do.
   if (material_of.empty()) {
@@ -250,29 +276,33 @@ bool Relighter::sum_terms(std::size_t slot, std::span<float> out) {
     redo[t] = !terms_[t].sums[slot].valid;
     any = any || redo[t];
   }
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, block_count(n)), [&](const auto& blocks) {
-    for (std::size_t b = blocks.begin(); b != blocks.end(); ++b) {
-      const std::size_t base = b * kBlock;
-      const std::size_t count = std::min(kBlock, n - base);
-      for (std::size_t t = 0; t < terms_.size(); ++t) {
-        if (!redo[t]) continue;
-        alignas(64) float acc[3][kBlock] = {};
-        terms_[t].source->add_block(b, slot == 1, acc);
-        std::vector<float>& sum = terms_[t].sums[slot].values;
-        for (std::size_t i = 0; i < count; ++i) {
-          for (std::size_t c = 0; c < 3; ++c) sum[3 * (base + i) + c] = acc[c][i];
-        }
-      }
-      // out = Σ over terms of their sums, one streaming pass per term over the block.
-      const std::size_t lo = 3 * base, hi = 3 * (base + count);
-      const float* first = terms_.front().sums[slot].values.data();
-      for (std::size_t i = lo; i < hi; ++i) out[i] = first[i];
-      for (std::size_t t = 1; t < terms_.size(); ++t) {
-        const float* v = terms_[t].sums[slot].values.data();
-        for (std::size_t i = lo; i < hi; ++i) out[i] += v[i];
-      }
-    }
-  });
+  // Only the sensors read: the blocks from the one holding the first sensor row.
+  const std::size_t first_block = sensors_only_ ? transfer_.scene.vertex_count / kBlock : 0;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(first_block, block_count(n)),
+                    [&](const auto& blocks) {
+                      for (std::size_t b = blocks.begin(); b != blocks.end(); ++b) {
+                        const std::size_t base = b * kBlock;
+                        const std::size_t count = std::min(kBlock, n - base);
+                        for (std::size_t t = 0; t < terms_.size(); ++t) {
+                          if (!redo[t]) continue;
+                          alignas(64) float acc[3][kBlock] = {};
+                          terms_[t].source->add_block(b, slot == 1, acc);
+                          std::vector<float>& sum = terms_[t].sums[slot].values;
+                          for (std::size_t i = 0; i < count; ++i) {
+                            for (std::size_t c = 0; c < 3; ++c) sum[3 * (base + i) + c] = acc[c][i];
+                          }
+                        }
+                        // out = Σ over terms of their sums, one streaming pass per term over the
+                        // block.
+                        const std::size_t lo = 3 * base, hi = 3 * (base + count);
+                        const float* first = terms_.front().sums[slot].values.data();
+                        for (std::size_t i = lo; i < hi; ++i) out[i] = first[i];
+                        for (std::size_t t = 1; t < terms_.size(); ++t) {
+                          const float* v = terms_[t].sums[slot].values.data();
+                          for (std::size_t i = lo; i < hi; ++i) out[i] += v[i];
+                        }
+                      }
+                    });
   std::size_t bytes = 3 * n * sizeof(float);  // the output written
   for (std::size_t t = 0; t < terms_.size(); ++t) {
     terms_[t].sums[slot].valid = true;

@@ -32,6 +32,14 @@ struct RelighterSettings {
   // A moved sun's bounce starts from the last one (PortalSetLighting): false for a sequence
   // of unrelated skies whose every frame must equal a fresh process's (`relight annual`).
   bool warm_sun_bounce = true;
+  // Only the sensors are read (`relight annual`): relight() sums the blocks that hold sensor
+  // rows (the other vertex rows are left as they were) and the suns reach the sensors through
+  // their importance (engine/sensor_importance.h), solved once when the Relighter is made —
+  // seconds — instead of a pass over the gather operator per bounce for every sun. Ignored
+  // (every row computed, the suns bounced from nothing) in a scene with movable objects or
+  // glossy materials, whose light at the sensors depends on the whole room's, and from the
+  // first state that edits materials on.
+  bool sensors_only = false;
 };
 
 class Relighter {
@@ -63,6 +71,9 @@ class Relighter {
   const PortalSetLighting& portals() const { return portals_; }
   // The light a material edit bounces: −1 converged (the default), n ≥ 0 that many bounces.
   void set_material_bounces(int bounces) { material_bounces_ = bounces; }
+  // Whether relight() computes only the sensor rows (RelighterSettings::sensors_only, where
+  // the scene and the states so far allow it).
+  bool sensors_only() const { return sensors_only_; }
   // Whether the last relight() gave the edited materials' converged light (true without edits).
   bool material_edit_final() const { return edit_final_; }
   // What each vertex reflects under the state's materials, 3 per vertex (ρE/π shading).
@@ -147,7 +158,9 @@ class Relighter {
   bool edit_dirty_ = false, edit_final_ = true, edit_solved_ = false;
   bool glossy_dirty_ = false;  // the glossy first bounce was made again since the last relight
   int material_bounces_ = -1;
-  bool objects_dirty_ = true;  // placements or E0 changed since the objects' last update
+  bool objects_dirty_ = true;    // placements or E0 changed since the objects' last update
+  bool warm_sun_bounce_ = true;  // RelighterSettings::warm_sun_bounce
+  bool sensors_only_ = false;    // RelighterSettings::sensors_only, as the scene allows it
   std::size_t last_frame_bytes_ = 0;
 };
 

@@ -114,8 +114,13 @@ void update_portal_lighting(PortalLighting& lighting, std::uint32_t index,
 }
 
 PortalSetLighting::PortalSetLighting(PortalTransferSet transfer, const RuntimeScene* runtime,
-                                     const Scene& scene, bool warm_sun_bounce)
-    : transfer_(transfer), runtime_(runtime), scene_(&scene), warm_sun_bounce_(warm_sun_bounce) {
+                                     const Scene& scene, SunBounce sun_bounce)
+    : transfer_(transfer), runtime_(runtime), scene_(&scene), sun_bounce_(sun_bounce) {
+  if (sun_bounce_ == SunBounce::kSensors && runtime_ != nullptr &&
+      !runtime_->has_sensor_importance()) {
+    throw std::invalid_argument(
+        "PortalSetLighting: bouncing to the sensors needs their importance");
+  }
   if (transfer_.portals.size() != scene.portals.size() ||
       (!scene.portals.empty() && (!runtime || runtime->receivers() != transfer_.receivers))) {
     throw std::invalid_argument("PortalSetLighting: transfer and scene disagree on portals");
@@ -158,9 +163,12 @@ void PortalSetLighting::update_suns() {
   }
   const std::size_t n = runtime_->receivers();
   const SunGeometry geometry = sun_geometry();
-  // The direct sun at every receiver where its shadow rays start.
-  sun_direct_.resize(3 * n);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const auto& range) {
+  // The direct sun at every receiver (at the sensors alone when only they are read) where its
+  // shadow rays start.
+  const bool sensors_only = sun_bounce_ == SunBounce::kSensors;
+  const std::size_t first = sensors_only ? runtime_->vertex_count() : 0;
+  sun_direct_.assign(3 * n, 0.0f);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(first, n, 256), [&](const auto& range) {
     for (std::size_t r = range.begin(); r != range.end(); ++r) {
       const Rgb e = sun_irradiance(geometry, suns_, runtime_->ray_point(r), runtime_->normal(r));
       sun_direct_[3 * r] = static_cast<float>(e.r);
@@ -173,7 +181,7 @@ void PortalSetLighting::update_suns() {
   // disc's centre or not: a patch edge crossing a triangle is placed to a quarter of its
   // width or 5 cm), over the triangles the sun may reach, bounced through the stored gather
   // operator; a sun that moved a little starts from the last solution (bounce_solver.h).
-  const bool warm = warm_sun_bounce_ && sun_indirect_.size() == 3 * n;
+  const bool warm = sun_bounce_ == SunBounce::kWarm && sun_indirect_.size() == 3 * n;
   if (!warm) sun_indirect_.assign(3 * n, 0.0f);
   if (runtime_->can_bounce()) {
     std::vector<float> reflected(3 * n);
@@ -184,10 +192,24 @@ void PortalSetLighting::update_suns() {
           return sun_may_light_triangle(geometry, suns_, a, b, c, normal);
         },
         0.05);
-    sun_bounce_seconds_ = runtime_->bounce(reflected, sun_indirect_, warm);
+    sun_bounce_seconds_ = sensors_only ? runtime_->bounce_to_sensors(reflected, sun_indirect_)
+                                       : runtime_->bounce(reflected, sun_indirect_, warm);
     respond_glossy(geometry, reflected);
   }
   sun_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void PortalSetLighting::set_sun_bounce(SunBounce sun_bounce) {
+  if (sun_bounce == sun_bounce_) return;
+  if (sun_bounce == SunBounce::kSensors && runtime_ != nullptr &&
+      !runtime_->has_sensor_importance()) {
+    throw std::invalid_argument(
+        "PortalSetLighting: bouncing to the sensors needs their importance");
+  }
+  sun_bounce_ = sun_bounce;
+  sun_keys_.clear();
+  sun_indirect_.clear();
+  update_suns();
 }
 
 void PortalSetLighting::set_glossy(const GlossyFirstBounce* glossy) {

@@ -63,16 +63,28 @@ struct PortalTransferSet {
 // shell's SH weights on the stored indirect responses; plus the exactly traced suns at every
 // receiver and their light bounced through the scene. A portal's shell is rebuilt only when
 // its state changes, the suns only when one of them changes.
+// How the suns' light is bounced when they change.
+enum class SunBounce {
+  // From the last solution, to the looser kWarmBounceTolerance: a sun moved a minute takes a
+  // bounce or two (the studio's time of day).
+  kWarm,
+  // From nothing, to the scene's tolerance, as in a fresh process.
+  kCold,
+  // At the sensor rows alone, through the sensors' importance (the runtime scene must have
+  // solved it): the suns' direct light and its bounce are 0 at the vertices. For a caller that
+  // reads only the sensors under thousands of suns (`relight annual`).
+  kSensors,
+};
+
 class PortalSetLighting : public SourceTerm {
  public:
   // Lit as the scene sets every portal. `runtime` traces the suns and bounces their light
   // (without a stored gather operator the suns' interreflection is left out); it may be null
-  // only for a scene without portals. With `warm_sun_bounce`, a sun that moved starts its
-  // bounce from the last solution and stops at the looser kWarmBounceTolerance (dragging the
-  // time of day); without, every sun is solved from nothing, as in a fresh process (`relight
-  // annual`, whose hours agree with `relight probe` for each of them).
+  // only for a scene without portals.
   PortalSetLighting(PortalTransferSet transfer, const RuntimeScene* runtime, const Scene& scene,
-                    bool warm_sun_bounce = true);
+                    SunBounce sun_bounce = SunBounce::kWarm);
+  // Changes how the suns bounce, and lights them again that way.
+  void set_sun_bounce(SunBounce sun_bounce);
 
   // Applies the portals' states (scene order). Returns whether the term's sum changed.
   bool set_state(std::span<const PortalState> states);
@@ -116,7 +128,7 @@ class PortalSetLighting : public SourceTerm {
     bool operator==(const SunKey&) const = default;
   };
   std::vector<SunKey> sun_keys_;
-  bool warm_sun_bounce_ = true;
+  SunBounce sun_bounce_ = SunBounce::kWarm;
   std::vector<float> sun_direct_, sun_indirect_;  // 3 per receiver (empty: no sun)
   std::vector<float> sun_glossy_;                 // Γ of the suns, 3 per receiver (empty: none)
   const GlossyFirstBounce* glossy_ = nullptr;
