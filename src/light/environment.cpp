@@ -108,11 +108,11 @@ double integrate_rect(int face, double u0, double u1, double v0, double v1, int 
 
 std::vector<Rgb> sky_cubemap(const SkyModel& sky, int n) {
   const int sub = std::max(4, (64 + n - 1) / n);
-  const std::vector<double> omega = cubemap_solid_angles(n);
+  const std::vector<double>& omega = cubemap_solid_angles(n);
   std::vector<Rgb> out(cubemap_texel_count(n));
   auto f = [&](Vec3 d) { return sky_diffuse_luminance(sky, d); };
   const int m = n * sub;
-  const std::vector<double> sub_omega = cubemap_solid_angles(m);
+  const std::vector<double>& sub_omega = cubemap_solid_angles(m);
   // Σ f·Ω over the sub×sub sub-cells of texel (i, j) of `face`, with the tabulated angles.
   const auto integrate_texel = [&](int face, int i, int j) {
     double sum = 0;

@@ -256,7 +256,7 @@ std::vector<Rgb> equirect_map_to_cubemap(const EquirectMap& map, double rotate_d
   }
   const int n = face_size;
   const Raster r = make_raster(map.width, map.height, rotate_deg, scale, &map.texels);
-  const std::vector<double> omega = cubemap_solid_angles(n);
+  const std::vector<double>& omega = cubemap_solid_angles(n);
   std::vector<Rgb> out(cubemap_texel_count(n));
   std::vector<double> scratch;
   for (int face = 0; face < 6; ++face) {

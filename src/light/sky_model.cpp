@@ -39,18 +39,24 @@ void check_type(int sky_type) {
   }
 }
 
-// Angle between two unit vectors, accurate also for nearly (anti)parallel ones.
-double angle_between(Vec3 a, Vec3 b) {
-  return std::atan2(length(cross(a, b)), dot(a, b));
+// The angle between a sky element and the sun, and its cosine, from their unit directions.
+// acos of the dot product: near the sun, where it is least accurate, a rounding of 1e-16 in
+// the cosine moves the angle by 1.5e-8 rad, far below any feature of the sky (atan2 of the
+// cross and dot products, accurate there too, cost the sky's cubemap a third of its time).
+struct SunAngle {
+  double chi, cos_chi;
+};
+SunAngle sun_angle(Vec3 dir, Vec3 sun) {
+  const double c = std::clamp(dot(dir, sun), -1.0, 1.0);
+  return {std::acos(c), c};
 }
 
 // The Perez formula's gradation and indicatrix (sky_model.h, SkyFormula).
 double perez_gradation(const CieSkyParameters& p, double cos_zenith) {
   return 1.0 + p.a * std::exp(p.b / std::max(cos_zenith, kPerezMinCosZenith));
 }
-double perez_indicatrix(const CieSkyParameters& p, double gamma) {
-  const double c = std::cos(gamma);
-  return 1.0 + p.c * std::exp(p.d * gamma) + p.e * c * c;
+double perez_indicatrix(const CieSkyParameters& p, SunAngle g) {
+  return 1.0 + p.c * std::exp(p.d * g.chi) + p.e * g.cos_chi * g.cos_chi;
 }
 
 // The dome's formula: which one, and its parameters.
@@ -60,22 +66,29 @@ struct Dome {
   CieSkyParameters p;
 };
 
-double relative(const Dome& dome, double norm, Vec3 dir, Vec3 sun) {
-  const double cos_z = std::max(dir.y, 0.0);
+// The dome's gradation φ(Z) (1 for the traditional overcast sky, whose formula is not a
+// product) and the relative luminance given it.
+double gradation(const Dome& dome, double cos_z) {
+  if (dome.formula == SkyFormula::kPerez) return perez_gradation(dome.p, cos_z);
+  return dome.sky_type == 0 ? 1.0 : cie_gradation(dome.p, cos_z);
+}
+double relative(const Dome& dome, double norm, double gradation, Vec3 dir, Vec3 sun) {
   if (dome.formula == SkyFormula::kPerez) {
-    const double l =
-        perez_indicatrix(dome.p, angle_between(dir, sun)) * perez_gradation(dome.p, cos_z);
-    return std::max(l, 0.0) * norm;
+    return std::max(perez_indicatrix(dome.p, sun_angle(dir, sun)) * gradation, 0.0) * norm;
   }
-  if (dome.sky_type == 0) return (1.0 + 2.0 * cos_z) / 3.0;
-  return cie_indicatrix(dome.p, angle_between(dir, sun)) * cie_gradation(dome.p, cos_z) * norm;
+  if (dome.sky_type == 0) return (1.0 + 2.0 * std::max(dir.y, 0.0)) / 3.0;
+  return cie_indicatrix(dome.p, sun_angle(dir, sun).chi) * gradation * norm;
+}
+double relative(const Dome& dome, double norm, Vec3 dir, Vec3 sun) {
+  return relative(dome, norm, gradation(dome, std::max(dir.y, 0.0)), dir, sun);
 }
 
 // 1 / (f(Zs)·φ(0)): the relative luminance at the zenith made 1.
 double normaliser(const Dome& dome, Vec3 sun) {
   const double zs = std::acos(std::clamp(sun.y, -1.0, 1.0));
   if (dome.formula == SkyFormula::kPerez) {
-    const double zenith = perez_indicatrix(dome.p, zs) * perez_gradation(dome.p, 1.0);
+    const double zenith =
+        perez_indicatrix(dome.p, {zs, std::cos(zs)}) * perez_gradation(dome.p, 1.0);
     return zenith > kPerezMinZenith ? 1.0 / zenith : 1.0;
   }
   if (dome.sky_type == 0) return 1.0;
@@ -102,10 +115,18 @@ constexpr int kNormalisationNodes = 96;
 double relative_horizontal_illuminance(const Dome& dome, Vec3 sun, int n_zenith, int n_azimuth) {
   const double norm = normaliser(dome, sun);
   const DomeQuadrature rule = sky_dome_quadrature(sun, n_zenith, n_azimuth);
+  // The rule is rings of equal zenith angle (n_zenith of them), each two half turns of azimuth
+  // from the sun's meridian that mirror each other (the Gauss–Legendre nodes are symmetric),
+  // and the dome is symmetric about that meridian: per ring the gradation once, and one half
+  // turn counted twice.
+  const std::size_t ring = rule.weights.size() / static_cast<std::size_t>(n_zenith);
   double total = 0;
-  for (std::size_t i = 0; i < rule.weights.size(); ++i) {
-    const Vec3 d = rule.directions[i];
-    total += rule.weights[i] * d.y * relative(dome, norm, d, sun);
+  for (std::size_t first = 0; first < rule.weights.size(); first += ring) {
+    const double g = gradation(dome, std::max(rule.directions[first].y, 0.0));
+    for (std::size_t i = first; i < first + ring / 2; ++i) {
+      const Vec3 d = rule.directions[i];
+      total += 2 * rule.weights[i] * d.y * relative(dome, norm, g, d, sun);
+    }
   }
   return total;
 }
@@ -205,7 +226,7 @@ DomeQuadrature sky_dome_quadrature(Vec3 sun_dir, int n_zenith, int n_azimuth) {
   // meridian, and the nodes cluster toward it, i.e. toward the circumsolar peak.
   const double sun_azimuth = std::atan2(sun.x, -sun.z);
   const int n_half = (n_azimuth + 1) / 2;
-  const GaussLegendre gl_az = gauss_legendre(n_half);
+  const GaussLegendre& gl_az = gauss_legendre(n_half);
   std::vector<double> sin_az, cos_az, w_az;
   for (int half = 0; half < 2; ++half) {
     for (int j = 0; j < n_half; ++j) {
@@ -219,7 +240,7 @@ DomeQuadrature sky_dome_quadrature(Vec3 sun_dir, int n_zenith, int n_azimuth) {
   rule.directions.reserve(static_cast<std::size_t>(n_zenith) * w_az.size());
   rule.weights.reserve(rule.directions.capacity());
   for (const Panel& panel : panels) {
-    const GaussLegendre gl = gauss_legendre(panel.n);
+    const GaussLegendre& gl = gauss_legendre(panel.n);
     const double half = 0.5 * (panel.hi - panel.lo), mid = 0.5 * (panel.hi + panel.lo);
     for (int k = 0; k < panel.n; ++k) {
       const double z = mid + half * gl.nodes[k];

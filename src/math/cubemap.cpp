@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <map>
+#include <mutex>
 
 #include "math/sh.h"
 
@@ -66,7 +68,9 @@ double cubemap_texel_solid_angle(int n, int i, int j) {
                                   2.0 * (j + 1) / n - 1.0);
 }
 
-std::vector<double> cubemap_solid_angles(int n) {
+namespace {
+
+std::vector<double> tabulate_solid_angles(int n) {
   // From the (n+1)² corner values of A(u, v): one atan2 per corner, not four per texel (fine
   // grids of sub-texels are tabulated this way for quadratures).
   const auto stride = static_cast<std::size_t>(n) + 1;
@@ -85,6 +89,17 @@ std::vector<double> cubemap_solid_angles(int n) {
     }
   }
   return omega;
+}
+
+}  // namespace
+
+const std::vector<double>& cubemap_solid_angles(int n) {
+  static std::mutex mutex;
+  static std::map<int, std::vector<double>> tables;  // nodes stay put: references stay valid
+  const std::scoped_lock lock(mutex);
+  auto it = tables.find(n);
+  if (it == tables.end()) it = tables.emplace(n, tabulate_solid_angles(n)).first;
+  return it->second;
 }
 
 CubemapCoord cubemap_coord(Vec3 d) {

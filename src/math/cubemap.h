@@ -59,8 +59,10 @@ Vec3 cubemap_texel_direction(int n, CubemapTexel c);
 double cubemap_rect_solid_angle(double u0, double u1, double v0, double v1);
 // Exact solid angle of texel (i, j) (the same on every face).
 double cubemap_texel_solid_angle(int n, int i, int j);
-// Solid angles of one face's texels, index j·N + i. They sum to 4π over 6 faces.
-std::vector<double> cubemap_solid_angles(int n);
+// Solid angles of one face's texels, index j·N + i. They sum to 4π over 6 faces. Tabulated
+// once per N for the life of the process (a sky's cubemap is made every hour of a year from
+// the same sub-texel grid); safe to call from many threads.
+const std::vector<double>& cubemap_solid_angles(int n);
 
 // Face and (s, t) of a direction (need not be unit; must be non-zero). Ties between axes go
 // to x, then y, then z.

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <map>
+#include <mutex>
 
 #include "math/vec3.h"
 
@@ -56,7 +58,9 @@ void assoc_legendre_normalized(int order, double x, std::span<double> out) {
   }
 }
 
-GaussLegendre gauss_legendre(int n) {
+namespace {
+
+GaussLegendre solve_gauss_legendre(int n) {
   assert(n >= 1);
   // P_n(x) and P_n'(x) = n (x P_n − P_{n−1}) / (x² − 1) (|x| < 1 at every iterate).
   const auto p_and_derivative = [n](double x, double& dp) {
@@ -89,6 +93,17 @@ GaussLegendre gauss_legendre(int n) {
   }
   if (n % 2 == 1) rule.nodes[n / 2] = 0.0;
   return rule;
+}
+
+}  // namespace
+
+const GaussLegendre& gauss_legendre(int n) {
+  static std::mutex mutex;
+  static std::map<int, GaussLegendre> rules;  // nodes stay put: references stay valid
+  const std::scoped_lock lock(mutex);
+  auto it = rules.find(n);
+  if (it == rules.end()) it = rules.emplace(n, solve_gauss_legendre(n)).first;
+  return it->second;
 }
 
 }  // namespace relight

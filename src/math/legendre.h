@@ -37,11 +37,13 @@ constexpr int assoc_legendre_count(int order) {
 void assoc_legendre_normalized(int order, double x, std::span<double> out);
 
 // n-point Gauss–Legendre rule on [−1, 1]: exact for polynomials of degree <= 2n−1.
-// Nodes ascending. Newton iteration on P_n from the Tricomi initial guess.
+// Nodes ascending, symmetric (nodes[i] = −nodes[n − 1 − i] exactly). Newton iteration on P_n
+// from the Tricomi initial guess, once per n for the life of the process (a sky is integrated
+// with the same rules every hour of a year); safe to call from many threads.
 struct GaussLegendre {
   std::vector<double> nodes;
   std::vector<double> weights;
 };
-GaussLegendre gauss_legendre(int n);
+const GaussLegendre& gauss_legendre(int n);
 
 }  // namespace relight

@@ -9,7 +9,7 @@ namespace relight {
 Rgb window_view_radiance(const Shell& shell, Vec3 outward) {
   const int n = shell.face_size;
   if (n < 1 || shell.cubemap.size() != cubemap_texel_count(n)) return {};
-  const std::vector<double> solid_angle = cubemap_solid_angles(n);  // one face, j·N + i
+  const std::vector<double>& solid_angle = cubemap_solid_angles(n);  // one face, j·N + i
   const std::size_t per_face = solid_angle.size();
   Rgb sum;
   double weight = 0;

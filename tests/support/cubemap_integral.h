@@ -10,7 +10,7 @@
 namespace relight::testing {
 
 inline double cube_integral(const std::vector<Rgb>& cube, int n) {
-  const std::vector<double> omega = cubemap_solid_angles(n);
+  const std::vector<double>& omega = cubemap_solid_angles(n);
   double sum = 0;
   for (std::size_t t = 0; t < cube.size(); ++t) {
     const CubemapTexel c = cubemap_texel_from_index(n, t);

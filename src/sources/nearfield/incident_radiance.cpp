@@ -48,7 +48,7 @@ IncidentRadiance sample_incident_radiance(Vec3 x, const RayTracer& emitters,
     throw std::invalid_argument("incident radiance: face size and order must be >= 1");
   }
   const auto k = static_cast<std::size_t>(sh_count(settings.order));
-  const std::vector<double> texel_solid_angle = cubemap_solid_angles(n);  // one face, j·N + i
+  const std::vector<double>& texel_solid_angle = cubemap_solid_angles(n);  // one face, j·N + i
   IncidentRadiance out;
   out.sh.assign(k, Rgb{});
   std::vector<double> y(k);
