@@ -90,40 +90,44 @@ std::vector<Rgb> map_sh(const Environment& env, int order) {
   return c;
 }
 
-// Σ f(centre)·Ω over k×k sub-rectangles of [u0,u1]×[v0,v1] on `face`.
+// ∫ f dω and ∫ dω over the rectangle [u0,u1]×[v0,v1] of `face` (u, v ∈ [−1, 1]), by the
+// product Gauss–Legendre rule `rule` in u and v with the solid angle's Jacobian
+// dω = du dv / (1 + u² + v²)^{3/2}.
+struct TexelIntegral {
+  double value = 0, solid_angle = 0;
+};
 template <class F>
-double integrate_rect(int face, double u0, double u1, double v0, double v1, int k, F&& f) {
-  double sum = 0;
-  for (int b = 0; b < k; ++b) {
-    const double va = v0 + (v1 - v0) * b / k, vb = v0 + (v1 - v0) * (b + 1) / k;
-    for (int a = 0; a < k; ++a) {
-      const double ua = u0 + (u1 - u0) * a / k, ub = u0 + (u1 - u0) * (a + 1) / k;
-      const Vec3 dir =
-          cubemap_direction({face, 0.5 * (ua + ub) * 0.5 + 0.5, 0.5 * (va + vb) * 0.5 + 0.5});
-      sum += f(dir) * cubemap_rect_solid_angle(ua, ub, va, vb);
+void add_gauss_rect(int face, double u0, double u1, double v0, double v1, const GaussLegendre& rule,
+                    F&& f, TexelIntegral& sum) {
+  const double hu = 0.5 * (u1 - u0), hv = 0.5 * (v1 - v0);
+  for (std::size_t b = 0; b < rule.nodes.size(); ++b) {
+    const double v = v0 + hv * (rule.nodes[b] + 1.0);
+    for (std::size_t a = 0; a < rule.nodes.size(); ++a) {
+      const double u = u0 + hu * (rule.nodes[a] + 1.0);
+      const double r2 = 1.0 + u * u + v * v;
+      const double w = rule.weights[a] * rule.weights[b] * hu * hv / (r2 * std::sqrt(r2));
+      sum.value += w * f(cubemap_direction({face, 0.5 * u + 0.5, 0.5 * v + 0.5}));
+      sum.solid_angle += w;
     }
   }
-  return sum;
+}
+
+// Gauss–Legendre points per texel and axis for a face of n texels: at least 3, and about 48
+// across a face. The texel's mean radiance is Σ w·J·f / Σ w·J (a constant sky exactly). Against
+// 32 × 32 midpoint sub-cells, for six Perez skies (suns 10°–70° high, overcast to clear) at n = 32,
+// the worst texel error per sky is 2.7e-4…1.2e-3 — near the sun and at the gradation's guard 5.7°
+// above the horizon, where the sky has a kink — never above that of the 4 × 4 midpoint
+// sub-cells it replaced (3.0e-4…1.3e-3), from 9 evaluations instead of 16 (a sky's cubemap is
+// most of a shell, which `relight annual` makes for every hour of a year).
+int texel_gauss_points(int n) {
+  return std::max(3, (48 + n - 1) / n);
 }
 
 std::vector<Rgb> sky_cubemap(const SkyModel& sky, int n) {
-  const int sub = std::max(4, (64 + n - 1) / n);
+  const GaussLegendre& rule = gauss_legendre(texel_gauss_points(n));
   const std::vector<double>& omega = cubemap_solid_angles(n);
   std::vector<Rgb> out(cubemap_texel_count(n));
   auto f = [&](Vec3 d) { return sky_diffuse_luminance(sky, d); };
-  const int m = n * sub;
-  const std::vector<double>& sub_omega = cubemap_solid_angles(m);
-  // Σ f·Ω over the sub×sub sub-cells of texel (i, j) of `face`, with the tabulated angles.
-  const auto integrate_texel = [&](int face, int i, int j) {
-    double sum = 0;
-    for (int b = j * sub; b < (j + 1) * sub; ++b) {
-      for (int a = i * sub; a < (i + 1) * sub; ++a) {
-        const Vec3 dir = cubemap_direction({face, (a + 0.5) / m, (b + 0.5) / m});
-        sum += f(dir) * sub_omega[static_cast<std::size_t>(b) * m + a];
-      }
-    }
-    return sum;
-  };
   // Rows are independent (the run time rebuilds a shell per sky change: use every core);
   // texels wholly below the horizon see the uniform ground and need no quadrature.
   tbb::parallel_for(tbb::blocked_range<int>(0, 6 * n), [&](const tbb::blocked_range<int>& rows) {
@@ -138,14 +142,14 @@ std::vector<Rgb> sky_cubemap(const SkyModel& sky, int n) {
           out[cubemap_texel_index(n, {face, i, j})] = grey(sky.ground_luminance);
           continue;
         }
-        double sum;
+        TexelIntegral sum;
         if (side && v0 < 0 && v1 > 0) {  // the horizon crosses the texel: split it there
-          sum = integrate_rect(face, u0, u1, v0, 0.0, sub, f) +
-                integrate_rect(face, u0, u1, 0.0, v1, sub, f);
+          add_gauss_rect(face, u0, u1, v0, 0.0, rule, f, sum);
+          add_gauss_rect(face, u0, u1, 0.0, v1, rule, f, sum);
         } else {
-          sum = integrate_texel(face, i, j);
+          add_gauss_rect(face, u0, u1, v0, v1, rule, f, sum);
         }
-        out[cubemap_texel_index(n, {face, i, j})] = grey(sum / omega[j * n + i]);
+        out[cubemap_texel_index(n, {face, i, j})] = grey(sum.value / sum.solid_angle);
       }
     }
   });
