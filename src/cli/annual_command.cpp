@@ -25,19 +25,15 @@ struct AnnualArgs {
   std::string rlt, weather, state, sensors, occupied = "08:00-18:00", output, hourly;
 };
 
-// A chosen sensor set: its name, its first point (scene order) and its points.
+// A chosen sensor set and its index in the scene.
 struct ChosenSet {
   const SensorSet* set;
-  std::size_t first;  // scene order of its first point
+  std::size_t index;
 };
 
 std::vector<ChosenSet> choose_sets(const Scene& scene, const std::string& names) {
   std::vector<ChosenSet> all;
-  std::size_t first = 0;
-  for (const SensorSet& s : scene.sensors) {
-    all.push_back({&s, first});
-    first += s.points.size();
-  }
+  for (std::size_t k = 0; k < scene.sensors.size(); ++k) all.push_back({&scene.sensors[k], k});
   if (names.empty()) return all;
   std::vector<ChosenSet> chosen;
   std::stringstream list(names);
@@ -117,10 +113,9 @@ int run_annual(const AnnualArgs& args) {
     fail_input(args.rlt, "the scene has no windows (portals) for daylight");
   if (scene.sensor_count() == 0) fail_input(args.rlt, "the scene has no sensors");
   const std::vector<ChosenSet> sets = choose_sets(scene, args.sensors);
-  std::vector<std::size_t> columns;
-  for (const ChosenSet& c : sets) {
-    for (std::size_t i = 0; i < c.set->points.size(); ++i) columns.push_back(c.first + i);
-  }
+  std::vector<std::size_t> set_indices;
+  set_indices.reserve(sets.size());
+  for (const ChosenSet& c : sets) set_indices.push_back(c.index);
   const LightingState base = annual_base_state(
       scene, args.state.empty() ? std::nullopt : std::optional<std::filesystem::path>(args.state));
   const AnnualHours hours = annual_hours(weather, *period);
@@ -133,23 +128,17 @@ int run_annual(const AnnualArgs& args) {
   if (hours.hours.empty()) fail_input(args.weather, "no occupied hour has the sun up");
 
   Progress progress("annual", hours.hours.size());
-  const AnnualValues values =
-      annual_sensor_values(*relit, base, hours.hours, columns, [&] { progress.advance(); });
+  const AnnualDaylight year =
+      annual_daylight(*relit, base, hours.hours, set_indices, [&] { progress.advance(); });
   progress.finish();
-  const std::vector<SensorDaylight> daylight =
-      sensor_daylight(values.lux, values.direct_sun_lux, values.sensors);
-  std::vector<std::size_t> counts;
-  counts.reserve(sets.size());
-  for (const ChosenSet& c : sets) counts.push_back(c.set->points.size());
-  const std::vector<SetDaylight> per_set =
-      sets_daylight(values.lux, values.sensors, daylight, counts);
+  const AnnualValues& values = year.values;
   for (std::size_t k = 0; k < sets.size(); ++k) {
-    const SetDaylight& d = per_set[k];
+    const SetDaylight& d = year.per_set[k];
     std::printf(
         "%s: %zu points  sDA300/50%% %.1f%%  ASE1000,250h %.1f%%  mean DA300 %.1f%%  "
         "EN 17037 daylight provision: %s\n",
-        sets[k].set->name.c_str(), counts[k], 100 * d.sda300, 100 * d.ase, 100 * d.mean_da300,
-        daylight_provision_name(d.en17037));
+        sets[k].set->name.c_str(), sets[k].set->points.size(), 100 * d.sda300, 100 * d.ase,
+        100 * d.mean_da300, daylight_provision_name(d.en17037));
   }
   const RuntimeScene* runtime = relit->relighter().runtime_scene();
   const double importance = runtime != nullptr ? runtime->sensor_importance_seconds() : 0;
@@ -159,7 +148,7 @@ int run_annual(const AnnualArgs& args) {
       hours.hours.size(), values.sensors, importance + values.total_seconds, importance,
       values.shell_seconds, values.total_seconds - values.shell_seconds);
   if (!args.output.empty()) {
-    write_text_atomically(args.output, results_csv(sets, daylight));
+    write_text_atomically(args.output, results_csv(sets, year.per_sensor));
     std::printf("wrote %s\n", args.output.c_str());
   }
   if (!args.hourly.empty()) {

@@ -31,12 +31,11 @@ AnnualReport year_of_daylight(const ReportArgs& args) {
   const Scene& scene = relit->scene();
   const AnnualHours hours = annual_hours(weather, OccupiedPeriod{});
   if (hours.hours.empty()) fail_input(args.weather, "no occupied hour has the sun up");
-  std::vector<std::size_t> all(scene.sensor_count());
-  for (std::size_t k = 0; k < all.size(); ++k) all[k] = k;
+  std::vector<std::size_t> sets(scene.sensors.size());
+  for (std::size_t k = 0; k < sets.size(); ++k) sets[k] = k;
   Progress progress("annual", hours.hours.size());
-  const AnnualValues values =
-      annual_sensor_values(*relit, annual_base_state(scene, state_path(args.state)), hours.hours,
-                           all, [&] { progress.advance(); });
+  AnnualDaylight year = annual_daylight(*relit, annual_base_state(scene, state_path(args.state)),
+                                        hours.hours, sets, [&] { progress.advance(); });
   progress.finish();
   AnnualReport out;
   char heading[256];
@@ -47,10 +46,8 @@ AnnualReport year_of_daylight(const ReportArgs& args) {
                 weather.location.longitude_deg, weather.location.time_zone_hours,
                 hours.hours.size());
   out.weather = heading;
-  out.per_sensor = sensor_daylight(values.lux, values.direct_sun_lux, values.sensors);
-  std::vector<std::size_t> counts;
-  for (const SensorSet& set : scene.sensors) counts.push_back(set.points.size());
-  out.per_set = sets_daylight(values.lux, values.sensors, out.per_sensor, counts);
+  out.per_sensor = std::move(year.per_sensor);
+  out.per_set = std::move(year.per_set);
   return out;
 }
 

@@ -102,6 +102,12 @@ LightingState annual_base_state(const Scene& scene,
   return state;
 }
 
+LightingState daylight_alone(LightingState state) {
+  for (LuminaireState& l : state.luminaires) l.on = false;
+  for (EmitterState& e : state.emitters) e.on = false;
+  return state;
+}
+
 AnnualValues annual_sensor_values(RelitScene& relit, const LightingState& base,
                                   std::span<const AnnualHour> hours,
                                   std::span<const std::size_t> sensors,
@@ -148,6 +154,27 @@ AnnualValues annual_sensor_values(RelitScene& relit, const LightingState& base,
   }
   out.total_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+AnnualDaylight annual_daylight(RelitScene& relit, const LightingState& base,
+                               std::span<const AnnualHour> hours, std::span<const std::size_t> sets,
+                               const std::function<void()>& on_hour) {
+  const Scene& scene = relit.scene();
+  std::vector<std::size_t> first(scene.sensors.size() + 1, 0);  // each set's first point
+  for (std::size_t k = 0; k < scene.sensors.size(); ++k) {
+    first[k + 1] = first[k] + scene.sensors[k].points.size();
+  }
+  std::vector<std::size_t> columns, counts;
+  counts.reserve(sets.size());
+  for (const std::size_t k : sets) {
+    for (std::size_t i = first.at(k); i < first.at(k + 1); ++i) columns.push_back(i);
+    counts.push_back(scene.sensors.at(k).points.size());
+  }
+  AnnualDaylight out;
+  out.values = annual_sensor_values(relit, base, hours, columns, on_hour);
+  out.per_sensor = sensor_daylight(out.values.lux, out.values.direct_sun_lux, out.values.sensors);
+  out.per_set = sets_daylight(out.values.lux, out.values.sensors, out.per_sensor, counts);
   return out;
 }
 

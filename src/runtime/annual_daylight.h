@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "light/epw_weather.h"
+#include "runtime/daylight_metrics.h"
 #include "runtime/lighting_state.h"
 #include "runtime/relit_scene.h"
 #include "scene/environment_spec.h"
@@ -78,5 +79,20 @@ AnnualValues annual_sensor_values(RelitScene& relit, const LightingState& base,
                                   std::span<const AnnualHour> hours,
                                   std::span<const std::size_t> sensors,
                                   const std::function<void()>& on_hour = {});
+
+// `state` with every luminaire and emitter off: daylight alone (the studio's annual panel).
+LightingState daylight_alone(LightingState state);
+
+// A year of the chosen sensor sets (indices into scene.sensors): every hour's values (sets back
+// to back, in the order given) and the climate-based metrics per sensor and per set — what
+// `relight annual`, `relight report --weather` and the studio's annual panel show.
+struct AnnualDaylight {
+  AnnualValues values;
+  std::vector<SensorDaylight> per_sensor;
+  std::vector<SetDaylight> per_set;
+};
+AnnualDaylight annual_daylight(RelitScene& relit, const LightingState& base,
+                               std::span<const AnnualHour> hours, std::span<const std::size_t> sets,
+                               const std::function<void()>& on_hour = {});
 
 }  // namespace relight

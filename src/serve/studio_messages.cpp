@@ -96,11 +96,79 @@ ClientMessage parse_client_message(const std::string& text, const Scene& scene,
   } else if (type == "ping") {
     root.expect_keys({"type", "seq"});
     m.request = PingRequest{};
+  } else if (type == "annual") {
+    root.expect_keys({"type", "seq", "weather", "occupied"});
+    AnnualRequest r;
+    r.weather = parse_epw(root.at("weather").string(), "message:/weather");
+    if (const auto o = root.find("occupied")) {
+      r.occupied = o->string();
+      const std::optional<OccupiedPeriod> period = parse_occupied_period(r.occupied);
+      if (!period) o->fail("expected HH:MM-HH:MM with the end after the start (up to 24:00)");
+      r.period = *period;
+    }
+    m.request = std::move(r);
   } else {
     root.at("type").fail("unknown message type \"" + type +
-                         "\" (expected state, pick, distribution or ping)");
+                         "\" (expected state, pick, distribution, ping or annual)");
   }
   return m;
+}
+
+nlohmann::json annual_progress_message(std::optional<std::uint32_t> seq, std::size_t done,
+                                       std::size_t total, const char* stage) {
+  return {{"type", "annual_progress"},
+          {"seq", seq_json(seq)},
+          {"stage", stage},
+          {"done", done},
+          {"total", total}};
+}
+
+nlohmann::json annual_message(std::optional<std::uint32_t> seq, const Scene& scene,
+                              const WeatherFile& weather, const std::string& occupied,
+                              const AnnualHours& hours, const AnnualDaylight& year,
+                              double seconds) {
+  nlohmann::json sets = nlohmann::json::array();
+  std::size_t column = 0;
+  for (std::size_t k = 0; k < scene.sensors.size(); ++k) {
+    const SensorSet& set = scene.sensors[k];
+    const SetDaylight& d = year.per_set.at(k);
+    nlohmann::json da = nlohmann::json::array(), fell_short = nlohmann::json::array(),
+                   useful = nlohmann::json::array(), exceeded = nlohmann::json::array(),
+                   ase_hours = nlohmann::json::array();
+    for (std::size_t i = 0; i < set.points.size(); ++i, ++column) {
+      const SensorDaylight& s = year.per_sensor.at(column);
+      da.push_back(s.da300);
+      fell_short.push_back(s.udi_fell_short);
+      useful.push_back(s.udi_useful);
+      exceeded.push_back(s.udi_exceeded);
+      ase_hours.push_back(s.ase_hours);
+    }
+    sets.push_back({{"name", set.name},
+                    {"points", set.points.size()},
+                    {"sda300", d.sda300},
+                    {"ase", d.ase},
+                    {"mean_da300", d.mean_da300},
+                    {"en17037", daylight_provision_name(d.en17037)},
+                    {"da300", std::move(da)},
+                    {"udi_fell_short", std::move(fell_short)},
+                    {"udi_useful", std::move(useful)},
+                    {"udi_exceeded", std::move(exceeded)},
+                    {"ase_hours", std::move(ase_hours)}});
+  }
+  const WeatherLocation& at = weather.location;
+  return {{"type", "annual"},
+          {"seq", seq_json(seq)},
+          {"weather",
+           {{"city", at.city},
+            {"latitude", at.latitude_deg},
+            {"longitude", at.longitude_deg},
+            {"time_zone", at.time_zone_hours},
+            {"records", weather.records.size()}}},
+          {"occupied", occupied},
+          {"occupied_hours", hours.occupied},
+          {"hours", hours.hours.size()},
+          {"seconds", seconds},
+          {"sets", std::move(sets)}};
 }
 
 nlohmann::json hello_message(const TransferFile& t, const std::string& scene_file_name,

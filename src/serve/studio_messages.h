@@ -12,7 +12,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "light/epw_weather.h"
 #include "math/vec3.h"
+#include "runtime/annual_daylight.h"
 #include "sources/luminaire/distribution_profile.h"
 #include "sources/transfer_file.h"
 
@@ -39,10 +41,19 @@ struct DistributionRequest {
   int samples = kDefaultProfileSamples;
 };
 struct PingRequest {};
+// A year of daylight (`relight annual`) from the weather file's text, parsed and checked here.
+struct AnnualRequest {
+  WeatherFile weather;
+  OccupiedPeriod period;
+  std::string occupied = "08:00-18:00";  // as sent, for the reply
+};
+
+// The largest message a client may send: a weather file of a year is 1.5–2 MB of text.
+inline constexpr std::size_t kMaxClientMessageBytes = std::size_t{8} << 20;
 
 struct ClientMessage {
   std::optional<std::uint32_t> seq;
-  std::variant<StateRequest, PickRequest, DistributionRequest, PingRequest> request;
+  std::variant<StateRequest, PickRequest, DistributionRequest, PingRequest, AnnualRequest> request;
 };
 
 // Throws InputError for malformed text; `seq` is set as soon as a readable one was found, so
@@ -59,6 +70,16 @@ nlohmann::json distribution_message(std::optional<std::uint32_t> seq, const Lumi
                                     const DistributionSpec& spec,
                                     const DistributionProfile& profile, int sh_order,
                                     std::size_t incremental_updates);
+
+// How far a year of daylight has come: `stage` "preparing" (the sensors' importance) or
+// "hours" (`done` of `total`).
+nlohmann::json annual_progress_message(std::optional<std::uint32_t> seq, std::size_t done,
+                                       std::size_t total, const char* stage);
+// Its result: the weather file's place, the hours, and per sensor set the metrics of `relight
+// annual` with one array per metric over the set's points.
+nlohmann::json annual_message(std::optional<std::uint32_t> seq, const Scene& scene,
+                              const WeatherFile& weather, const std::string& occupied,
+                              const AnnualHours& hours, const AnnualDaylight& year, double seconds);
 
 // A seq as JSON: the number, or null.
 nlohmann::json seq_json(std::optional<std::uint32_t> seq);

@@ -12,6 +12,7 @@
 
 #include "common/input_error.h"
 #include "light/distribution.h"
+#include "runtime/annual_daylight.h"
 #include "runtime/relit_scene.h"
 #include "serve/static_files.h"
 #include "serve/studio_frames.h"
@@ -93,6 +94,11 @@ struct StudioServer::Impl {
   std::atomic<std::size_t> incremental_updates{0};  // written by the worker
 
   std::thread worker;
+  // A year of daylight for one client at a time (handle(AnnualRequest)), on its own thread
+  // and its own scene, so that relighting goes on meanwhile.
+  std::thread annual;
+  std::atomic<bool> annual_busy{false};
+  std::atomic<bool> annual_stop{false};
 
   const TransferFile& transfer() const { return relit->transfer(); }
   const Scene& scene() const { return relit->scene(); }
@@ -344,6 +350,57 @@ struct StudioServer::Impl {
     send_json(id, profile_message(seq, r.luminaire, state, r.samples));
   }
 
+  void handle(ConnectionId id, std::optional<std::uint32_t> seq, AnnualRequest& r) {
+    if (scene().portals.empty()) {
+      fail_input("message", "the scene has no windows (portals) for daylight");
+    }
+    if (scene().sensor_count() == 0) fail_input("message", "the scene has no sensors");
+    if (annual_busy.exchange(true)) {
+      fail_input("message", "a year of daylight is already being computed; wait for its result");
+    }
+    if (annual.joinable()) annual.join();  // the last run's thread, finished
+    LightingState base;
+    {
+      std::lock_guard lock(mutex);
+      base = daylight_alone(shown.state);
+    }
+    annual = std::thread([this, id, seq, request = std::move(r), base = std::move(base)] {
+      run_annual(id, seq, request, base);
+      annual_busy = false;
+    });
+  }
+
+  // The studio's annual panel: `relight annual` over every sensor set with the state shown now,
+  // daylight alone (luminaires and emitters off); progress at most ten times a second.
+  void run_annual(ConnectionId id, std::optional<std::uint32_t> seq, const AnnualRequest& r,
+                  const LightingState& base) {
+    try {
+      const auto start = std::chrono::steady_clock::now();
+      send_json(id, annual_progress_message(seq, 0, 0, "preparing"));
+      const AnnualHours hours = annual_hours(r.weather, r.period);
+      if (hours.hours.empty()) fail_input("message:/weather", "no occupied hour has the sun up");
+      const std::unique_ptr<RelitScene> year_scene = open_for_annual(rlt);
+      std::vector<std::size_t> sets(scene().sensors.size());
+      for (std::size_t k = 0; k < sets.size(); ++k) sets[k] = k;
+      std::size_t done = 0;
+      auto last = std::chrono::steady_clock::now();
+      const AnnualDaylight year = annual_daylight(*year_scene, base, hours.hours, sets, [&] {
+        if (annual_stop) throw std::runtime_error("the server is stopping");
+        ++done;
+        const auto now = std::chrono::steady_clock::now();
+        if (now - last > std::chrono::milliseconds(100)) {
+          last = now;
+          send_json(id, annual_progress_message(seq, done, hours.hours.size(), "hours"));
+        }
+      });
+      const double seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      send_json(id, annual_message(seq, scene(), r.weather, r.occupied, hours, year, seconds));
+    } catch (const std::exception& e) {
+      if (!annual_stop) send_json(id, error_message(seq, e.what()));
+    }
+  }
+
   void handle(ConnectionId id, std::optional<std::uint32_t> seq, const PingRequest&) {
     std::lock_guard lock(mutex);
     send_json(id, {{"type", "pong"},
@@ -381,6 +438,7 @@ StudioServer::StudioServer(const fs::path& rlt, const StudioOptions& options)
   transport_options.host = options.host;
   transport_options.port = options.port;
   transport_options.stop_on_signals = options.stop_on_signals;
+  transport_options.max_message_bytes = kMaxClientMessageBytes;
   WebSocketHandlers handlers;
   handlers.open = [&s](ConnectionId id) { s.on_open(id); };
   handlers.close = [&s](ConnectionId id) { s.on_close(id); };
@@ -405,6 +463,8 @@ StudioServer::~StudioServer() {
   }
   impl_->wake.notify_one();
   if (impl_->worker.joinable()) impl_->worker.join();
+  impl_->annual_stop = true;
+  if (impl_->annual.joinable()) impl_->annual.join();
 }
 
 std::uint16_t StudioServer::port() const {

@@ -4,6 +4,7 @@
 // handles clicks in the view (probe a point, or aim a luminaire at it; a press on an
 // emitter's marker drags the emitter, emitters.js; a press on an object drags it, objects.js),
 // keeps the status line, and exposes window.relightStudio for the browser tests.
+import { AnnualPanel } from './annual.js';
 import { CameraRig } from './cameras.js';
 import { Connection } from './connection.js';
 import { DistributionEditor } from './distribution_editor.js';
@@ -36,6 +37,8 @@ const api = {
   pongs: 0,
   latencies: [],
   lastState: null, // {seq, frame} of the last `state` message: the frame that shows it
+  annual: null, // the last `annual` result, with the annual_progress messages before it
+  annualProgress: 0,
 };
 window.relightStudio = api;
 
@@ -90,6 +93,14 @@ const emitterPanel = new EmitterPanel($('emitters'), store);
 const objectPanel = new ObjectPanel($('objects'), store, objectsView);
 objectsView.onSelect = (i) => objectPanel.setSelected(i);
 const materialPanel = new MaterialPanel($('material'), store);
+const annualPanel = new AnnualPanel(
+  $('annual'),
+  (message) => {
+    const seq = connection.nextSeq();
+    return connection.send({ ...message, seq }) ? seq : null;
+  },
+  sensors,
+);
 // The luminaire in the distribution editor is drawn larger in the view.
 editor.onSelect = (i) => {
   markers.selected = i;
@@ -138,8 +149,18 @@ function onText(msg) {
       editor.receive(msg);
       luminairePanel.distributionUpdated(msg.luminaire);
       return;
+    case 'annual_progress':
+      api.annualProgress++;
+      return annualPanel.onProgress(msg);
+    case 'annual':
+      api.annual = { ...msg, progress_messages: api.annualProgress };
+      return annualPanel.onResult(msg);
     case 'error': {
       api.errors.push(msg.message);
+      if (annualPanel.onError(msg)) {
+        notice(`Annual: ${msg.message}`, 'error');
+        return;
+      }
       const undone = store.refused(msg.seq);
       notice(`Server: ${msg.message}${undone ? ' (the change was undone)' : ''}`, 'error');
       const p = session.picks.get(msg.seq);
@@ -179,6 +200,7 @@ function onHello(hello) {
   objectsView.setScene(hello);
   objectPanel.setScene(hello);
   materialPanel.setScene(hello);
+  annualPanel.setScene(hello);
   editor.setScene(hello);
   store.reset(hello.state || {}, hello.client ?? null);
   // Every luminaire's distribution: flux for the panels, exact C0 samples for the editor.

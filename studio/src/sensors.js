@@ -17,6 +17,16 @@ export class Sensors {
     this.showPoints = true;
     this.showValues = true;
     this.object = null;
+    // A year-of-daylight map shown instead of the readings (annual.js): {values (per point, NaN
+    // where unknown), max (the value at the top of the ramp), format(v) for the labels}.
+    this.metric = null;
+  }
+
+  // Colours and labels the points by `metric` (see the constructor) instead of the frame's
+  // readings; null shows the readings again.
+  setMetric(metric) {
+    this.metric = metric;
+    this.viewer.requestRender();
   }
 
   setScene(hello) {
@@ -70,9 +80,12 @@ export class Sensors {
     if (!this.object) return;
     const lux = used.mode === 'false-lux';
     const c = this.colors.array;
+    const m = this.metric;
     for (let i = 0; i < this.count; i++) {
       // Ramp colours are sRGB; the points material expects linear colours.
-      const rgb = lux ? rampColor(scalePosition(used.scale, this.values[i])).map((x) => srgbToLinear(x / 255)) : [1, 0.9, 0.15];
+      let rgb = [1, 0.9, 0.15];
+      if (m) rgb = rampColor(Math.min(Math.max(m.values[i] / m.max, 0), 1)).map((x) => srgbToLinear(x / 255));
+      else if (lux) rgb = rampColor(scalePosition(used.scale, this.values[i])).map((x) => srgbToLinear(x / 255));
       c.set(rgb, 3 * i);
     }
     this.colors.needsUpdate = true;
@@ -84,8 +97,9 @@ export class Sensors {
     if (!this.showValues || !this.object) return;
     for (const s of this.sets) {
       s.points.forEach((p, i) => {
-        const v = this.values[s.offset + i];
-        if (Number.isFinite(v)) layer.label(p, formatValue(v), { font: '10px system-ui, sans-serif', dy: -17 });
+        const m = this.metric;
+        const v = m ? m.values[s.offset + i] : this.values[s.offset + i];
+        if (Number.isFinite(v)) layer.label(p, m ? m.format(v) : formatValue(v), { font: '10px system-ui, sans-serif', dy: -17 });
       });
     }
   }

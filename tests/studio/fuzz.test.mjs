@@ -12,6 +12,8 @@ import net from 'node:net';
 import { connect, residentKiB, startServer, stopServer } from './studio_support.mjs';
 
 const kMessages = Number(process.env.STUDIO_FUZZ_MESSAGES ?? 10000);
+// Over the server's 8 MiB message limit (a weather file fits under it): closed with 1009.
+const oversized = JSON.stringify({ type: 'state', state: { luminaires: {} }, pad: 'x'.repeat((8 << 20) + 10) });
 const kBatch = 100;
 
 // A small deterministic generator (xorshift32), so a failure can be replayed.
@@ -127,7 +129,7 @@ async function fuzz(server, hello, r, count, stats) {
         const n = 1000 + r.int(200000);
         client.send(`{"type":"state","state":{"luminaires":${'['.repeat(n)}${']'.repeat(n)}}}`);
       }
-      else if (kind < 94) client.send(JSON.stringify({ type: 'state', state: { luminaires: {} }, pad: 'x'.repeat((1 << 20) + 10) }));
+      else if (kind < 94) client.send(oversized);
       else if (kind < 96) {  // invalid UTF-8 in a text frame: the server must close with 1007
         // ws refuses to send invalid text, so write one masked text frame (payload C3 28).
         client.ws._socket.write(Buffer.from([0x81, 0x82, 0, 0, 0, 0, 0xc3, 0x28]));
