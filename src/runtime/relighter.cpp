@@ -265,6 +265,30 @@ void Relighter::relight(std::span<float> out, bool include_direct) {
   objects_->add_to_room(out, include_direct);
 }
 
+void Relighter::sum_block(std::size_t b, std::size_t slot, const std::array<bool, 3>& redo,
+                          std::span<float> out) {
+  const std::size_t n = transfer_.receivers;
+  const std::size_t base = b * kBlock;
+  const std::size_t count = std::min(kBlock, n - base);
+  for (std::size_t t = 0; t < terms_.size(); ++t) {
+    if (!redo[t]) continue;
+    alignas(64) float acc[3][kBlock] = {};
+    terms_[t].source->add_block(b, slot == 1, acc);
+    std::vector<float>& sum = terms_[t].sums[slot].values;
+    for (std::size_t i = 0; i < count; ++i) {
+      for (std::size_t c = 0; c < 3; ++c) sum[3 * (base + i) + c] = acc[c][i];
+    }
+  }
+  // out = Σ over terms of their sums, one streaming pass per term over the block.
+  const std::size_t lo = 3 * base, hi = 3 * (base + count);
+  const float* first = terms_.front().sums[slot].values.data();
+  for (std::size_t i = lo; i < hi; ++i) out[i] = first[i];
+  for (std::size_t t = 1; t < terms_.size(); ++t) {
+    const float* v = terms_[t].sums[slot].values.data();
+    for (std::size_t i = lo; i < hi; ++i) out[i] += v[i];
+  }
+}
+
 bool Relighter::sum_terms(std::size_t slot, std::span<float> out) {
   const std::size_t n = transfer_.receivers;
   // Each kind of source keeps its own sum (per direct mode), recomputed only after a change
@@ -281,26 +305,7 @@ bool Relighter::sum_terms(std::size_t slot, std::span<float> out) {
   tbb::parallel_for(tbb::blocked_range<std::size_t>(first_block, block_count(n)),
                     [&](const auto& blocks) {
                       for (std::size_t b = blocks.begin(); b != blocks.end(); ++b) {
-                        const std::size_t base = b * kBlock;
-                        const std::size_t count = std::min(kBlock, n - base);
-                        for (std::size_t t = 0; t < terms_.size(); ++t) {
-                          if (!redo[t]) continue;
-                          alignas(64) float acc[3][kBlock] = {};
-                          terms_[t].source->add_block(b, slot == 1, acc);
-                          std::vector<float>& sum = terms_[t].sums[slot].values;
-                          for (std::size_t i = 0; i < count; ++i) {
-                            for (std::size_t c = 0; c < 3; ++c) sum[3 * (base + i) + c] = acc[c][i];
-                          }
-                        }
-                        // out = Σ over terms of their sums, one streaming pass per term over the
-                        // block.
-                        const std::size_t lo = 3 * base, hi = 3 * (base + count);
-                        const float* first = terms_.front().sums[slot].values.data();
-                        for (std::size_t i = lo; i < hi; ++i) out[i] = first[i];
-                        for (std::size_t t = 1; t < terms_.size(); ++t) {
-                          const float* v = terms_[t].sums[slot].values.data();
-                          for (std::size_t i = lo; i < hi; ++i) out[i] += v[i];
-                        }
+                        sum_block(b, slot, redo, out);
                       }
                     });
   std::size_t bytes = 3 * n * sizeof(float);  // the output written

@@ -8,6 +8,7 @@
 // core.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <optional>
 #include <span>
@@ -127,6 +128,9 @@ class Relighter {
   // out = Σ over terms of their sums for `slot` ([include_direct]), each term summed again
   // when its state changed; returns whether any was.
   bool sum_terms(std::size_t slot, std::span<float> out);
+  // sum_terms for block b: the terms in `redo` summed again, then out over the block.
+  void sum_block(std::size_t b, std::size_t slot, const std::array<bool, 3>& redo,
+                 std::span<float> out);
   // total = every term's light with direct, corrected by the material edit; returns whether
   // it changed since the last call.
   bool sum_edited(std::span<float> total);

@@ -59,6 +59,15 @@ std::shared_ptr<const RayTracer> exterior_tracer(const std::vector<ExteriorObjec
   return std::make_shared<const RayTracer>(positions, triangles, sequential_ids(triangles.size()));
 }
 
+// Bouncing to the sensors needs their importance solved (RuntimeScene::solve_sensor_importance).
+void check_sun_bounce(const RuntimeScene* runtime, SunBounce sun_bounce) {
+  if (sun_bounce == SunBounce::kSensors && runtime != nullptr &&
+      !runtime->has_sensor_importance()) {
+    throw std::invalid_argument(
+        "PortalSetLighting: bouncing to the sensors needs their importance");
+  }
+}
+
 }  // namespace
 
 void update_portal_lighting(PortalLighting& lighting, std::uint32_t index,
@@ -116,11 +125,7 @@ void update_portal_lighting(PortalLighting& lighting, std::uint32_t index,
 PortalSetLighting::PortalSetLighting(PortalTransferSet transfer, const RuntimeScene* runtime,
                                      const Scene& scene, SunBounce sun_bounce)
     : transfer_(transfer), runtime_(runtime), scene_(&scene), sun_bounce_(sun_bounce) {
-  if (sun_bounce_ == SunBounce::kSensors && runtime_ != nullptr &&
-      !runtime_->has_sensor_importance()) {
-    throw std::invalid_argument(
-        "PortalSetLighting: bouncing to the sensors needs their importance");
-  }
+  check_sun_bounce(runtime_, sun_bounce_);
   if (transfer_.portals.size() != scene.portals.size() ||
       (!scene.portals.empty() && (!runtime || runtime->receivers() != transfer_.receivers))) {
     throw std::invalid_argument("PortalSetLighting: transfer and scene disagree on portals");
@@ -201,11 +206,7 @@ void PortalSetLighting::update_suns() {
 
 void PortalSetLighting::set_sun_bounce(SunBounce sun_bounce) {
   if (sun_bounce == sun_bounce_) return;
-  if (sun_bounce == SunBounce::kSensors && runtime_ != nullptr &&
-      !runtime_->has_sensor_importance()) {
-    throw std::invalid_argument(
-        "PortalSetLighting: bouncing to the sensors needs their importance");
-  }
+  check_sun_bounce(runtime_, sun_bounce);
   sun_bounce_ = sun_bounce;
   sun_keys_.clear();
   sun_indirect_.clear();
