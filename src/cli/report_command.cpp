@@ -31,11 +31,10 @@ AnnualReport year_of_daylight(const ReportArgs& args) {
   const Scene& scene = relit->scene();
   const AnnualHours hours = annual_hours(weather, OccupiedPeriod{});
   if (hours.hours.empty()) fail_input(args.weather, "no occupied hour has the sun up");
-  std::vector<std::size_t> sets(scene.sensors.size());
-  for (std::size_t k = 0; k < sets.size(); ++k) sets[k] = k;
   Progress progress("annual", hours.hours.size());
-  AnnualDaylight year = annual_daylight(*relit, annual_base_state(scene, state_path(args.state)),
-                                        hours.hours, sets, [&] { progress.advance(); });
+  AnnualDaylight year =
+      annual_daylight(*relit, annual_base_state(scene, state_path(args.state)), hours.hours,
+                      every_sensor_set(scene), [&] { progress.advance(); });
   progress.finish();
   AnnualReport out;
   char heading[256];

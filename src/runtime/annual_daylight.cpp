@@ -2,6 +2,7 @@
 #include "runtime/annual_daylight.h"
 
 #include <chrono>
+#include <numeric>
 #include <optional>
 
 #include "light/environment.h"
@@ -155,6 +156,12 @@ AnnualValues annual_sensor_values(RelitScene& relit, const LightingState& base,
   out.total_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
+}
+
+std::vector<std::size_t> every_sensor_set(const Scene& scene) {
+  std::vector<std::size_t> sets(scene.sensors.size());
+  std::iota(sets.begin(), sets.end(), std::size_t{0});
+  return sets;
 }
 
 AnnualDaylight annual_daylight(RelitScene& relit, const LightingState& base,

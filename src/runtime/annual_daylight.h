@@ -83,6 +83,9 @@ AnnualValues annual_sensor_values(RelitScene& relit, const LightingState& base,
 // `state` with every luminaire and emitter off: daylight alone (the studio's annual panel).
 LightingState daylight_alone(LightingState state);
 
+// Every sensor set of the scene, by index (what the report and the studio's panel compute).
+std::vector<std::size_t> every_sensor_set(const Scene& scene);
+
 // A year of the chosen sensor sets (indices into scene.sensors): every hour's values (sets back
 // to back, in the order given) and the climate-based metrics per sensor and per set — what
 // `relight annual`, `relight report --weather` and the studio's annual panel show.

@@ -380,19 +380,18 @@ struct StudioServer::Impl {
       const AnnualHours hours = annual_hours(r.weather, r.period);
       if (hours.hours.empty()) fail_input("message:/weather", "no occupied hour has the sun up");
       const std::unique_ptr<RelitScene> year_scene = open_for_annual(rlt);
-      std::vector<std::size_t> sets(scene().sensors.size());
-      for (std::size_t k = 0; k < sets.size(); ++k) sets[k] = k;
       std::size_t done = 0;
       auto last = std::chrono::steady_clock::now();
-      const AnnualDaylight year = annual_daylight(*year_scene, base, hours.hours, sets, [&] {
-        if (annual_stop) throw std::runtime_error("the server is stopping");
-        ++done;
-        const auto now = std::chrono::steady_clock::now();
-        if (now - last > std::chrono::milliseconds(100)) {
-          last = now;
-          send_json(id, annual_progress_message(seq, done, hours.hours.size(), "hours"));
-        }
-      });
+      const AnnualDaylight year =
+          annual_daylight(*year_scene, base, hours.hours, every_sensor_set(scene()), [&] {
+            if (annual_stop) throw std::runtime_error("the server is stopping");
+            ++done;
+            const auto now = std::chrono::steady_clock::now();
+            if (now - last > std::chrono::milliseconds(100)) {
+              last = now;
+              send_json(id, annual_progress_message(seq, done, hours.hours.size(), "hours"));
+            }
+          });
       const double seconds =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       send_json(id, annual_message(seq, scene(), r.weather, r.occupied, hours, year, seconds));
