@@ -19,6 +19,10 @@ debian_packages=(
   libembree-dev libtbb-dev libeigen3-dev
   libtinyobjloader-dev libtinygltf-dev
   libopenexr-dev libstb-dev
+  # relight capture (issue 14): Debevec–Malik response and merge (OpenCV photo), JPEG/PNG/TIFF
+  # decoding (OpenCV imgcodecs), EXIF exposure (libexif). Only the OpenCV modules used: the
+  # libopencv-dev meta package would bring 212 packages (Qt, VTK, MPI, GDAL).
+  libopencv-photo-dev libopencv-imgcodecs-dev libexif-dev
   nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   # Test assets: the CC0 HDR environment maps (OpenEXR, DWAB) of the daylight tests.

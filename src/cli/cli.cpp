@@ -27,6 +27,7 @@ int run_cli(int argc, char** argv) {
   add_analyze_command(app, action);
   add_serve_command(app, action);
   add_nearfield_command(app, action);
+  add_capture_command(app, action);
   add_demo_command(app, action);
   try {
     app.parse(argc, argv);

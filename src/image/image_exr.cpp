@@ -91,8 +91,10 @@ std::vector<std::uint8_t> encode_exr_as(const Image& image, Imf::PixelType type)
   return stream.bytes();
 }
 
-std::vector<std::uint8_t> encode_exr(const Image& image) {
-  if (needs_float(image)) return encode_exr_as<float>(image, Imf::FLOAT);
+std::vector<std::uint8_t> encode_exr(const Image& image, ExrChannels channels) {
+  if (channels == ExrChannels::kFloat || needs_float(image)) {
+    return encode_exr_as<float>(image, Imf::FLOAT);
+  }
   return encode_exr_as<Imath::half>(image, Imf::HALF);
 }
 
@@ -178,11 +180,11 @@ Image decode_exr(const fs::path& path) {
 
 }  // namespace
 
-void write_exr(const fs::path& path, const Image& image) {
+void write_exr(const fs::path& path, const Image& image, ExrChannels channels) {
   if (!is_valid(image)) throw std::invalid_argument("write_exr: pixel count != width × height");
   std::vector<std::uint8_t> bytes;
   try {
-    bytes = encode_exr(image);
+    bytes = encode_exr(image, channels);
   } catch (const std::exception& e) {  // Iex::BaseExc derives from std::exception
     fail_input(path.string(), std::string("cannot encode OpenEXR: ") + e.what());
   }

@@ -18,7 +18,10 @@ inline constexpr double kHalfMax = 65504.0;
 // in magnitude — direct sunlight is ~1e5 lx, a luminaire's lamp ~1e7 cd/m² — in which case
 // they are 32-bit floats so that no physical value becomes infinite. NaN stays NaN.
 // Throws InputError "PATH: reason" when the file cannot be written.
-void write_exr(const std::filesystem::path& path, const Image& image);
+// kFloat writes 32-bit floats whatever the values (a captured environment map, issue 14).
+enum class ExrChannels { kAuto, kFloat };
+void write_exr(const std::filesystem::path& path, const Image& image,
+               ExrChannels channels = ExrChannels::kAuto);
 
 // Reads the first part of any scanline or tiled OpenEXR file whose channels include R, G
 // or B (missing ones read as 0; alpha and other channels are ignored), or a luminance

@@ -1,0 +1,171 @@
+// Photo I/O (see photo.h): OpenCV's imgcodecs decodes and encodes pixels, libexif reads and
+// builds the EXIF block. A JPEG's EXIF is an APP1 segment right after the start-of-image
+// marker: "FF E1", a big-endian length that counts itself, then "Exif\0\0" and a TIFF
+// structure (the EXIF 2.3 standard, CIPA DC-008, §4.5.4).
+#include "image/photo.h"
+
+#include <libexif/exif-data.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <memory>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <stdexcept>
+#include <string>
+
+#include "common/input_error.h"
+#include "image/image_bytes.h"
+
+namespace relight {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct ExifDataUnref {
+  void operator()(ExifData* data) const { exif_data_unref(data); }
+};
+using ExifDataPtr = std::unique_ptr<ExifData, ExifDataUnref>;
+
+std::optional<double> rational_tag(ExifData* data, ExifTag tag) {
+  ExifEntry* entry = exif_data_get_entry(data, tag);
+  if (entry == nullptr || entry->format != EXIF_FORMAT_RATIONAL || entry->components < 1 ||
+      entry->data == nullptr) {
+    return std::nullopt;
+  }
+  const ExifRational r = exif_get_rational(entry->data, exif_data_get_byte_order(data));
+  if (r.denominator == 0 || r.numerator == 0) return std::nullopt;
+  return static_cast<double>(r.numerator) / static_cast<double>(r.denominator);
+}
+
+std::optional<double> integer_tag(ExifData* data, ExifTag tag) {
+  ExifEntry* entry = exif_data_get_entry(data, tag);
+  if (entry == nullptr || entry->components < 1 || entry->data == nullptr) return std::nullopt;
+  const ExifByteOrder order = exif_data_get_byte_order(data);
+  double value = 0;
+  if (entry->format == EXIF_FORMAT_SHORT) {
+    value = exif_get_short(entry->data, order);
+  } else if (entry->format == EXIF_FORMAT_LONG) {
+    value = exif_get_long(entry->data, order);
+  } else {
+    return std::nullopt;
+  }
+  if (value <= 0) return std::nullopt;
+  return value;
+}
+
+// A rational close to t: 1/n for the usual shutter speeds, else millionths.
+ExifRational to_rational(double t) {
+  if (t > 0 && t < 1) {
+    const double n = std::round(1 / t);
+    if (std::abs(1 / n - t) <= 1e-6 * t) return {1, static_cast<ExifLong>(n)};
+  }
+  return {static_cast<ExifLong>(std::lround(t * 1e6)), 1000000};
+}
+
+// Adds a tag to an IFD with data allocated as libexif frees it (its default allocator).
+void add_entry(ExifData* data, ExifIfd ifd, ExifTag tag, ExifFormat format, std::size_t byte_size,
+               const auto& write) {
+  ExifEntry* entry = exif_entry_new();
+  if (entry == nullptr) throw std::bad_alloc();
+  entry->tag = tag;
+  entry->format = format;
+  entry->components = 1;
+  entry->size = static_cast<unsigned int>(byte_size);
+  entry->data = static_cast<unsigned char*>(std::calloc(1, byte_size));
+  if (entry->data == nullptr) {
+    exif_entry_unref(entry);
+    throw std::bad_alloc();
+  }
+  write(entry->data, exif_data_get_byte_order(data));
+  exif_content_add_entry(data->ifd[ifd], entry);
+  exif_entry_unref(entry);
+}
+
+std::vector<std::uint8_t> exif_block(const PhotoExposure& exposure) {
+  const ExifDataPtr data(exif_data_new());
+  if (!data) throw std::bad_alloc();
+  exif_data_set_byte_order(data.get(), EXIF_BYTE_ORDER_INTEL);
+  exif_data_set_data_type(data.get(), EXIF_DATA_TYPE_COMPRESSED);
+  const auto add_rational = [&](ExifTag tag, double value) {
+    add_entry(data.get(), EXIF_IFD_EXIF, tag, EXIF_FORMAT_RATIONAL, 8,
+              [value](unsigned char* bytes, ExifByteOrder order) {
+                exif_set_rational(bytes, order, to_rational(value));
+              });
+  };
+  if (exposure.exposure_time_s) add_rational(EXIF_TAG_EXPOSURE_TIME, *exposure.exposure_time_s);
+  if (exposure.f_number) add_rational(EXIF_TAG_FNUMBER, *exposure.f_number);
+  if (exposure.iso) {
+    const auto iso = static_cast<ExifShort>(std::lround(*exposure.iso));
+    add_entry(
+        data.get(), EXIF_IFD_EXIF, EXIF_TAG_ISO_SPEED_RATINGS, EXIF_FORMAT_SHORT, 2,
+        [iso](unsigned char* bytes, ExifByteOrder order) { exif_set_short(bytes, order, iso); });
+  }
+  unsigned char* bytes = nullptr;
+  unsigned int size = 0;
+  exif_data_save_data(data.get(), &bytes, &size);
+  const std::unique_ptr<unsigned char, decltype(&std::free)> owned(bytes, &std::free);
+  if (bytes == nullptr || size == 0) throw std::runtime_error("libexif: cannot build EXIF");
+  return {bytes, bytes + size};
+}
+
+}  // namespace
+
+Photo read_photo(const fs::path& path) {
+  std::error_code error;
+  if (!fs::is_regular_file(path, error)) fail_input(path.string(), "no such file");
+  const cv::Mat decoded = cv::imread(path.string(), cv::IMREAD_ANYDEPTH | cv::IMREAD_COLOR);
+  if (decoded.empty()) fail_input(path.string(), "cannot decode as JPEG, PNG or TIFF");
+  if (decoded.depth() != CV_8U && decoded.depth() != CV_16U) {
+    fail_input(path.string(), "not 8 or 16 bits per channel");
+  }
+  cv::Mat rgb;
+  cv::cvtColor(decoded, rgb, cv::COLOR_BGR2RGB);
+  Photo photo;
+  photo.width = rgb.cols;
+  photo.height = rgb.rows;
+  photo.bits = rgb.depth() == CV_8U ? 8 : 16;
+  photo.rgb.resize(3 * static_cast<std::size_t>(rgb.cols) * static_cast<std::size_t>(rgb.rows));
+  cv::Mat wide(rgb.rows, rgb.cols, CV_16UC3, photo.rgb.data());
+  rgb.convertTo(wide, CV_16UC3);
+  return photo;
+}
+
+PhotoExposure read_photo_exposure(const fs::path& path) {
+  const ExifDataPtr data(exif_data_new_from_file(path.c_str()));
+  if (!data) return {};
+  return {rational_tag(data.get(), EXIF_TAG_EXPOSURE_TIME),
+          rational_tag(data.get(), EXIF_TAG_FNUMBER),
+          integer_tag(data.get(), EXIF_TAG_ISO_SPEED_RATINGS)};
+}
+
+void write_photo_jpeg(const fs::path& path, const Photo& photo, int quality,
+                      const PhotoExposure& exposure) {
+  if (photo.bits != 8 || photo.width <= 0 || photo.height <= 0 ||
+      photo.rgb.size() != 3 * static_cast<std::size_t>(photo.width) * photo.height) {
+    throw std::invalid_argument("write_photo_jpeg: not an 8-bit photo of its size");
+  }
+  const cv::Mat wide(photo.height, photo.width, CV_16UC3,
+                     const_cast<std::uint16_t*>(photo.rgb.data()));
+  cv::Mat rgb;
+  wide.convertTo(rgb, CV_8UC3);
+  cv::Mat bgr;
+  cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
+  std::vector<std::uint8_t> jpeg;
+  if (!cv::imencode(".jpg", bgr, jpeg, {cv::IMWRITE_JPEG_QUALITY, quality}) || jpeg.size() < 2) {
+    fail_input(path.string(), "cannot encode JPEG");
+  }
+  const std::vector<std::uint8_t> exif = exif_block(exposure);
+  const std::size_t length = exif.size() + 2;
+  if (length > 0xFFFF) throw std::runtime_error("write_photo_jpeg: EXIF block too large");
+  std::vector<std::uint8_t> bytes(jpeg.begin(), jpeg.begin() + 2);  // SOI
+  bytes.insert(bytes.end(), {0xFF, 0xE1, static_cast<std::uint8_t>(length >> 8),
+                             static_cast<std::uint8_t>(length & 0xFF)});
+  bytes.insert(bytes.end(), exif.begin(), exif.end());
+  bytes.insert(bytes.end(), jpeg.begin() + 2, jpeg.end());
+  write_bytes_atomically(path, bytes);
+}
+
+}  // namespace relight

@@ -1,0 +1,161 @@
+// The issue's acceptance for `relight capture` (capture/capture.h) on a synthetic capture of
+// Blender's interior.exr (Debian blender-data): two 190° equidistant fisheye brackets with an
+// off-centre circle, a concave response, five exposures two stops apart in EXIF, 8-bit JPEG,
+// a dark lens-frame band and a photographer low in the back view. Tolerances from the issue.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <memory>
+
+#include "capture/capture.h"
+#include "light/environment_map_io.h"
+#include "math/equirect.h"
+#include "support/synthetic_capture.h"
+#include "support/temp_dir.h"
+
+namespace relight {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kInterior = "/usr/share/blender/datafiles/studiolights/world/interior.exr";
+
+double plane_illuminance(const EquirectMap& map, Vec3 normal) {
+  double e = 0;
+  for (int j = 0; j < map.height; ++j) {
+    const double omega = equirect_row_solid_angle(map.width, map.height, j);
+    for (int i = 0; i < map.width; ++i) {
+      const double c = dot(equirect_texel_direction(map.width, map.height, i, j), normal);
+      if (c > 0)
+        e += luminance(map.texels[static_cast<std::size_t>(j) * map.width + i]) * c * omega;
+    }
+  }
+  return e;
+}
+
+// Solid-angle-weighted mean luminance of the texels whose direction passes `keep`.
+template <typename Keep>
+double mean_luminance(const EquirectMap& map, Keep keep) {
+  double sum = 0, weight = 0;
+  for (int j = 0; j < map.height; ++j) {
+    const double omega = equirect_row_solid_angle(map.width, map.height, j);
+    for (int i = 0; i < map.width; ++i) {
+      if (!keep(equirect_texel_direction(map.width, map.height, i, j))) continue;
+      sum += luminance(map.texels[static_cast<std::size_t>(j) * map.width + i]) * omega;
+      weight += omega;
+    }
+  }
+  return sum / weight;
+}
+
+// Solid-angle-weighted mean luminance per cell of a 32 × 16 grid over (u, v).
+std::vector<double> grid_luminance(const EquirectMap& map) {
+  std::vector<double> sum(32 * 16, 0), weight(32 * 16, 0);
+  for (int j = 0; j < map.height; ++j) {
+    const double omega = equirect_row_solid_angle(map.width, map.height, j);
+    const int row = j * 16 / map.height;
+    for (int i = 0; i < map.width; ++i) {
+      const std::size_t cell = static_cast<std::size_t>(row) * 32 + i * 32 / map.width;
+      sum[cell] += luminance(map.texels[static_cast<std::size_t>(j) * map.width + i]) * omega;
+      weight[cell] += omega;
+    }
+  }
+  for (std::size_t c = 0; c < sum.size(); ++c) sum[c] /= weight[c];
+  return sum;
+}
+
+class CaptureAcceptance : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    if (!fs::exists(kInterior)) return;
+    truth_ =
+        std::make_unique<EquirectMap>(testing::within_bracket(read_environment_map(kInterior)));
+    folder_ = std::make_unique<testing::TempDir>();
+    const testing::SyntheticCapture photos =
+        testing::make_synthetic_capture(*truth_, folder_->path());
+    spec_circle_ = {photos.circle_cx, photos.circle_cy};
+    CaptureOptions options;
+    options.front = photos.front;
+    options.back = photos.back;
+    options.width = 512;
+    reading_ = plane_illuminance(*truth_, {0, 1, 0});
+    options.illuminance_lux = reading_;
+    result_ = std::make_unique<CaptureResult>(capture_environment(options));
+  }
+  static void TearDownTestSuite() {
+    result_.reset();
+    folder_.reset();
+    truth_.reset();
+  }
+  void SetUp() override {
+    if (!truth_) GTEST_SKIP() << kInterior << " not found (Debian blender-data)";
+  }
+
+  static inline std::unique_ptr<EquirectMap> truth_;
+  static inline std::unique_ptr<testing::TempDir> folder_;
+  static inline std::unique_ptr<CaptureResult> result_;
+  static inline std::pair<double, double> spec_circle_;
+  static inline double reading_ = 0;
+};
+
+TEST_F(CaptureAcceptance, IlluminanceOnPlanesFacingUpAndTheFourCardinalsIsWithin3Percent) {
+  const Vec3 normals[] = {{0, 1, 0}, {0, 0, -1}, {0, 0, 1}, {1, 0, 0}, {-1, 0, 0}};
+  const char* names[] = {"up", "north", "south", "east", "west"};
+  for (int k = 0; k < 5; ++k) {
+    const double truth = plane_illuminance(*truth_, normals[k]);
+    const double captured = plane_illuminance(result_->map, normals[k]);
+    EXPECT_NEAR(captured / truth, 1.0, 0.03) << names[k] << ": " << captured << " lx vs " << truth;
+  }
+  EXPECT_TRUE(result_->calibrated);
+  EXPECT_NEAR(result_->horizontal_illuminance / reading_, 1.0, 1e-9);
+}
+
+TEST_F(CaptureAcceptance, A32By16LuminanceGridHasAMeanRelativeErrorOfAtMost5Percent) {
+  const std::vector<double> truth = grid_luminance(*truth_);
+  const std::vector<double> captured = grid_luminance(result_->map);
+  double error = 0;
+  for (std::size_t c = 0; c < truth.size(); ++c) error += std::abs(captured[c] / truth[c] - 1);
+  error /= static_cast<double>(truth.size());
+  EXPECT_LE(error, 0.05);
+  RecordProperty("grid_mean_relative_error", std::to_string(error));
+}
+
+TEST_F(CaptureAcceptance, ThePhotographersDirectionsAreFilledWithin20PercentOfTheTruth) {
+  const double truth = mean_luminance(*truth_, testing::photographer_direction);
+  const double captured = mean_luminance(result_->map, testing::photographer_direction);
+  EXPECT_NEAR(captured / truth, 1.0, 0.20) << captured << " vs " << truth;
+  EXPECT_GT(result_->removed_sr, 0.0);
+}
+
+TEST_F(CaptureAcceptance, TheImageCircleCentreIsFoundWithin2Pixels) {
+  for (const CapturedView* view : {&result_->front, &result_->back}) {
+    EXPECT_NEAR(view->circle.cx, spec_circle_.first, 2.0);
+    EXPECT_NEAR(view->circle.cy, spec_circle_.second, 2.0);
+    EXPECT_NEAR(view->circle.radius, testing::SyntheticCaptureSpec{}.radius, 2.0);
+  }
+}
+
+TEST_F(CaptureAcceptance, TheRecoveredResponseIsWithin5PercentOfTheTrueCurveWhereWellExposed) {
+  // Both are known up to a factor: compare X(z)/X(128) over z = 16..240.
+  for (const auto& channel : result_->response.exposure) {
+    double worst = 0;
+    for (int z = 16; z <= 240; ++z) {
+      const double recovered = channel[static_cast<std::size_t>(z)] / channel[128];
+      const double truth = testing::true_inverse_response(z) / testing::true_inverse_response(128);
+      worst = std::max(worst, std::abs(recovered / truth - 1));
+    }
+    EXPECT_LE(worst, 0.05);
+  }
+}
+
+TEST_F(CaptureAcceptance, TheLensFrameBandIsCutFromEachView) {
+  // The band starts at 92.5° off axis: each view is used to just inside it, not beyond.
+  for (const CapturedView* view : {&result_->front, &result_->back}) {
+    EXPECT_LE(view->clean_limit_deg, 92.5);
+    EXPECT_GE(view->clean_limit_deg, 90.5);
+  }
+}
+
+}  // namespace
+}  // namespace relight

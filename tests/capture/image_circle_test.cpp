@@ -1,0 +1,60 @@
+// The image circle (capture/image_circle.h) of synthetic fisheye photos: off-centre, with a
+// dark lens-frame band inside the rim, cropped by the photo's edge.
+#include "capture/image_circle.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "common/input_error.h"
+
+namespace relight {
+namespace {
+
+// A lit disc (anti-aliased by 4 × 4 samples) with a band at 0.96–1 of the radius darkened to
+// `band` of the value, on black.
+Photo disc(int width, int height, double cx, double cy, double r, double band) {
+  Photo photo{width, height, 8, std::vector<std::uint16_t>(3 * width * height, 0)};
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      double sum = 0;
+      for (int s = 0; s < 16; ++s) {
+        const double d = std::hypot(x + (s % 4 + 0.5) / 4 - cx, y + (s / 4 + 0.5) / 4 - cy);
+        if (d <= r) sum += d > 0.96 * r ? band : 1;
+      }
+      const auto v = static_cast<std::uint16_t>(std::lround(180 * sum / 16));
+      for (int c = 0; c < 3; ++c) photo.rgb[photo.offset(x, y) + c] = v;
+    }
+  }
+  return photo;
+}
+
+TEST(ImageCircle, AnOffCentreCircleWithADarkRimBandIsFoundWithinAHalfPixel) {
+  const Photo photo = disc(640, 480, 331.4, 228.7, 201.3, 0.3);
+  const ImageCircle c = find_image_circle(photo, "test");
+  EXPECT_NEAR(c.cx, 331.4, 0.5);
+  EXPECT_NEAR(c.cy, 228.7, 0.5);
+  EXPECT_NEAR(c.radius, 201.3, 0.5);
+}
+
+TEST(ImageCircle, ACircleCroppedByThePhotosTopAndBottomIsStillFoundWithinAHalfPixel) {
+  const Photo photo = disc(640, 400, 322.2, 199.1, 230.6, 0.3);
+  const ImageCircle c = find_image_circle(photo, "test");
+  EXPECT_NEAR(c.cx, 322.2, 0.5);
+  EXPECT_NEAR(c.cy, 199.1, 0.5);
+  EXPECT_NEAR(c.radius, 230.6, 0.5);
+}
+
+TEST(ImageCircle, ABlackPhotoIsAnInputErrorNamingIt) {
+  const Photo photo{64, 48, 8, std::vector<std::uint16_t>(3 * 64 * 48, 0)};
+  try {
+    find_image_circle(photo, "dark.jpg");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("dark.jpg: no fisheye image circle found", 0), 0u)
+        << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace relight

@@ -1,0 +1,93 @@
+// Photo I/O (image/photo.h): JPEG with the EXIF exposure a phone writes, 16-bit PNG, and
+// errors naming the file.
+#include "image/photo.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+
+#include "common/input_error.h"
+#include "support/temp_dir.h"
+
+namespace relight {
+namespace {
+
+Photo gradient(int width, int height) {
+  Photo photo{width, height, 8, std::vector<std::uint16_t>(3 * width * height)};
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const std::size_t o = photo.offset(x, y);
+      photo.rgb[o] = static_cast<std::uint16_t>(255 * x / (width - 1));
+      photo.rgb[o + 1] = static_cast<std::uint16_t>(255 * y / (height - 1));
+      photo.rgb[o + 2] = 128;
+    }
+  }
+  return photo;
+}
+
+TEST(Photo, AJpegCarriesTheExposureTimeFNumberAndIsoItWasWrittenWith) {
+  const testing::TempDir dir;
+  const Photo photo = gradient(64, 48);
+  write_photo_jpeg(dir.path() / "a.jpg", photo, 95, {1.0 / 250, 2.8, 200});
+  const PhotoExposure e = read_photo_exposure(dir.path() / "a.jpg");
+  ASSERT_TRUE(e.exposure_time_s && e.f_number && e.iso);
+  EXPECT_NEAR(*e.exposure_time_s, 0.004, 1e-9);
+  EXPECT_NEAR(*e.f_number, 2.8, 1e-6);
+  EXPECT_EQ(*e.iso, 200);
+  // A time that is no 1/n is kept to a millionth of a second.
+  write_photo_jpeg(dir.path() / "b.jpg", photo, 95, {0.016, std::nullopt, std::nullopt});
+  const PhotoExposure b = read_photo_exposure(dir.path() / "b.jpg");
+  ASSERT_TRUE(b.exposure_time_s);
+  EXPECT_NEAR(*b.exposure_time_s, 0.016, 1e-6);
+  EXPECT_FALSE(b.f_number);
+  EXPECT_FALSE(b.iso);
+}
+
+TEST(Photo, AJpegReadsBackWithinThreeLevelsOnAverageInRgbOrder) {
+  const testing::TempDir dir;
+  const Photo photo = gradient(64, 48);
+  write_photo_jpeg(dir.path() / "a.jpg", photo, 95, {0.01, std::nullopt, std::nullopt});
+  const Photo read = read_photo(dir.path() / "a.jpg");
+  ASSERT_EQ(read.width, 64);
+  ASSERT_EQ(read.height, 48);
+  EXPECT_EQ(read.bits, 8);
+  double error = 0;
+  for (std::size_t i = 0; i < photo.rgb.size(); ++i) error += std::abs(read.rgb[i] - photo.rgb[i]);
+  EXPECT_LT(error / static_cast<double>(photo.rgb.size()), 3.0);
+  // Red grows to the right: the channels are not swapped (OpenCV decodes BGR).
+  EXPECT_GT(read.rgb[read.offset(63, 10)], 240);
+  EXPECT_LT(read.rgb[read.offset(0, 10)], 15);
+}
+
+TEST(Photo, ASixteenBitPngReadsAsSixteenBitsAndHasNoExif) {
+  const testing::TempDir dir;
+  cv::Mat bgr(4, 5, CV_16UC3, cv::Scalar(1000, 30000, 65535));  // B, G, R
+  ASSERT_TRUE(cv::imwrite((dir.path() / "a.png").string(), bgr));
+  const Photo read = read_photo(dir.path() / "a.png");
+  EXPECT_EQ(read.bits, 16);
+  EXPECT_EQ(read.max_value(), 65535);
+  EXPECT_EQ(read.rgb[0], 65535);
+  EXPECT_EQ(read.rgb[1], 30000);
+  EXPECT_EQ(read.rgb[2], 1000);
+  const PhotoExposure e = read_photo_exposure(dir.path() / "a.png");
+  EXPECT_FALSE(e.exposure_time_s);
+}
+
+TEST(Photo, AMissingOrUndecodableFileIsAnInputErrorNamingIt) {
+  const testing::TempDir dir;
+  const auto expect_error = [](const std::filesystem::path& file, const std::string& reason) {
+    try {
+      read_photo(file);
+      FAIL() << "no error for " << file;
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()), file.string() + ": " + reason);
+    }
+  };
+  expect_error(dir.path() / "none.jpg", "no such file");
+  expect_error(dir.write("junk.jpg", "not a photo"), "cannot decode as JPEG, PNG or TIFF");
+}
+
+}  // namespace
+}  // namespace relight
