@@ -197,7 +197,12 @@ export class WindowsPanel {
       num('ground_albedo', 'Albedo', { min: 0, max: 1, step: 0.01 }, 'Reflectance of the ground below the horizon (Lambertian), 0..1; default 0.2');
       this._sunForm(b, env, f, num, commit, false);
     } else if (env.type === 'map') {
-      const file = el('input', { type: 'text', placeholder: 'sky.exr or sky.hdr', title: 'Equirectangular HDR map (.exr or .hdr) in cd/m²; relative paths resolve against the folder of the .rlt. Press Enter to apply.' });
+      const file = el('input', {
+        type: 'text',
+        placeholder: 'sky.exr, sky.hdr or a capture',
+        title: 'Equirectangular HDR map (.exr or .hdr) in cd/m², such as a room captured with `relight capture` (docs/capture.md); relative paths resolve against the folder of the .rlt. Press Enter to apply.',
+        dataset: { testid: `env-file-${b.i}` },
+      });
       const apply = () => {
         b.env.file = file.value.trim();
         commit();

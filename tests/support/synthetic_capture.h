@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,10 @@ struct SyntheticCaptureSpec {
   int jpeg_quality = 95;
   int supersample = 3;              // k × k samples a pixel (anti-aliases the circle's edge)
   double middle_time_s = 1.0 / 60;  // the middle shot's exposure time
+  // A camera that records ISO and f-number follows the reflected-light meter equation
+  // (ISO 2720, K = 12.5): x(128) = true_response⁻¹(128) at L = K N²/(t S). Unset: the gain
+  // puts the map's log-average at x = 0.18 in the middle shot.
+  std::optional<double> iso, f_number;
 };
 
 // The camera's response: pixel value / 255 = f(x) for exposure x (x = 1 saturates),
@@ -87,7 +92,11 @@ inline Rgb synthetic_pixel(const EquirectMap& map, const SyntheticCaptureSpec& s
 
 // The exposure gain (x per cd/m²·s) of a capture: the middle shot puts the map's log-average
 // luminance at x = 0.18, as a phone's automatic exposure would.
+inline double true_inverse_response(double z);
 inline double capture_gain(const EquirectMap& map, const SyntheticCaptureSpec& s) {
+  if (s.iso && s.f_number) {
+    return true_inverse_response(128) * *s.iso / (12.5 * *s.f_number * *s.f_number);
+  }
   double log_sum = 0;
   for (const Rgb& v : map.texels) log_sum += std::log(std::max(luminance(v), 1e-9));
   const double log_average = std::exp(log_sum / static_cast<double>(map.texels.size()));
@@ -145,7 +154,7 @@ inline SyntheticCapture make_synthetic_capture(const EquirectMap& map,
       }
       const std::filesystem::path file =
           folder / ((front ? "front_" : "back_") + std::to_string(k + 1) + ".jpg");
-      write_photo_jpeg(file, photo, s.jpeg_quality, {t, std::nullopt, std::nullopt});
+      write_photo_jpeg(file, photo, s.jpeg_quality, {t, s.f_number, s.iso});
       (front ? capture.front : capture.back).push_back(file);
     }
   }
