@@ -92,7 +92,8 @@ std::vector<std::size_t> sample_offsets(const Bracket& bracket, const ImageCircl
 // One channel-interleaved kSampleSide² sample image per shot of a bracket.
 std::vector<cv::Mat> sample_images(const Bracket& bracket, const ImageCircle& circle) {
   std::vector<std::size_t> offsets = sample_offsets(bracket, circle);
-  offsets.resize(kSampleSide * kSampleSide, offsets.empty() ? 0 : offsets.back());
+  offsets.resize(static_cast<std::size_t>(kSampleSide) * kSampleSide,
+                 offsets.empty() ? 0 : offsets.back());
   std::vector<cv::Mat> images;
   for (const Photo& shot : bracket.shots) {
     cv::Mat samples(kSampleSide, kSampleSide, CV_8UC3);
@@ -134,8 +135,9 @@ int coverage(const std::vector<cv::Mat>& images) {
 }
 
 CameraResponse calibrate(const std::vector<cv::Mat>& images, const std::vector<double>& exposures) {
-  std::vector<float> times;
-  for (const double t : exposures) times.push_back(static_cast<float>(t));
+  std::vector<float> times(exposures.size());
+  std::transform(exposures.begin(), exposures.end(), times.begin(),
+                 [](double t) { return static_cast<float>(t); });
   cv::Mat curve;
   cv::createCalibrateDebevec(images.front().rows * images.front().cols, 30.0f, false)
       ->process(images, curve, times);
@@ -178,6 +180,7 @@ CameraResponse recover_response(std::span<const Bracket* const> brackets,
     std::vector<cv::Mat> joint;
     for (std::size_t s = 0; s < samples.front().size(); ++s) {
       std::vector<cv::Mat> row;
+      row.reserve(samples.size());
       for (const auto& bracket_samples : samples) row.push_back(bracket_samples[s]);
       cv::Mat side_by_side;
       cv::hconcat(row, side_by_side);
@@ -195,7 +198,7 @@ CameraResponse recover_response(std::span<const Bracket* const> brackets,
 HdrPhoto merge_bracket(const Bracket& bracket, const CameraResponse& response) {
   const Photo& first = bracket.shots.front();
   const int zmax = first.max_value();
-  const auto levels = static_cast<std::size_t>(zmax + 1);
+  const std::size_t levels = static_cast<std::size_t>(zmax) + 1;
   const std::size_t shots = bracket.shots.size();
   // Per shot and channel: ln X(z) − ln Δt; one hat table for all.
   std::vector<float> log_exposure(shots * 3 * levels);

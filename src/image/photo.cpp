@@ -6,6 +6,7 @@
 
 #include <libexif/exif-data.h>
 
+#include <libexif/exif-mem.h>
 #include <cmath>
 #include <cstdlib>
 #include <memory>
@@ -65,20 +66,24 @@ ExifRational to_rational(double t) {
   return {static_cast<ExifLong>(std::lround(t * 1e6)), 1000000};
 }
 
-// Adds a tag to an IFD with data allocated as libexif frees it (its default allocator).
+// Adds a tag to an IFD, its data allocated by the entry's own allocator (which frees it).
 void add_entry(ExifData* data, ExifIfd ifd, ExifTag tag, ExifFormat format, std::size_t byte_size,
                const auto& write) {
-  ExifEntry* entry = exif_entry_new();
-  if (entry == nullptr) throw std::bad_alloc();
+  ExifMem* mem = exif_mem_new_default();
+  if (mem == nullptr) throw std::bad_alloc();
+  ExifEntry* entry = exif_entry_new_mem(mem);
+  auto* bytes = static_cast<unsigned char*>(
+      entry == nullptr ? nullptr : exif_mem_alloc(mem, static_cast<ExifLong>(byte_size)));
+  exif_mem_unref(mem);  // the entry holds its own reference
+  if (bytes == nullptr) {
+    if (entry != nullptr) exif_entry_unref(entry);
+    throw std::bad_alloc();
+  }
   entry->tag = tag;
   entry->format = format;
   entry->components = 1;
   entry->size = static_cast<unsigned int>(byte_size);
-  entry->data = static_cast<unsigned char*>(std::calloc(1, byte_size));
-  if (entry->data == nullptr) {
-    exif_entry_unref(entry);
-    throw std::bad_alloc();
-  }
+  entry->data = bytes;
   write(entry->data, exif_data_get_byte_order(data));
   exif_content_add_entry(data->ifd[ifd], entry);
   exif_entry_unref(entry);

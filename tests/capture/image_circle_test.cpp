@@ -29,20 +29,20 @@ Photo disc(int width, int height, double cx, double cy, double r, double band) {
   return photo;
 }
 
+void expect_found(int width, int height, ImageCircle truth) {
+  const ImageCircle c =
+      find_image_circle(disc(width, height, truth.cx, truth.cy, truth.radius, 0.3), "test");
+  EXPECT_NEAR(c.cx, truth.cx, 0.5);
+  EXPECT_NEAR(c.cy, truth.cy, 0.5);
+  EXPECT_NEAR(c.radius, truth.radius, 0.5);
+}
+
 TEST(ImageCircle, AnOffCentreCircleWithADarkRimBandIsFoundWithinAHalfPixel) {
-  const Photo photo = disc(640, 480, 331.4, 228.7, 201.3, 0.3);
-  const ImageCircle c = find_image_circle(photo, "test");
-  EXPECT_NEAR(c.cx, 331.4, 0.5);
-  EXPECT_NEAR(c.cy, 228.7, 0.5);
-  EXPECT_NEAR(c.radius, 201.3, 0.5);
+  expect_found(640, 480, {331.4, 228.7, 201.3});
 }
 
 TEST(ImageCircle, ACircleCroppedByThePhotosTopAndBottomIsStillFoundWithinAHalfPixel) {
-  const Photo photo = disc(640, 400, 322.2, 199.1, 230.6, 0.3);
-  const ImageCircle c = find_image_circle(photo, "test");
-  EXPECT_NEAR(c.cx, 322.2, 0.5);
-  EXPECT_NEAR(c.cy, 199.1, 0.5);
-  EXPECT_NEAR(c.radius, 230.6, 0.5);
+  expect_found(640, 400, {322.2, 199.1, 230.6});
 }
 
 TEST(ImageCircle, ABlackPhotoIsAnInputErrorNamingIt) {

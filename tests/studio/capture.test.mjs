@@ -13,7 +13,7 @@ import path from 'node:path';
 import zlib from 'node:zlib';
 
 import * as browser from './browser_support.mjs';
-import { connect, decodeFrame, mean, relightBinary, startServer, stopServer } from './studio_support.mjs';
+import { connect, mean, nextStateAndFrame, relightBinary, startServer, stopServer } from './studio_support.mjs';
 
 const kLuminance = 2000;
 
@@ -73,11 +73,7 @@ test.after(async () => {
 
 const testid = (id) => page.locator(`[data-testid="${id}"]`);
 
-async function nextFrame() {
-  const state = await watcher.nextJson('state');
-  const frame = decodeFrame((await watcher.next((m) => m.binary && m.tag === 'RLFR')).data);
-  return { state, frame };
-}
+const nextFrame = () => nextStateAndFrame(watcher);
 
 test('a captured map typed into the Windows panel lights the room like the surround it shows', async () => {
   const times = [1 / 1000, 1 / 250, 1 / 62.5];

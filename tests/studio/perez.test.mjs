@@ -7,7 +7,7 @@ import test from 'node:test';
 import assert from 'node:assert/strict';
 
 import * as browser from './browser_support.mjs';
-import { connect, decodeFrame, mean, startServer, stopServer } from './studio_support.mjs';
+import { connect, mean, nextStateAndFrame, startServer, stopServer } from './studio_support.mjs';
 
 let server, studio, page, watcher;
 
@@ -26,11 +26,7 @@ test.after(async () => {
 
 const testid = (id) => page.locator(`[data-testid="${id}"]`);
 
-async function nextFrame() {
-  const state = await watcher.nextJson('state');
-  const frame = decodeFrame((await watcher.next((m) => m.binary && m.tag === 'RLFR')).data);
-  return { state, frame };
-}
+const nextFrame = () => nextStateAndFrame(watcher);
 
 test('a window lit by a Perez sky from the Windows panel', async () => {
   const hello = await watcher.nextJson('hello');

@@ -174,3 +174,10 @@ export function decodeObjects(buf) {
 }
 
 export const mean = (values) => values.reduce((a, b) => a + b, 0) / values.length;
+
+// The next state message a client gets and the frame after it: what a change produced.
+export async function nextStateAndFrame(client) {
+  const state = await client.nextJson('state');
+  const frame = decodeFrame((await client.next((m) => m.binary && m.tag === 'RLFR')).data);
+  return { state, frame };
+}
