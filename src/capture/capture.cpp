@@ -57,9 +57,9 @@ struct View {
   FisheyeView geometry;
 };
 
-View load_view(const std::string& name, std::span<const fs::path> files,
-               std::span<const double> times, const FisheyeLens& lens, bool front) {
-  View v{load_bracket(name, files, times), {}, {}, {}};
+// The view of a loaded bracket: its image circle (on the longest exposure) and orientation.
+View find_view(Bracket bracket, const FisheyeLens& lens, bool front) {
+  View v{std::move(bracket), {}, {}, {}};
   const std::size_t longest = longest_shot(v.bracket);
   v.captured.circle =
       find_image_circle(v.bracket.shots[longest], v.bracket.files[longest].string());
@@ -95,19 +95,23 @@ CaptureResult capture_environment(const CaptureOptions& options) {
     fail_input("--illuminance", "must be positive (lx)");
   }
   const auto [front_times, back_times] = split_times(options);
-  View front = load_view("front", options.front, front_times, options.lens, true);
-  View back = load_view("back", options.back, back_times, options.lens, false);
-  if (front.bracket.shots[0].width != back.bracket.shots[0].width ||
-      front.bracket.shots[0].height != back.bracket.shots[0].height) {
-    fail_input(back.bracket.files[0].string(),
-               "the back photos' size differs from the front photos' (" +
-                   front.bracket.files[0].string() + ")");
+  Bracket front_bracket = load_bracket("front", options.front, front_times);
+  Bracket back_bracket = load_bracket("back", options.back, back_times);
+  const Photo& f = front_bracket.shots[0];
+  const Photo& b = back_bracket.shots[0];
+  if (f.width != b.width || f.height != b.height) {
+    std::ostringstream reason;
+    reason << b.width << " × " << b.height << " px, but the front photos ("
+           << front_bracket.files[0].string() << ") are " << f.width << " × " << f.height;
+    fail_input(back_bracket.files[0].string(), reason.str());
   }
-
-  if (front.bracket.shots[0].bits != back.bracket.shots[0].bits) {
-    fail_input(back.bracket.files[0].string(),
-               "the back photos' bit depth differs from the front photos'");
+  if (f.bits != b.bits) {
+    fail_input(back_bracket.files[0].string(), std::to_string(b.bits) +
+                                                   " bits per channel, but the front photos have " +
+                                                   std::to_string(f.bits));
   }
+  View front = find_view(std::move(front_bracket), options.lens, true);
+  View back = find_view(std::move(back_bracket), options.lens, false);
   const Bracket* brackets[] = {&front.bracket, &back.bracket};
   const ImageCircle circles[] = {front.captured.circle, back.captured.circle};
   const CameraResponse response = recover_response(brackets, circles);

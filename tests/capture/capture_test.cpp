@@ -214,5 +214,56 @@ TEST(CaptureClipping, AReadingGivesTheMissingFluxToClippedTexelsWhenExifFixesThe
   EXPECT_LT(error_attributed, error_scaled);
 }
 
+// A capture of other photos than the acceptance's: small, through `spec`, with the times given.
+CaptureResult capture_of(const EquirectMap& truth, const testing::SyntheticCaptureSpec& spec,
+                         FisheyeLens lens) {
+  const testing::TempDir dir;
+  const testing::SyntheticCapture photos = testing::make_synthetic_capture(truth, dir.path(), spec);
+  CaptureOptions options;
+  options.front = photos.front;
+  options.back = photos.back;
+  options.exposure_times = photos.times;  // one list both brackets share
+  options.lens = lens;
+  options.width = 256;
+  options.illuminance_lux = plane_illuminance(truth, {0, 1, 0});
+  return capture_environment(options);
+}
+
+void expect_planes_within(const EquirectMap& truth, const EquirectMap& map, double tolerance) {
+  for (const Vec3 n : {Vec3{0, 0, -1}, Vec3{0, 0, 1}, Vec3{1, 0, 0}, Vec3{-1, 0, 0}}) {
+    EXPECT_NEAR(plane_illuminance(map, n) / plane_illuminance(truth, n), 1.0, tolerance)
+        << n.x << ", " << n.y << ", " << n.z;
+  }
+}
+
+testing::SyntheticCaptureSpec small_capture() {
+  testing::SyntheticCaptureSpec spec;
+  spec.width = 800;
+  spec.height = 600;
+  spec.radius = 285;
+  return spec;
+}
+
+TEST(CaptureLenses, AnEquisolidLensCapturedAsEquisolidKeepsThePlanesWithin3Percent) {
+  if (!fs::exists(kInterior)) GTEST_SKIP() << kInterior << " not found (Debian blender-data)";
+  testing::SyntheticCaptureSpec spec = small_capture();
+  spec.equisolid = true;
+  const EquirectMap truth = testing::within_bracket(read_environment_map(kInterior), spec);
+  const CaptureResult result =
+      capture_of(truth, spec, {FisheyeProjection::kEquisolid, 190 * kPi / 180});
+  expect_planes_within(truth, result.map, 0.03);
+}
+
+TEST(CaptureLenses, SixteenBitLinearPngsNeedNoResponseAndKeepThePlanesWithin3Percent) {
+  if (!fs::exists(kInterior)) GTEST_SKIP() << kInterior << " not found (Debian blender-data)";
+  testing::SyntheticCaptureSpec spec = small_capture();
+  spec.linear16 = true;
+  spec.shots = 3;
+  const EquirectMap truth = testing::within_bracket(read_environment_map(kInterior), spec);
+  const CaptureResult result = capture_of(truth, spec, {});
+  EXPECT_TRUE(result.response.linear);
+  expect_planes_within(truth, result.map, 0.03);
+}
+
 }  // namespace
 }  // namespace relight

@@ -158,6 +158,16 @@ TEST(CaptureCommand, BadInputExitsTwoNamingTheFileOrOption) {
       run_relight("capture --front " + two + " '" + (dir.path() / "gone.jpg").string() +
                   "' --back " + two + out),
       (dir.path() / "gone.jpg").string() + ": no such file");
+  Photo wide{80, 48, 8, std::vector<std::uint16_t>(3 * 80 * 48, 100)};
+  std::vector<fs::path> back;
+  for (int k = 0; k < 2; ++k) {
+    back.push_back(dir.path() / ("wide" + std::to_string(k) + ".jpg"));
+    write_photo_jpeg(back.back(), wide, 90, {0.01 * (k + 1), std::nullopt, std::nullopt});
+  }
+  testing::expect_input_error(run_relight("capture --front " + two + " --back '" +
+                                          back[0].string() + "' '" + back[1].string() + "'" + out),
+                              back[0].string() + ": 80 × 48 px, but the front photos (" +
+                                  files[0].string() + ") are 64 × 48");
   // A uniformly lit photo has no black surround: no fisheye circle in it.
   testing::expect_input_error(run_relight("capture --front " + two + " --back " + two + out),
                               files[1].string() + ": no fisheye image circle found");

@@ -13,6 +13,9 @@
 #include <string>
 #include <vector>
 
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+
 #include "image/photo.h"
 #include "light/environment.h"
 #include "math/equirect.h"
@@ -23,11 +26,13 @@ struct SyntheticCaptureSpec {
   int width = 1200, height = 900;               // photo size (px)
   double centre_dx = 23.5, centre_dy = -17.25;  // circle centre from the photo's centre (px)
   double radius = 430;                          // image circle radius (px)
-  double fov_deg = 190;                         // across the diameter, equidistant
-  int shots = 5;                                // exposures, two stops apart
-  double band_inner_deg = 92.5;                 // the lens frame's dark band: from here to the rim
-  double band_factor = 0.08;                    // its darkening
-  bool photographer = true;                     // a dark figure low in the back view
+  double fov_deg = 190;                         // across the diameter
+  bool equisolid = false;                       // r = 2f sin(θ/2) instead of r = fθ
+  bool linear16 = false;         // 16-bit PNGs, linear (value = 65535 x), no EXIF: pass the times
+  int shots = 5;                 // exposures, two stops apart
+  double band_inner_deg = 92.5;  // the lens frame's dark band: from here to the rim
+  double band_factor = 0.08;     // its darkening
+  bool photographer = true;      // a dark figure low in the back view
   int jpeg_quality = 95;
   int supersample = 3;              // k × k samples a pixel (anti-aliases the circle's edge)
   double middle_time_s = 1.0 / 60;  // the middle shot's exposure time
@@ -72,7 +77,9 @@ inline Rgb synthetic_pixel(const EquirectMap& map, const SyntheticCaptureSpec& s
   const double dx = x - cx, dy = cy - y;
   const double r = std::hypot(dx, dy) / s.radius;
   if (r > 1) return {};
-  const double theta = r * s.fov_deg / 2 * kPi / 180;
+  const double half_fov = s.fov_deg / 2 * kPi / 180;
+  const double theta =
+      s.equisolid ? 2 * std::asin(std::min(1.0, r * std::sin(half_fov / 2))) : r * half_fov;
   // Front: axis −z, right +x, up +y. Back: axis +z, right −x, up +y.
   const Vec3 axis = front ? Vec3{0, 0, -1} : Vec3{0, 0, 1};
   const Vec3 right = front ? Vec3{1, 0, 0} : Vec3{-1, 0, 0};
@@ -143,18 +150,31 @@ inline SyntheticCapture make_synthetic_capture(const EquirectMap& map,
     }
     for (int k = 0; k < s.shots; ++k) {
       const double t = capture.times[static_cast<std::size_t>(k)];
-      Photo photo{s.width, s.height, 8, std::vector<std::uint16_t>(radiance.size() * 3)};
-      for (std::size_t p = 0; p < radiance.size(); ++p) {
-        const Rgb v = radiance[p] * (gain * t);
-        const double c[3] = {v.r, v.g, v.b};
-        for (int ch = 0; ch < 3; ++ch) {
-          photo.rgb[3 * p + ch] =
-              static_cast<std::uint16_t>(std::lround(255 * true_response(c[ch])));
+      const std::string name = (front ? "front_" : "back_") + std::to_string(k + 1);
+      const std::filesystem::path file = folder / (name + (s.linear16 ? ".png" : ".jpg"));
+      if (s.linear16) {
+        cv::Mat bgr(s.height, s.width, CV_16UC3);
+        for (std::size_t p = 0; p < radiance.size(); ++p) {
+          const Rgb v = radiance[p] * (gain * t);
+          const auto q = [](double x) {
+            return static_cast<std::uint16_t>(std::lround(65535 * std::clamp(x, 0.0, 1.0)));
+          };
+          bgr.at<cv::Vec3w>(static_cast<int>(p / s.width), static_cast<int>(p % s.width)) = {
+              q(v.b), q(v.g), q(v.r)};
         }
+        cv::imwrite(file.string(), bgr);
+      } else {
+        Photo photo{s.width, s.height, 8, std::vector<std::uint16_t>(radiance.size() * 3)};
+        for (std::size_t p = 0; p < radiance.size(); ++p) {
+          const Rgb v = radiance[p] * (gain * t);
+          const double c[3] = {v.r, v.g, v.b};
+          for (int ch = 0; ch < 3; ++ch) {
+            photo.rgb[3 * p + ch] =
+                static_cast<std::uint16_t>(std::lround(255 * true_response(c[ch])));
+          }
+        }
+        write_photo_jpeg(file, photo, s.jpeg_quality, {t, s.f_number, s.iso});
       }
-      const std::filesystem::path file =
-          folder / ((front ? "front_" : "back_") + std::to_string(k + 1) + ".jpg");
-      write_photo_jpeg(file, photo, s.jpeg_quality, {t, s.f_number, s.iso});
       (front ? capture.front : capture.back).push_back(file);
     }
   }
