@@ -9,12 +9,15 @@
 #include <libexif/exif-mem.h>
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
 #include <memory>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "common/input_error.h"
 #include "image/image_bytes.h"
@@ -24,6 +27,8 @@ namespace relight {
 namespace fs = std::filesystem;
 
 namespace {
+
+constexpr std::size_t kHeaderBytes = 256 * 1024;  // EXIF and other APPn segments come first
 
 struct ExifDataUnref {
   void operator()(ExifData* data) const { exif_data_unref(data); }
@@ -116,11 +121,81 @@ std::vector<std::uint8_t> exif_block(const PhotoExposure& exposure) {
   return {bytes, bytes + size};
 }
 
+std::uint32_t big_endian(const std::vector<std::uint8_t>& b, std::size_t at, int bytes) {
+  std::uint32_t v = 0;
+  for (int k = 0; k < bytes; ++k) v = (v << 8) | b[at + static_cast<std::size_t>(k)];
+  return v;
+}
+
+std::uint32_t in_order(const std::vector<std::uint8_t>& b, std::size_t at, int bytes, bool little) {
+  if (!little) return big_endian(b, at, bytes);
+  std::uint32_t v = 0;
+  for (int k = bytes - 1; k >= 0; --k) v = (v << 8) | b[at + static_cast<std::size_t>(k)];
+  return v;
+}
+
+// Width × height from the first bytes of a JPEG (its start-of-frame marker, ITU-T T.81 §B.2.2),
+// PNG (IHDR, PNG §11.2.2) or TIFF (ImageWidth 256 and ImageLength 257 of the first IFD,
+// TIFF 6.0 §2); nullopt when the header does not say within these bytes.
+std::optional<std::pair<std::uint32_t, std::uint32_t>> declared_size(
+    const std::vector<std::uint8_t>& b) {
+  const std::size_t n = b.size();
+  if (n >= 24 && b[0] == 0x89 && b[1] == 'P' && b[2] == 'N' && b[3] == 'G') {
+    return std::pair{big_endian(b, 16, 4), big_endian(b, 20, 4)};
+  }
+  if (n >= 4 && b[0] == 0xFF && b[1] == 0xD8) {
+    std::size_t at = 2;
+    while (at + 9 < n && b[at] == 0xFF) {
+      const std::uint8_t marker = b[at + 1];
+      if (marker == 0xFF) {  // a fill byte before the marker
+        ++at;
+        continue;
+      }
+      const bool frame =
+          marker >= 0xC0 && marker <= 0xCF && marker != 0xC4 && marker != 0xC8 && marker != 0xCC;
+      if (frame) return std::pair{big_endian(b, at + 7, 2), big_endian(b, at + 5, 2)};
+      at += 2 + big_endian(b, at + 2, 2);
+    }
+    return std::nullopt;
+  }
+  const bool little = n >= 8 && b[0] == 'I' && b[1] == 'I' && b[2] == 42 && b[3] == 0;
+  const bool big = n >= 8 && b[0] == 'M' && b[1] == 'M' && b[2] == 0 && b[3] == 42;
+  if (!little && !big) return std::nullopt;
+  const std::size_t ifd = in_order(b, 4, 4, little);
+  if (ifd + 2 > n) return std::nullopt;
+  const std::size_t entries = in_order(b, ifd, 2, little);
+  std::uint32_t width = 0, height = 0;
+  for (std::size_t e = 0; e < entries && ifd + 2 + 12 * (e + 1) <= n; ++e) {
+    const std::size_t at = ifd + 2 + 12 * e;
+    const std::uint32_t tag = in_order(b, at, 2, little), type = in_order(b, at + 2, 2, little);
+    const std::uint32_t value =
+        type == 3 ? in_order(b, at + 8, 2, little) : in_order(b, at + 8, 4, little);
+    if (tag == 256) width = value;
+    if (tag == 257) height = value;
+  }
+  if (width == 0 || height == 0) return std::nullopt;
+  return std::pair{width, height};
+}
+
 }  // namespace
 
 Photo read_photo(const fs::path& path) {
   std::error_code error;
   if (!fs::is_regular_file(path, error)) fail_input(path.string(), "no such file");
+  {
+    // Refused before decoding: a header may declare a size whose pixels would not fit.
+    std::ifstream in(path, std::ios::binary);
+    std::vector<std::uint8_t> head(kHeaderBytes);
+    in.read(reinterpret_cast<char*>(head.data()), static_cast<std::streamsize>(head.size()));
+    head.resize(static_cast<std::size_t>(in.gcount()));
+    if (const auto size = declared_size(head);
+        size && static_cast<double>(size->first) * size->second > kMaxPhotoPixels) {
+      std::ostringstream reason;
+      reason << size->first << " × " << size->second << " px: more than relight reads ("
+             << kMaxPhotoPixels / 1e6 << " megapixels)";
+      fail_input(path.string(), reason.str());
+    }
+  }
   const cv::Mat decoded = cv::imread(path.string(), cv::IMREAD_ANYDEPTH | cv::IMREAD_COLOR);
   if (decoded.empty()) fail_input(path.string(), "cannot decode as JPEG, PNG or TIFF");
   if (decoded.depth() != CV_8U && decoded.depth() != CV_16U) {

@@ -26,9 +26,13 @@ struct Photo {
   }
 };
 
+// The most pixels read_photo decodes: 250 megapixels (a phone's largest sensor is 200).
+inline constexpr double kMaxPhotoPixels = 250e6;
+
 // Reads a JPEG, PNG or TIFF (any format imgcodecs decodes) of 8 or 16 bits per channel; grey
 // images read as R = G = B. Throws InputError "FILE: reason" when the file is missing, cannot
-// be decoded, or has another bit depth (a float TIFF).
+// be decoded, has another bit depth (a float TIFF), or its header declares more than
+// kMaxPhotoPixels (refused before decoding: JPEG, PNG and TIFF headers are read first).
 Photo read_photo(const std::filesystem::path& path);
 
 // What EXIF says of one exposure; each field is absent when the file has no such tag.

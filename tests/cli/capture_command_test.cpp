@@ -149,6 +149,12 @@ TEST(CaptureCommand, BadInputExitsTwoNamingTheFileOrOption) {
       run_relight("capture --front " + two + " --back " + two + out + " --exposure-times 1/x"),
       "--exposure-times: \"1/x\" is not a time in seconds");
   testing::expect_input_error(
+      run_relight("capture --front " + two + " --back " + two + out + " --fov-deg 170"),
+      "--fov-deg: two views cover the sphere only with more than 180°");
+  testing::expect_input_error(
+      run_relight("capture --front " + two + " --back " + two + out + " --width 301"),
+      "--width: must be an even number of texels, at least 16");
+  testing::expect_input_error(
       run_relight("capture --front " + two + " --back " + two + out + " --lens fisheye"),
       "--lens: \"fisheye\" is not equidistant, equisolid or stereographic");
   testing::expect_input_error(

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cstdlib>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
@@ -87,6 +88,33 @@ TEST(Photo, AMissingOrUndecodableFileIsAnInputErrorNamingIt) {
   };
   expect_error(dir.path() / "none.jpg", "no such file");
   expect_error(dir.write("junk.jpg", "not a photo"), "cannot decode as JPEG, PNG or TIFF");
+}
+
+TEST(Photo, AHeaderDeclaringMoreThan250MegapixelsIsRefusedBeforeDecodingInUnderASecond) {
+  const testing::TempDir dir;
+  write_photo_jpeg(dir.path() / "a.jpg", gradient(64, 48), 90, {0.01, std::nullopt, std::nullopt});
+  std::string jpeg = testing::read_text(dir.path() / "a.jpg");
+  const std::size_t sof = jpeg.find("\xFF\xC0");
+  ASSERT_NE(sof, std::string::npos);
+  jpeg.replace(sof + 5, 4, "\x75\x30\x75\x30");  // 30000 × 30000: 900 megapixels
+  const auto file = dir.write("huge.jpg", jpeg);
+  cv::Mat small(4, 4, CV_8UC3, cv::Scalar(1, 2, 3));
+  ASSERT_TRUE(cv::imwrite((dir.path() / "huge.png").string(), small));
+  std::string png = testing::read_text(dir.path() / "huge.png");
+  png.replace(16, 8, std::string("\x00\x01\x00\x00\x00\x01\x00\x00", 8));  // 65536²
+  const auto png_file = dir.write("huge.png", png);
+  for (const auto& [path, size] : {std::pair{file, std::string("30000 × 30000")},
+                                   std::pair{png_file, std::string("65536 × 65536")}}) {
+    const auto start = std::chrono::steady_clock::now();
+    try {
+      read_photo(path);
+      FAIL() << "no error for " << path;
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()),
+                path.string() + ": " + size + " px: more than relight reads (250 megapixels)");
+    }
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1.0);
+  }
 }
 
 }  // namespace
