@@ -28,7 +28,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr std::size_t kHeaderBytes = 256 * 1024;  // EXIF and other APPn segments come first
+constexpr std::size_t kHeaderBytes = std::size_t{256} * 1024;  // EXIF and other APPn segments come first
 
 struct ExifDataUnref {
   void operator()(ExifData* data) const { exif_data_unref(data); }

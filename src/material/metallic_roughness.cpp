@@ -197,7 +197,9 @@ Rgb specular_directional_albedo(const MetallicRoughness& m, double n_dot_v) {
 }
 
 Rgb hemispherical_albedo(const MetallicRoughness& m) {
-  const auto [a, b] = SpecularAlbedoTable::get().mean(m.roughness);
+  // Named copies, not a structured binding: clang 14 (the fuzz build) cannot capture those.
+  const auto mean_albedo = SpecularAlbedoTable::get().mean(m.roughness);
+  const double a = mean_albedo.first, b = mean_albedo.second;
   const Rgb f0 = f0_of(m);
   const auto channel = [&](double f0c, double albedo) {
     const double mean = f0c * a + b;
