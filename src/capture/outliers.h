@@ -13,7 +13,8 @@
 // held 1.2 m up (their feet are that far below the horizon), a tripod's legs. It grows by 2° to
 // take its soft edge. A person further away is not caught (docs/capture.md). Dark furniture near
 // the horizon (a television, a door, a wardrobe) and small dark things stay: they are the room.
-// Pinned by tests/capture/outliers_test.cpp.
+// Pinned by tests/capture/capture_test.cpp (the photographer's directions, the planes and the
+// grid, which a false detection of the room's dark furniture would break).
 #pragma once
 
 #include <cstdint>

@@ -12,7 +12,7 @@
 //    behind the camera appears at the rim of a view, the other saw the room there): the view
 //    nearer its own axis is kept alone.
 // 3. What no view saw cleanly is a hole, filled later (poisson_fill.h).
-// Pinned by tests/capture/view_blend_test.cpp.
+// Pinned by tests/capture/capture_test.cpp (TheLensFrameBandIsCutFromEachView, the planes).
 #pragma once
 
 #include <cstdint>

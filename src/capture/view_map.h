@@ -5,7 +5,7 @@
 // two pixels per map texel at the circle's centre, so that no texel aliases; each texel is
 // then the mean of 3 × 3 bilinear samples at points spread over it. A texel whose samples do
 // not all fall inside the field of view is unseen by the view.
-// Pinned by tests/capture/view_map_test.cpp.
+// Pinned by tests/capture/capture_test.cpp (the planes and the 32 × 16 grid against the truth).
 #pragma once
 
 #include <cstdint>
