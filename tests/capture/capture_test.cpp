@@ -171,10 +171,7 @@ TEST(CaptureClipping, AReadingGivesTheMissingFluxToClippedTexelsWhenExifFixesThe
   if (!fs::exists(kInterior)) GTEST_SKIP() << kInterior << " not found (Debian blender-data)";
   const EquirectMap truth = read_environment_map(kInterior);
   const testing::TempDir dir;
-  testing::SyntheticCaptureSpec spec;
-  spec.width = 800;
-  spec.height = 600;
-  spec.radius = 285;
+  testing::SyntheticCaptureSpec spec = testing::small_capture_spec();
   spec.iso = 100;
   spec.f_number = 2;
   spec.middle_time_s = 1.0 / 30;
@@ -236,17 +233,9 @@ void expect_planes_within(const EquirectMap& truth, const EquirectMap& map, doub
   }
 }
 
-testing::SyntheticCaptureSpec small_capture() {
-  testing::SyntheticCaptureSpec spec;
-  spec.width = 800;
-  spec.height = 600;
-  spec.radius = 285;
-  return spec;
-}
-
 TEST(CaptureLenses, AnEquisolidLensCapturedAsEquisolidKeepsThePlanesWithin3Percent) {
   if (!fs::exists(kInterior)) GTEST_SKIP() << kInterior << " not found (Debian blender-data)";
-  testing::SyntheticCaptureSpec spec = small_capture();
+  testing::SyntheticCaptureSpec spec = testing::small_capture_spec();
   spec.equisolid = true;
   const EquirectMap truth = testing::within_bracket(read_environment_map(kInterior), spec);
   const CaptureResult result =
@@ -256,7 +245,7 @@ TEST(CaptureLenses, AnEquisolidLensCapturedAsEquisolidKeepsThePlanesWithin3Perce
 
 TEST(CaptureLenses, SixteenBitLinearPngsNeedNoResponseAndKeepThePlanesWithin3Percent) {
   if (!fs::exists(kInterior)) GTEST_SKIP() << kInterior << " not found (Debian blender-data)";
-  testing::SyntheticCaptureSpec spec = small_capture();
+  testing::SyntheticCaptureSpec spec = testing::small_capture_spec();
   spec.linear16 = true;
   spec.shots = 3;
   const EquirectMap truth = testing::within_bracket(read_environment_map(kInterior), spec);

@@ -35,14 +35,6 @@ std::string photo_arguments(const testing::SyntheticCapture& photos) {
   return args;
 }
 
-testing::SyntheticCaptureSpec small_spec() {
-  testing::SyntheticCaptureSpec spec;
-  spec.width = 800;
-  spec.height = 600;
-  spec.radius = 285;
-  return spec;
-}
-
 double horizontal_illuminance(const EquirectMap& map) {
   double e = 0;
   for (int j = 0; j < map.height / 2; ++j) {
@@ -58,11 +50,12 @@ double horizontal_illuminance(const EquirectMap& map) {
 TEST(CaptureCommand, TheCapturedMapLightsAWindowLikeTheTruthWithin2PercentAndIsFloatExr) {
   if (!fs::exists(kInterior)) GTEST_SKIP() << kInterior << " not found (Debian blender-data)";
   const testing::TempDir dir;
-  const EquirectMap truth = testing::within_bracket(read_environment_map(kInterior), small_spec());
+  const EquirectMap truth =
+      testing::within_bracket(read_environment_map(kInterior), testing::small_capture_spec());
   write_exr(dir.path() / "truth.exr", Image{truth.width, truth.height, truth.texels},
             ExrChannels::kFloat);
   const testing::SyntheticCapture photos =
-      testing::make_synthetic_capture(truth, dir.path(), small_spec());
+      testing::make_synthetic_capture(truth, dir.path(), testing::small_capture_spec());
   const double reading = horizontal_illuminance(truth);
   const fs::path map = dir.path() / "room.exr";
   const testing::CommandResult r =
@@ -117,7 +110,7 @@ TEST(CaptureCommand, TheCapturedMapLightsAWindowLikeTheTruthWithin2PercentAndIsF
 TEST(CaptureCommand, HighlightsClippedInTheShortestExposureWarnWithTheirShare) {
   if (!fs::exists(kInterior)) GTEST_SKIP() << kInterior << " not found (Debian blender-data)";
   const testing::TempDir dir;
-  testing::SyntheticCaptureSpec spec = small_spec();
+  testing::SyntheticCaptureSpec spec = testing::small_capture_spec();
   spec.middle_time_s = 1.0 / 15;  // the ceiling lamps clip even at 1/240 s
   const testing::SyntheticCapture photos =
       testing::make_synthetic_capture(read_environment_map(kInterior), dir.path(), spec);
@@ -132,51 +125,47 @@ TEST(CaptureCommand, HighlightsClippedInTheShortestExposureWarnWithTheirShare) {
       << r.out;
 }
 
-TEST(CaptureCommand, BadInputExitsTwoNamingTheFileOrOption) {
-  const testing::TempDir dir;
-  Photo photo{64, 48, 8, std::vector<std::uint16_t>(3 * 64 * 48, 100)};
+// Two photos of `width` × 48 px, 0.01 and 0.02 s, uniformly grey (so no fisheye circle).
+std::vector<fs::path> grey_pair(const testing::TempDir& dir, const std::string& name, int width) {
+  const Photo photo{width, 48, 8, std::vector<std::uint16_t>(3 * width * 48, 100)};
   std::vector<fs::path> files;
   for (int k = 0; k < 2; ++k) {
-    files.push_back(dir.path() / ("p" + std::to_string(k) + ".jpg"));
+    files.push_back(dir.path() / (name + std::to_string(k) + ".jpg"));
     write_photo_jpeg(files.back(), photo, 90, {0.01 * (k + 1), std::nullopt, std::nullopt});
   }
-  const std::string two = "'" + files[0].string() + "' '" + files[1].string() + "'";
+  return files;
+}
+
+TEST(CaptureCommand, BadInputExitsTwoNamingTheFileOrOption) {
+  const testing::TempDir dir;
+  const std::vector<fs::path> files = grey_pair(dir, "p", 64), wide = grey_pair(dir, "wide", 80);
+  const auto quoted = [](const std::vector<fs::path>& paths) {
+    std::string list;
+    for (const fs::path& p : paths) list += " '" + p.string() + "'";
+    return list;
+  };
+  const std::string two = quoted(files), gone = (dir.path() / "gone.jpg").string();
+  const std::string pair = " --front" + two + " --back" + two;
+  const std::pair<std::string, std::string> cases[] = {
+      {pair + " --exposure-times 1,2,3", "--exposure-times: 3 times for 2 front and 2 back photos"},
+      {pair + " --exposure-times 1/x", "--exposure-times: \"1/x\" is not a time in seconds"},
+      {pair + " --fov-deg 170", "--fov-deg: two views cover the sphere only with more than 180°"},
+      {pair + " --width 301", "--width: must be an even number of texels, at least 16"},
+      {pair + " --lens fisheye",
+       "--lens: \"fisheye\" is not equidistant, equisolid or stereographic"},
+      {" --front '" + files[0].string() + "' --back" + two,
+       "--front: " + files[0].string() + " is a single exposure"},
+      {" --front" + two + " '" + gone + "' --back" + two, gone + ": no such file"},
+      {" --front" + two + " --back" + quoted(wide), wide[0].string() +
+                                                        ": 80 × 48 px, but the front photos (" +
+                                                        files[0].string() + ") are 64 × 48"},
+      // A uniformly lit photo has no black surround: no fisheye circle in it.
+      {pair, files[1].string() + ": no fisheye image circle found"},
+  };
   const std::string out = " -o '" + (dir.path() / "x.exr").string() + "'";
-  testing::expect_input_error(
-      run_relight("capture --front " + two + " --back " + two + out + " --exposure-times 1,2,3"),
-      "--exposure-times: 3 times for 2 front and 2 back photos");
-  testing::expect_input_error(
-      run_relight("capture --front " + two + " --back " + two + out + " --exposure-times 1/x"),
-      "--exposure-times: \"1/x\" is not a time in seconds");
-  testing::expect_input_error(
-      run_relight("capture --front " + two + " --back " + two + out + " --fov-deg 170"),
-      "--fov-deg: two views cover the sphere only with more than 180°");
-  testing::expect_input_error(
-      run_relight("capture --front " + two + " --back " + two + out + " --width 301"),
-      "--width: must be an even number of texels, at least 16");
-  testing::expect_input_error(
-      run_relight("capture --front " + two + " --back " + two + out + " --lens fisheye"),
-      "--lens: \"fisheye\" is not equidistant, equisolid or stereographic");
-  testing::expect_input_error(
-      run_relight("capture --front '" + files[0].string() + "' --back " + two + out),
-      "--front: " + files[0].string() + " is a single exposure");
-  testing::expect_input_error(
-      run_relight("capture --front " + two + " '" + (dir.path() / "gone.jpg").string() +
-                  "' --back " + two + out),
-      (dir.path() / "gone.jpg").string() + ": no such file");
-  Photo wide{80, 48, 8, std::vector<std::uint16_t>(3 * 80 * 48, 100)};
-  std::vector<fs::path> back;
-  for (int k = 0; k < 2; ++k) {
-    back.push_back(dir.path() / ("wide" + std::to_string(k) + ".jpg"));
-    write_photo_jpeg(back.back(), wide, 90, {0.01 * (k + 1), std::nullopt, std::nullopt});
+  for (const auto& [arguments, error] : cases) {
+    testing::expect_input_error(run_relight("capture" + arguments + out), error);
   }
-  testing::expect_input_error(run_relight("capture --front " + two + " --back '" +
-                                          back[0].string() + "' '" + back[1].string() + "'" + out),
-                              back[0].string() + ": 80 × 48 px, but the front photos (" +
-                                  files[0].string() + ") are 64 × 48");
-  // A uniformly lit photo has no black surround: no fisheye circle in it.
-  testing::expect_input_error(run_relight("capture --front " + two + " --back " + two + out),
-                              files[1].string() + ": no fisheye image circle found");
   EXPECT_FALSE(fs::exists(dir.path() / "x.exr"));
 }
 

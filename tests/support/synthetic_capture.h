@@ -42,6 +42,15 @@ struct SyntheticCaptureSpec {
   std::optional<double> iso, f_number;
 };
 
+// A smaller capture for tests that need a map, not the acceptance: 800 × 600 photos.
+inline SyntheticCaptureSpec small_capture_spec() {
+  SyntheticCaptureSpec spec;
+  spec.width = 800;
+  spec.height = 600;
+  spec.radius = 285;
+  return spec;
+}
+
 // The camera's response: pixel value / 255 = f(x) for exposure x (x = 1 saturates),
 // f(x) = 1.1 u / (1 + 0.1 u), u = x^0.45 — concave like a phone's tone curve.
 inline double true_response(double x) {
