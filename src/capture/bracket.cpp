@@ -67,25 +67,34 @@ Bracket load_bracket(std::string name, std::span<const fs::path> files,
     bracket.files.push_back(file);
     bracket.shots.push_back(std::move(photo));
   }
-  // ISO and f-number count only when every shot records them and they differ.
-  const auto all_have = [&](auto field) {
-    return std::all_of(exif.begin(), exif.end(), [&](const PhotoExposure& e) { return e.*field; });
-  };
-  const bool use_iso = all_have(&PhotoExposure::iso);
-  const bool use_f = all_have(&PhotoExposure::f_number);
-  for (const PhotoExposure& e : exif) {
-    double h = *e.exposure_time_s;
-    if (use_iso) h *= *e.iso / *exif.front().iso;
-    if (use_f) h *= std::pow(*exif.front().f_number / *e.f_number, 2);
-    bracket.exposures.push_back(h);
+  bracket.exif = std::move(exif);
+  bracket.photographic_exposure =
+      std::all_of(bracket.exif.begin(), bracket.exif.end(),
+                  [](const PhotoExposure& e) { return e.iso && e.f_number; });
+  if (!bracket.photographic_exposure) use_exposure_times_only(bracket);
+  for (const PhotoExposure& e : bracket.exif) {
+    if (bracket.photographic_exposure) {
+      bracket.exposures.push_back(*e.exposure_time_s * (*e.iso / 100) /
+                                  (*e.f_number * *e.f_number));
+    }
   }
+  check_exposure_spread(bracket);
+  return bracket;
+}
+
+void check_exposure_spread(const Bracket& bracket) {
   const auto [lo, hi] = std::minmax_element(bracket.exposures.begin(), bracket.exposures.end());
   if (*hi < *lo * 1.05) {
     fail_input(bracket.files.front().string(),
                "every photo of the " + bracket.name +
                    " bracket has the same exposure: a bracket needs at least two exposures");
   }
-  return bracket;
+}
+
+void use_exposure_times_only(Bracket& bracket) {
+  bracket.photographic_exposure = false;
+  bracket.exposures.clear();
+  for (const PhotoExposure& e : bracket.exif) bracket.exposures.push_back(*e.exposure_time_s);
 }
 
 std::size_t longest_shot(const Bracket& bracket) {

@@ -19,8 +19,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr double kMeterCalibration = 12.5;  // K, cd·s/m² (ISO 2720 reflected-light meters)
-
 // The exposure times of each bracket from --exposure-times.
 std::pair<std::vector<double>, std::vector<double>> split_times(const CaptureOptions& o) {
   const std::vector<double>& t = o.exposure_times;
@@ -38,16 +36,6 @@ std::pair<std::vector<double>, std::vector<double>> split_times(const CaptureOpt
 
 Image to_image(const HdrPhoto& photo) {
   return {photo.width, photo.height, photo.radiance};
-}
-
-// K N²/S of the first shot when every shot of the bracket has ISO and f-number in EXIF.
-std::optional<double> absolute_scale(const Bracket& bracket) {
-  const PhotoExposure first = read_photo_exposure(bracket.files.front());
-  for (const fs::path& file : bracket.files) {
-    const PhotoExposure e = read_photo_exposure(file);
-    if (!e.iso || !e.f_number) return std::nullopt;
-  }
-  return kMeterCalibration * *first.f_number * *first.f_number / *first.iso;
 }
 
 struct View {
@@ -110,6 +98,13 @@ CaptureResult capture_environment(const CaptureOptions& options) {
                                                    " bits per channel, but the front photos have " +
                                                    std::to_string(f.bits));
   }
+  if (front_bracket.photographic_exposure != back_bracket.photographic_exposure) {
+    use_exposure_times_only(front_bracket);
+    use_exposure_times_only(back_bracket);
+    check_exposure_spread(front_bracket);
+    check_exposure_spread(back_bracket);
+  }
+  const bool photographic = front_bracket.photographic_exposure;
   View front = find_view(std::move(front_bracket), options.lens, true);
   View back = find_view(std::move(back_bracket), options.lens, false);
   const Bracket* brackets[] = {&front.bracket, &back.bracket};
@@ -159,12 +154,11 @@ CaptureResult capture_environment(const CaptureOptions& options) {
     result.calibrated = true;
     const double reading = *options.illuminance_lux;
     result.scale = reading / e_map;
-    const std::optional<double> absolute = absolute_scale(front.bracket);
-    if (absolute && e_clipped > 0) {
-      const double missing = reading - *absolute * e_map;
+    if (photographic && e_clipped > 0) {
+      const double missing = reading - kPhotographicLuminance * e_map;
       if (missing > 0) {
-        result.scale = *absolute;
-        const double boost = 1 + missing / (*absolute * e_clipped);
+        result.scale = kPhotographicLuminance;
+        const double boost = 1 + missing / (kPhotographicLuminance * e_clipped);
         for (std::size_t t = 0; t < count; ++t) {
           if (result.mask[t] == 3) map.texels[t] *= boost;
         }

@@ -9,13 +9,13 @@
 //
 // Calibration: with a lux-meter reading E at the camera facing up, the map is scaled so that
 // its horizontal illuminance Σ Y(d) max(0, d_y) Ω equals E, making it cd/m²; without one the
-// values stay relative (X(128) = 1 at 1 s) and the result says so. Pixels clipped even in the
-// shortest exposure hold only a lower bound; their share of the horizontal illuminance is
-// reported as a warning. With a reading, the flux they miss is given to them when the
-// photos' EXIF fixes the absolute exposure (ISO S and f-number N of every shot): the
-// reflected-light meter equation (ISO 2720, K = 12.5 cd·s/m²) puts mid-grey (X = 1) at
-// L = K N²/(t S), which scales the unclipped texels; the clipped texels are multiplied by the
-// one common factor that makes the total equal the reading. Without that EXIF (or when the
+// values stay relative (X(128) = 1 at one unit of exposure, bracket.h) and the result says so.
+// Pixels clipped even in the shortest exposure hold only a lower bound; their share of the
+// horizontal illuminance is reported as a warning. With a reading, the flux they miss is given
+// to them when every photo of both brackets records ISO and f-number: the exposures are then
+// photographic and the reflected-light meter equation fixes the unclipped texels at
+// kPhotographicLuminance (bracket.h) per unit; the clipped texels are multiplied by the one
+// common factor that makes the total equal the reading. Without that EXIF (or when the
 // estimate leaves nothing missing) the whole map is scaled, which puts the clipped flux's
 // deficit on every texel (docs/capture.md).
 // Pinned by tests/capture/capture_test.cpp (the acceptance on a synthetic capture).

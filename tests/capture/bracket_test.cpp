@@ -30,22 +30,29 @@ std::string error_of(std::span<const fs::path> files, std::span<const double> ti
   return "no error";
 }
 
-TEST(Bracket, ExposuresComeFromExifScaledByIsoAndFNumberWhenTheyDiffer) {
+TEST(Bracket, ExposuresArePhotographicWhenEveryShotRecordsIsoAndFNumber) {
   const testing::TempDir dir;
   const std::vector<fs::path> files = {shot(dir, "a.jpg", 32, 60, {0.01, 2.0, 100}),
                                        shot(dir, "b.jpg", 32, 120, {0.01, 2.0, 400}),
                                        shot(dir, "c.jpg", 32, 200, {0.01, 4.0, 100})};
-  const Bracket b = load_bracket("front", files, {});
+  Bracket b = load_bracket("front", files, {});
   ASSERT_EQ(b.exposures.size(), 3u);
-  EXPECT_NEAR(b.exposures[0], 0.01, 1e-9);
-  EXPECT_NEAR(b.exposures[1], 0.04, 1e-9);    // 4 × the ISO
-  EXPECT_NEAR(b.exposures[2], 0.0025, 1e-9);  // twice the f-number: a quarter of the light
+  EXPECT_TRUE(b.photographic_exposure);
+  EXPECT_NEAR(b.exposures[0], 0.01 / 4, 1e-12);      // t · (S/100) / N²
+  EXPECT_NEAR(b.exposures[1], 0.01 * 4 / 4, 1e-12);  // 4 × the ISO
+  EXPECT_NEAR(b.exposures[2], 0.01 / 16, 1e-12);     // twice the f-number: a quarter
   EXPECT_EQ(longest_shot(b), 1u);
   EXPECT_EQ(shortest_shot(b), 2u);
-  // Given times replace EXIF.
+  // Paired with a bracket that lacks them, only the times count — and one time thrice is a
+  // single exposure.
+  use_exposure_times_only(b);
+  EXPECT_FALSE(b.photographic_exposure);
+  EXPECT_NEAR(b.exposures[1], 0.01, 1e-12);
+  EXPECT_THROW(check_exposure_spread(b), InputError);
+  // Given times replace EXIF's.
   const double times[] = {0.5, 0.25, 0.125};
   const Bracket given = load_bracket("front", files, times);
-  EXPECT_NEAR(given.exposures[0], 0.5, 1e-9);
+  EXPECT_NEAR(given.exposures[0], 0.5 / 4, 1e-12);
 }
 
 TEST(Bracket, EveryBadBracketNamesTheFileOrOptionAndTheReason) {

@@ -254,5 +254,24 @@ TEST(CaptureLenses, SixteenBitLinearPngsNeedNoResponseAndKeepThePlanesWithin3Per
   expect_planes_within(truth, result.map, 0.03);
 }
 
+TEST(CaptureLenses, BracketsAtDifferentIsoShareOneScaleThroughTheirExif) {
+  // The back bracket at a quarter of the front's ISO and the same times: its photos are two
+  // stops darker, which the photographic exposure t · (S/100) / N² takes out.
+  if (!fs::exists(kInterior)) GTEST_SKIP() << kInterior << " not found (Debian blender-data)";
+  testing::SyntheticCaptureSpec spec = testing::small_capture_spec();
+  spec.iso = 400;
+  spec.f_number = 2;
+  spec.back_iso_factor = 0.25;
+  const EquirectMap truth = testing::within_bracket(read_environment_map(kInterior));
+  const testing::TempDir dir;
+  const testing::SyntheticCapture photos = testing::make_synthetic_capture(truth, dir.path(), spec);
+  CaptureOptions options;
+  options.front = photos.front;
+  options.back = photos.back;
+  options.width = 256;
+  options.illuminance_lux = plane_illuminance(truth, {0, 1, 0});
+  expect_planes_within(truth, capture_environment(options).map, 0.03);
+}
+
 }  // namespace
 }  // namespace relight

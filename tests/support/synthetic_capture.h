@@ -40,6 +40,7 @@ struct SyntheticCaptureSpec {
   // (ISO 2720, K = 12.5): x(128) = true_response⁻¹(128) at L = K N²/(t S). Unset: the gain
   // puts the map's log-average at x = 0.18 in the middle shot.
   std::optional<double> iso, f_number;
+  double back_iso_factor = 1;  // the back bracket shot at this times the ISO (with iso set)
 };
 
 // A smaller capture for tests that need a map, not the acceptance: 800 × 600 photos.
@@ -142,6 +143,9 @@ inline SyntheticCapture make_synthetic_capture(const EquirectMap& map,
     capture.times.push_back(s.middle_time_s * std::pow(4.0, k - (s.shots - 1) / 2.0));
   }
   for (const bool front : {true, false}) {
+    const double view_gain = front ? gain : gain * s.back_iso_factor;
+    const std::optional<double> view_iso =
+        s.iso ? std::optional<double>(*s.iso * (front ? 1 : s.back_iso_factor)) : std::nullopt;
     // Radiance per pixel, k × k samples so the circle's edge is anti-aliased.
     std::vector<Rgb> radiance(static_cast<std::size_t>(s.width) * s.height);
     const int k = s.supersample;
@@ -164,7 +168,7 @@ inline SyntheticCapture make_synthetic_capture(const EquirectMap& map,
       if (s.linear16) {
         cv::Mat bgr(s.height, s.width, CV_16UC3);
         for (std::size_t p = 0; p < radiance.size(); ++p) {
-          const Rgb v = radiance[p] * (gain * t);
+          const Rgb v = radiance[p] * (view_gain * t);
           const auto q = [](double x) {
             return static_cast<std::uint16_t>(std::lround(65535 * std::clamp(x, 0.0, 1.0)));
           };
@@ -175,14 +179,14 @@ inline SyntheticCapture make_synthetic_capture(const EquirectMap& map,
       } else {
         Photo photo{s.width, s.height, 8, std::vector<std::uint16_t>(radiance.size() * 3)};
         for (std::size_t p = 0; p < radiance.size(); ++p) {
-          const Rgb v = radiance[p] * (gain * t);
+          const Rgb v = radiance[p] * (view_gain * t);
           const double c[3] = {v.r, v.g, v.b};
           for (int ch = 0; ch < 3; ++ch) {
             photo.rgb[3 * p + ch] =
                 static_cast<std::uint16_t>(std::lround(255 * true_response(c[ch])));
           }
         }
-        write_photo_jpeg(file, photo, s.jpeg_quality, {t, s.f_number, s.iso});
+        write_photo_jpeg(file, photo, s.jpeg_quality, {t, s.f_number, view_iso});
       }
       (front ? capture.front : capture.back).push_back(file);
     }
