@@ -50,12 +50,8 @@ double clean_limit(const ViewMap& view, const ViewMap& other, double half_fov) {
 BlendedMap blend_views(const ViewMap& front, double front_limit, const ViewMap& back,
                        double back_limit) {
   const std::size_t count = front.radiance.size();
-  BlendedMap map{front.width,
-                 front.height,
-                 std::vector<Rgb>(count),
-                 std::vector<std::uint8_t>(count, 0),
-                 std::vector<std::uint8_t>(count, 0),
-                 std::vector<std::uint8_t>(count, 0)};
+  BlendedMap map{front.width, front.height, std::vector<Rgb>(count),
+                 std::vector<std::uint8_t>(count, 0), std::vector<std::uint8_t>(count, 0)};
   const double disagree = std::log(1.5);
   for (std::size_t t = 0; t < count; ++t) {
     double wf = front.seen[t] ? smoothstep((front_limit - front.theta[t]) / kBlend) : 0;
@@ -72,7 +68,6 @@ BlendedMap blend_views(const ViewMap& front, double front_limit, const ViewMap& 
     }
     map.radiance[t] = (front.radiance[t] * wf + back.radiance[t] * wb) / (wf + wb);
     map.clipped[t] = ((wf > 0 && front.clipped[t]) || (wb > 0 && back.clipped[t])) ? 1 : 0;
-    map.source[t] = static_cast<std::uint8_t>((wf > 0 ? 1 : 0) | (wb > 0 ? 2 : 0));
   }
   return map;
 }

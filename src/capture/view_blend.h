@@ -31,7 +31,6 @@ struct BlendedMap {
   std::vector<Rgb> radiance;
   std::vector<std::uint8_t> hole;     // no view saw the texel cleanly
   std::vector<std::uint8_t> clipped;  // a clipped pixel contributes
-  std::vector<std::uint8_t> source;   // bit 0: the front view contributes; bit 1: the back
 };
 
 BlendedMap blend_views(const ViewMap& front, double front_limit, const ViewMap& back,
