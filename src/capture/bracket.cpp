@@ -71,9 +71,10 @@ Bracket load_bracket(std::string name, std::span<const fs::path> files,
   bracket.photographic_exposure =
       std::all_of(bracket.exif.begin(), bracket.exif.end(),
                   [](const PhotoExposure& e) { return e.iso && e.f_number; });
-  if (!bracket.photographic_exposure) use_exposure_times_only(bracket);
-  for (const PhotoExposure& e : bracket.exif) {
-    if (bracket.photographic_exposure) {
+  if (!bracket.photographic_exposure) {
+    use_exposure_times_only(bracket);
+  } else {
+    for (const PhotoExposure& e : bracket.exif) {
       bracket.exposures.push_back(*e.exposure_time_s * (*e.iso / 100) /
                                   (*e.f_number * *e.f_number));
     }

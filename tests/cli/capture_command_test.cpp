@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "capture/capture.h"
 #include "image/image.h"
 #include "image/image_exr.h"
 #include "light/environment_map_io.h"
@@ -35,18 +36,6 @@ std::string photo_arguments(const testing::SyntheticCapture& photos) {
   return args;
 }
 
-double horizontal_illuminance(const EquirectMap& map) {
-  double e = 0;
-  for (int j = 0; j < map.height / 2; ++j) {
-    const double omega = equirect_row_solid_angle(map.width, map.height, j);
-    const double up = equirect_texel_direction(map.width, map.height, 0, j).y;
-    for (int i = 0; i < map.width; ++i) {
-      e += luminance(map.texels[static_cast<std::size_t>(j) * map.width + i]) * up * omega;
-    }
-  }
-  return e;
-}
-
 TEST(CaptureCommand, TheCapturedMapLightsAWindowLikeTheTruthWithin2PercentAndIsFloatExr) {
   if (!fs::exists(kInterior)) GTEST_SKIP() << kInterior << " not found (Debian blender-data)";
   const testing::TempDir dir;
@@ -56,7 +45,7 @@ TEST(CaptureCommand, TheCapturedMapLightsAWindowLikeTheTruthWithin2PercentAndIsF
             ExrChannels::kFloat);
   const testing::SyntheticCapture photos =
       testing::make_synthetic_capture(truth, dir.path(), testing::small_capture_spec());
-  const double reading = horizontal_illuminance(truth);
+  const double reading = map_horizontal_illuminance(truth);
   const fs::path map = dir.path() / "room.exr";
   const testing::CommandResult r =
       run_relight("capture " + photo_arguments(photos) + " -o '" + map.string() +
