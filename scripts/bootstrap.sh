@@ -23,6 +23,8 @@ debian_packages=(
   # decoding (OpenCV imgcodecs), EXIF exposure (libexif). Only the OpenCV modules used: the
   # libopencv-dev meta package would bring 212 packages (Qt, VTK, MPI, GDAL).
   libopencv-photo-dev libopencv-imgcodecs-dev libexif-dev
+  # relight optimize (issue 20): the dimmers as linear programs, COIN-OR CLP's dual simplex.
+  coinor-libclp-dev
   nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   # Test assets: the CC0 HDR environment maps (OpenEXR, DWAB) of the daylight tests.

@@ -28,6 +28,7 @@ int run_cli(int argc, char** argv) {
   add_serve_command(app, action);
   add_nearfield_command(app, action);
   add_capture_command(app, action);
+  add_optimize_command(app, action);
   add_demo_command(app, action);
   try {
     app.parse(argc, argv);

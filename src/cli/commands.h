@@ -26,5 +26,6 @@ void add_analyze_command(CLI::App& app, Action& action);
 void add_serve_command(CLI::App& app, Action& action);
 void add_nearfield_command(CLI::App& app, Action& action);
 void add_capture_command(CLI::App& app, Action& action);
+void add_optimize_command(CLI::App& app, Action& action);
 
 }  // namespace relight

@@ -116,6 +116,11 @@ std::optional<double> Distribution::rated_lumens() const {
   return std::nullopt;
 }
 
+std::optional<double> Distribution::input_watts() const {
+  if (const auto* w = std::get_if<PhotometricWeb>(&model)) return w->input_watts;
+  return std::nullopt;
+}
+
 LuminousOpening Distribution::opening() const {
   if (const auto* w = std::get_if<PhotometricWeb>(&model)) return w->opening;
   return {};

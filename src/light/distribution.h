@@ -47,6 +47,7 @@ struct Distribution {
   double intensity(Vec3 local_dir) const;  // local_dir: unit vector in the frame above
   double flux_lm() const;
   std::optional<double> rated_lumens() const;  // from the file; none for analytic models
+  std::optional<double> input_watts() const;   // from the file (W); none for analytic models
   LuminousOpening opening() const;             // a point for analytic models
   bool axisymmetric() const;
   double max_intensity() const;

@@ -381,6 +381,7 @@ PhotometricWeb make_ies_web(const IesData& data) {
   for (std::size_t i = 0; i < candela.size(); ++i) candela[i] = data.candela[i] * scale;
   PhotometricWeb web = make_web(data.horizontal_deg, data.vertical_deg, candela, data.symmetry);
   web.rated_lumens = ies_rated_lumens(data);
+  if (data.input_watts > 0) web.input_watts = data.input_watts;
   web.absolute_photometry = !(data.lumens_per_lamp > 0);
   const double to_m = data.units == 1 ? kFeetToMetres : 1.0;
   web.opening = ies_luminous_opening(data.width * to_m, data.length * to_m, data.height * to_m);

@@ -390,6 +390,9 @@ PhotometricWeb make_ldt_web(const LdtData& data) {
   }
   PhotometricWeb web = make_web(c_deg, data.gamma_deg, candela, symmetry);
   web.rated_lumens = ldt_rated_lumens(data);
+  if (!data.lamp_sets.empty() && data.lamp_sets.front().watts > 0) {
+    web.input_watts = data.lamp_sets.front().watts;
+  }
   web.absolute_photometry = ldt_absolute_photometry(data);
   web.opening = ldt_luminous_opening(data);
   return web;

@@ -28,6 +28,10 @@ constexpr PhotometricFrame photometric_frame(Vec3 aim, Vec3 c0) {
   return {aim, c0, cross(c0, aim)};
 }
 
+// C0 kept orthogonal to a new aim (unit): the C0 half-plane turns with the luminaire; a c0
+// parallel to the aim becomes world +x, or −z for an aim along x (docs/lighting-state.md).
+Vec3 reorthogonalised_c0(Vec3 c0, Vec3 aim);
+
 struct PlacedLuminaire {
   Vec3 position;
   PhotometricFrame frame;

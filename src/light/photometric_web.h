@@ -82,6 +82,9 @@ struct PhotometricWeb {
   // Luminaire lumens the file states or implies for relative photometry; absent for
   // absolute photometry without a stated flux.
   std::optional<double> rated_lumens;
+  // Electrical input power the file states (IES input watts, EULUMDAT first lamp set's wattage
+  // with ballast), W; absent when the file gives none (zero or negative).
+  std::optional<double> input_watts;
   bool absolute_photometry = false;
   LuminousOpening opening;
   std::optional<TiltTable> tilt;  // IES TILT=INCLUDE / TILT=<file>

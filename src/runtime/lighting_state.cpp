@@ -5,6 +5,7 @@
 
 #include "common/input_error.h"
 #include "light/color_temperature.h"
+#include "light/luminaire_frame.h"
 #include "scene/json_node.h"
 #include "scene/scene_loader.h"
 
@@ -31,14 +32,6 @@ std::size_t luminaire_index(const Scene& scene, const JsonNode& where, const std
     if (scene.luminaires[i].name == name) return i;
   }
   where.fail("no luminaire named \"" + name + "\" in the precomputed scene");
-}
-
-// Keeps c0 orthogonal to a new aim: the C0 plane turns with the luminaire.
-Vec3 reorthogonalised_c0(Vec3 c0, Vec3 aim) {
-  Vec3 t = c0 - aim * dot(c0, aim);
-  if (length(t) < 1e-6) t = std::abs(aim.x) > 0.999 ? Vec3{0, 0, -1} : Vec3{1, 0, 0};
-  t = t - aim * dot(t, aim);
-  return normalize(t);
 }
 
 void apply_luminaire(LuminaireState& s, const Luminaire& scene_luminaire, const JsonNode& node,
