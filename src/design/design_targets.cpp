@@ -88,7 +88,10 @@ const char* target_key(TargetKind kind) {
 
 DesignTargets parse_design_targets(const nlohmann::json& document, const Scene& scene,
                                    const std::string& where) {
-  const JsonNode root(document, where, "/");
+  return parse_design_targets(JsonNode(document, where, "/"), scene);
+}
+
+DesignTargets parse_design_targets(const JsonNode& root, const Scene& scene) {
   if (!root.is_object()) root.fail("expected an object with \"sensors\" targets");
   root.expect_keys({"sensors", "luminaires", "objective", "power_w"});
   DesignTargets out;

@@ -18,6 +18,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "scene/json_node.h"
 #include "scene/scene.h"
 
 namespace relight {
@@ -55,9 +56,11 @@ struct DesignTargets {
   DesignObjective objective = DesignObjective::kPower;
 };
 
-// `where` names the document in messages (a file, or "message" for the studio's).
+// `where` names the document in messages (a file).
 DesignTargets parse_design_targets(const nlohmann::json& document, const Scene& scene,
                                    const std::string& where);
+// The same from a node of a larger document (the studio's "optimize" message).
+DesignTargets parse_design_targets(const JsonNode& root, const Scene& scene);
 DesignTargets load_design_targets(const std::filesystem::path& file, const Scene& scene);
 
 // "SET: em_min", how a target is named in what `relight optimize` prints.

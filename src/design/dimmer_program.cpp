@@ -14,7 +14,8 @@ namespace relight {
 namespace {
 
 constexpr double kMargin = 1e-6;          // relative: lower bounds asked above, upper below
-constexpr double kUniformityStep = 1e-5;  // the bisection's final width in U0
+constexpr double kUniformityStep = 1e-5;  // U0 differences below this are ties
+constexpr int kMaxDinkelbachSteps = 50;
 
 // Mean of the set's rows: the Em row (coefficients per free luminaire, and its constant).
 struct MeanRow {
@@ -38,8 +39,11 @@ MeanRow mean_row(const IlluminanceModel& model, const ModelSet& set) {
 // Builds the programs: columns d_0..d_{m-1}, then (with slacks) one slack per target.
 class ProgramBuilder {
  public:
-  ProgramBuilder(const DimmerProblem& p, bool slacks) : p_(p), m_(p.model->free.size()) {
-    const std::size_t cols = m_ + (slacks ? p.targets.size() : 0);
+  // Columns: the dimmers, one slack per target (with `slacks`), then `extra` more (bounds
+  // [0, ∞) until the caller sets them).
+  ProgramBuilder(const DimmerProblem& p, bool slacks, std::size_t extra = 0)
+      : p_(p), m_(p.model->free.size()) {
+    const std::size_t cols = m_ + (slacks ? p.targets.size() : 0) + extra;
     lp_.cols = cols;
     lp_.c.assign(cols, 0.0);
     lp_.col_lo.assign(cols, 0.0);
@@ -60,10 +64,11 @@ class ProgramBuilder {
     for (std::size_t j = 0; j < m_; ++j) lp_.c[j] = p_.watts[j];
   }
 
-  // E_i ≥ t · Em at every point of `set`.
-  void add_uniformity(const ModelSet& set, double t) {
+  // E_i − t · Em ≥ z at every point of `set`, z the column `z` (or 0 without one).
+  void add_uniformity(const ModelSet& set, double t, std::optional<std::size_t> z) {
     const MeanRow mean = mean_row(*p_.model, set);
     std::vector<double> row(lp_.cols, 0.0);
+    if (z) row[*z] = -1;
     for (std::size_t r = set.first; r < set.first + set.count; ++r) {
       for (std::size_t j = 0; j < m_; ++j) row[j] = p_.model->column(r, j) - t * mean.a[j];
       lp_.add_row(row, t * mean.b - p_.model->base[r], kLpInfinity);
@@ -232,24 +237,37 @@ DimmerSolution solve_dimmers(const DimmerProblem& p) {
   finish(p, first.x, out);
   if (p.objective != DesignObjective::kUniformity) return out;
 
-  // Bisect the smallest U0 of the level sets: [lo feasible, hi not known to be).
+  // The largest smallest-U0 of the level sets, a generalised fractional program
+  // max_d min_s N_s(d) / D_s(d) (N the set's smallest E, D its Em; both linear or concave in d,
+  // D > 0), by Dinkelbach's method in its max–min form (Crouzeix, Ferland & Schaible 1985, J.
+  // Optim. Theory Appl. 47(1)): at t, the program max z subject to E_i − t · Em ≥ z over
+  // every level set's points; its optimum is 0 exactly at the best t, and the U0 of its
+  // solution is the next t, which rises to the best in a few programs.
   const std::vector<std::size_t> sets = level_sets(p.targets);
-  double lo = out.uniformity, hi = 1.0;
+  double t = out.uniformity;
   std::vector<double> best = out.dimmers;
-  while (hi - lo > kUniformityStep) {
-    const double t = 0.5 * (lo + hi);
-    ProgramBuilder b(p, false);
-    b.minimise_power();
-    for (const std::size_t s : sets) b.add_uniformity(p.model->rows_of(s), t);
-    const LpSolution s = solve_counted(b.program(), out);
-    if (s.status == LpStatus::kOptimal) {
-      lo = t;
-      best = s.x;
-    } else {
-      hi = t;
-    }
+  for (int step = 0; step < kMaxDinkelbachSteps; ++step) {
+    ProgramBuilder b(p, false, 1);
+    LinearProgram& lp = b.program();
+    lp.col_lo[m] = -kLpInfinity;
+    lp.c[m] = -1;  // maximise z
+    for (const std::size_t s : sets) b.add_uniformity(p.model->rows_of(s), t, m);
+    const LpSolution s = solve_counted(lp, out);
+    if (s.status != LpStatus::kOptimal || -s.objective <= 1e-9 * std::max(1.0, t)) break;
+    std::vector<double> d(s.x.begin(), s.x.begin() + static_cast<std::ptrdiff_t>(m));
+    const double next = smallest_u0(*p.model, sets, d);
+    if (next <= t + 1e-12) break;
+    t = next;
+    best = std::move(d);
   }
-  finish(p, best, out);
+  // The least power at that U0 (a hair below it, so that `best` itself is feasible).
+  ProgramBuilder cheapest(p, false);
+  cheapest.minimise_power();
+  for (const std::size_t s : sets) {
+    cheapest.add_uniformity(p.model->rows_of(s), t - 1e-9, std::nullopt);
+  }
+  const LpSolution c = solve_counted(cheapest.program(), out);
+  finish(p, c.status == LpStatus::kOptimal ? c.x : best, out);
   return out;
 }
 

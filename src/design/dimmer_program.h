@@ -3,9 +3,9 @@
 //  * Em ≥ / ≤ a value: one row on the set's mean row; E ≥ / ≤ a value: one row per point;
 //    U0 ≥ u: E_i ≥ u · Em at every point — linear, since Em is.
 //  * "power": minimise Σ w_j d_j (W) over lo_j ≤ d_j ≤ hi_j.
-//  * "uniformity": maximise the smallest U0 of the sets with a level target (em_min or e_min):
-//    U0 ≥ t is a linear feasibility problem for each t and the feasible set shrinks as t grows,
-//    so t is bisected to 1e-5; at the best t the power is minimised.
+//  * "uniformity": maximise the smallest U0 of the sets with a level target (em_min or e_min),
+//    a generalised fractional program solved by Dinkelbach's method (a few linear programs;
+//    see solve_dimmers); at the best U0 the power is minimised.
 //  * Infeasible targets: a slack per target, in units of its value (a U0 target's in units of
 //    u · the set's Em with every free dimmer at its top), and the sum of slacks minimised — the
 //    closest state — then the power at that least violation.

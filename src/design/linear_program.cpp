@@ -61,7 +61,7 @@ LpSolution solve_linear_program(const LinearProgram& lp) {
                     value.data(), col_lo.data(), col_hi.data(), lp.c.data(), row_lo.data(),
                     row_hi.data());
   model.scaling(3);  // geometric then equilibrium: the rows' lux span several decades
-  model.dual();
+  model.initialSolve();
 
   LpSolution out;
   out.iterations = model.numberIterations();

@@ -1,5 +1,6 @@
 // A linear program and its exact solution: minimise c·x subject to row_lo ≤ A x ≤ row_hi and
-// col_lo ≤ x ≤ col_hi, by COIN-OR CLP's dual simplex (Debian coinor-libclp-dev). CLP rather
+// col_lo ≤ x ≤ col_hi, by COIN-OR CLP (Debian coinor-libclp-dev; initialSolve: presolve, then
+// the dual simplex). CLP rather
 // than GLPK: both are well-kept Debian packages and solve these small dense programs (tens of
 // columns, thousands of rows) in milliseconds; CLP's licence (EPL-2.0) asks nothing of the
 // programs that link it, and its dual simplex restarts cheaply when only bounds change.

@@ -107,9 +107,14 @@ ClientMessage parse_client_message(const std::string& text, const Scene& scene,
       r.period = *period;
     }
     m.request = std::move(r);
+  } else if (type == "optimize") {
+    root.expect_keys({"type", "seq", "targets", "daylight"});
+    OptimizeRequest r{parse_design_targets(root.at("targets"), scene)};
+    if (const auto d = root.find("daylight")) r.daylight = d->boolean();
+    m.request = std::move(r);
   } else {
     root.at("type").fail("unknown message type \"" + type +
-                         "\" (expected state, pick, distribution, ping or annual)");
+                         "\" (expected state, pick, distribution, ping, annual or optimize)");
   }
   return m;
 }
@@ -307,6 +312,14 @@ nlohmann::json distribution_message(std::optional<std::uint32_t> seq, const Lumi
     m["control_points"] = {{"gamma_deg", spec.gamma_deg}, {"candela", spec.curve_candela}};
   }
   return m;
+}
+
+nlohmann::json optimized_message(std::optional<std::uint32_t> seq, const Scene& scene,
+                                 const OptimizeResult& result) {
+  return {{"type", "optimized"},
+          {"seq", seq_json(seq)},
+          {"result", optimize_summary(scene, result)},
+          {"state", result.state}};
 }
 
 }  // namespace relight

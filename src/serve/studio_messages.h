@@ -12,6 +12,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "design/design_targets.h"
+#include "design/optimize.h"
 #include "light/epw_weather.h"
 #include "math/vec3.h"
 #include "runtime/annual_daylight.h"
@@ -48,12 +50,21 @@ struct AnnualRequest {
   std::string occupied = "08:00-18:00";  // as sent, for the reply
 };
 
+// Inverse design (`relight optimize`) from the state shown now: the targets parsed and checked
+// here, and whether the windows' daylight is kept.
+struct OptimizeRequest {
+  DesignTargets targets;
+  bool daylight = false;
+};
+
 // The largest message a client may send: a weather file of a year is 1.5–2 MB of text.
 inline constexpr std::size_t kMaxClientMessageBytes = std::size_t{8} << 20;
 
 struct ClientMessage {
   std::optional<std::uint32_t> seq;
-  std::variant<StateRequest, PickRequest, DistributionRequest, PingRequest, AnnualRequest> request;
+  std::variant<StateRequest, PickRequest, DistributionRequest, PingRequest, AnnualRequest,
+               OptimizeRequest>
+      request;
 };
 
 // Throws InputError for malformed text; `seq` is set as soon as a readable one was found, so
@@ -80,6 +91,10 @@ nlohmann::json annual_progress_message(std::optional<std::uint32_t> seq, std::si
 nlohmann::json annual_message(std::optional<std::uint32_t> seq, const Scene& scene,
                               const WeatherFile& weather, const std::string& occupied,
                               const AnnualHours& hours, const AnnualDaylight& year, double seconds);
+
+// Its result: the line `relight optimize` prints and the lighting state document it wrote.
+nlohmann::json optimized_message(std::optional<std::uint32_t> seq, const Scene& scene,
+                                 const OptimizeResult& result);
 
 // A seq as JSON: the number, or null.
 nlohmann::json seq_json(std::optional<std::uint32_t> seq);

@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "common/input_error.h"
+#include "design/optimize.h"
 #include "light/distribution.h"
 #include "runtime/annual_daylight.h"
 #include "runtime/relit_scene.h"
@@ -99,6 +100,11 @@ struct StudioServer::Impl {
   std::thread annual;
   std::atomic<bool> annual_busy{false};
   std::atomic<bool> annual_stop{false};
+  // Inverse design for one client at a time (handle(OptimizeRequest)), on its own thread and
+  // its own copy of the scene, opened on the first run and kept for the next.
+  std::thread optimizer;
+  std::atomic<bool> optimize_busy{false};
+  std::unique_ptr<RelitScene> design_scene;  // only the optimizer thread uses it
 
   const TransferFile& transfer() const { return relit->transfer(); }
   const Scene& scene() const { return relit->scene(); }
@@ -400,6 +406,35 @@ struct StudioServer::Impl {
     }
   }
 
+  // The studio's optimise panel: `relight optimize` from the state shown now.
+  void handle(ConnectionId id, std::optional<std::uint32_t> seq, OptimizeRequest& r) {
+    if (scene().sensor_count() == 0) fail_input("message", "the scene has no sensors");
+    if (optimize_busy.exchange(true)) {
+      fail_input("message", "an optimisation is already running; wait for its result");
+    }
+    if (optimizer.joinable()) optimizer.join();  // the last run's thread, finished
+    StartState start;
+    {
+      std::lock_guard lock(mutex);
+      start.document = shown.document;
+    }
+    start.dir = rlt.parent_path();
+    start.where = "the state shown";
+    optimizer = std::thread([this, id, seq, request = std::move(r), start = std::move(start)] {
+      try {
+        if (!design_scene) design_scene = std::make_unique<RelitScene>(rlt, std::nullopt);
+        OptimizeOptions options;
+        options.daylight = request.daylight;
+        const OptimizeResult result =
+            optimize_lighting(*design_scene, start, request.targets, options);
+        send_json(id, optimized_message(seq, scene(), result));
+      } catch (const std::exception& e) {
+        send_json(id, error_message(seq, e.what()));
+      }
+      optimize_busy = false;
+    });
+  }
+
   void handle(ConnectionId id, std::optional<std::uint32_t> seq, const PingRequest&) {
     std::lock_guard lock(mutex);
     send_json(id, {{"type", "pong"},
@@ -464,6 +499,7 @@ StudioServer::~StudioServer() {
   if (impl_->worker.joinable()) impl_->worker.join();
   impl_->annual_stop = true;
   if (impl_->annual.joinable()) impl_->annual.join();
+  if (impl_->optimizer.joinable()) impl_->optimizer.join();
 }
 
 std::uint16_t StudioServer::port() const {
