@@ -75,6 +75,35 @@ TEST(StudioMessages, MalformedMessagesNameWhereAndKeepTheirSeq) {
   EXPECT_NE(refusal(R"({"type":"ping","extra":1})").first.find("extra"), std::string::npos);
 }
 
+// The optimise panel's message: its targets parsed against the scene, bad ones refused with
+// their path inside the message.
+TEST(StudioMessages, OptimizeCarriesCheckedTargets) {
+  const ClientMessage m = parse(
+      R"({"type":"optimize","seq":9,"targets":{"sensors":{"floor":{"em_min":200}},
+          "objective":"uniformity"},"daylight":true})");
+  ASSERT_TRUE(std::holds_alternative<OptimizeRequest>(m.request));
+  const OptimizeRequest& r = std::get<OptimizeRequest>(m.request);
+  EXPECT_TRUE(r.daylight);
+  ASSERT_EQ(r.targets.targets.size(), 1u);
+  EXPECT_EQ(r.targets.targets[0].value, 200);
+  EXPECT_EQ(r.targets.objective, DesignObjective::kUniformity);
+  const auto [error, seq] =
+      refusal(R"({"type":"optimize","seq":4,"targets":{"sensors":{"hall":{"em_min":1}}}})");
+  EXPECT_EQ(seq, 4u);
+  EXPECT_NE(error.find("message:/targets/sensors/hall: no sensor set named \"hall\""),
+            std::string::npos)
+      << error;
+  EXPECT_NE(refusal(R"({"type":"optimize","targets":{"sensors":{"floor":{"e_min":5,"e_max":1}}}})")
+                .first.find("/targets/sensors/floor/e_min: is above e_max"),
+            std::string::npos);
+  EXPECT_NE(refusal(R"({"type":"optimize","targets":{}})").first.find("no target"),
+            std::string::npos);
+  EXPECT_NE(refusal(R"({"type":"optimize","targets":{"sensors":{"floor":{"em_min":1}}},
+                       "daylight":"yes"})")
+                .first.find("/daylight"),
+            std::string::npos);
+}
+
 TEST(StudioMessages, DeepNestingIsRefusedBeforeParsing) {
   EXPECT_EQ(json_nesting_depth(R"({"a":[1,{"b":"[[[[{{"}],"c":"\"["}])"), 3u);
   const std::string deep =
