@@ -1,5 +1,6 @@
 // `relight optimize` (issue 20) as a user runs it: the one JSON line, the state it writes
-// loaded as it is by `probe` (the achieved values reproduced from its CSV) and `render`,
+// loaded as it is by `probe` (the achieved values reproduced from its CSV), `reference` (the
+// desk's Em within 3 %) and `render`,
 // infeasible targets (exit 0, the binding one named), bad targets (exit 2 with the JSON path),
 // and a start state's relative photometry file still found from the output's folder.
 #include <cmath>
@@ -90,6 +91,16 @@ TEST(OptimizeCommand, TheStateItWritesReproducesTheAchievedValuesInProbe) {
     EXPECT_GE(achieved, t["value"].get<double>()) << kind;
     EXPECT_EQ(t["met"], true);
   }
+  // The reference path tracer on the scene and the same state: the desk's Em within 3 %.
+  const fs::path reference_csv = room_dir().path() / "reference.csv";
+  const testing::CommandResult reference =
+      run_relight("reference " + q(room_dir().path() / "office.json") + " --state " + q(state) +
+                  " --spp 256 --sensors-out " + q(reference_csv));
+  ASSERT_EQ(reference.exit_code, 0) << reference.err;
+  const std::vector<double> desk = csv_lux(reference_csv).at("desk");
+  double traced = 0;
+  for (const double v : desk) traced += v / static_cast<double>(desk.size());
+  EXPECT_NEAR(traced, line["targets"][0]["achieved"].get<double>(), 0.03 * traced);
   const testing::CommandResult render =
       run_relight("render " + q(room_rlt()) + " --state " + q(state) +
                   " --width 32 --height 24 -o " + q(room_dir().path() / "designed.png"));
