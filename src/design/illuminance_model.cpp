@@ -8,19 +8,9 @@ namespace {
 
 // Lux (Y) of every model row as `relit` is lit now.
 std::vector<double> model_lux(const RelitScene& relit, std::span<const ModelSet> sets) {
-  const std::vector<Rgb> e = relit.sensor_irradiance();
-  const Scene& scene = relit.scene();
+  const std::vector<std::vector<double>> lux = sensor_set_lux(relit);
   std::vector<double> out;
-  std::size_t point = 0;
-  std::size_t next = 0;
-  for (std::size_t s = 0; s < scene.sensors.size(); ++s) {
-    const std::size_t n = scene.sensors[s].points.size();
-    if (next < sets.size() && sets[next].set == s) {
-      for (std::size_t i = 0; i < n; ++i) out.push_back(luminance(e[point + i]));
-      ++next;
-    }
-    point += n;
-  }
+  for (const ModelSet& s : sets) out.insert(out.end(), lux[s.set].begin(), lux[s.set].end());
   return out;
 }
 
@@ -35,6 +25,19 @@ void set_column(IlluminanceModel& model, std::size_t j, std::span<const double> 
 }
 
 }  // namespace
+
+std::vector<std::vector<double>> sensor_set_lux(const RelitScene& relit) {
+  const Scene& scene = relit.scene();
+  const std::vector<Rgb> e = relit.sensor_irradiance();
+  std::vector<std::vector<double>> out(scene.sensors.size());
+  std::size_t point = 0;
+  for (std::size_t s = 0; s < scene.sensors.size(); ++s) {
+    for (std::size_t i = 0; i < scene.sensors[s].points.size(); ++i) {
+      out[s].push_back(luminance(e[point++]));
+    }
+  }
+  return out;
+}
 
 double IlluminanceModel::lux(std::size_t row, std::span<const double> d) const {
   double e = base[row];

@@ -39,6 +39,10 @@ struct IlluminanceModel {
   const ModelSet& rows_of(std::size_t set) const;
 };
 
+// Each sensor set's readings (lx, the Y of RGB as `relight probe` prints them) as `relit` is
+// lit now, by scene set index.
+std::vector<std::vector<double>> sensor_set_lux(const RelitScene& relit);
+
 // The model of `sets` (scene indices, ascending) with `free` varied in `base` (their `on` and
 // dimmer in `base` are ignored; everything else — aim, colour, distribution — is as `base` sets
 // it). Relights `relit` free.size() + 1 times; leaves it lit by `base` with the free ones off.

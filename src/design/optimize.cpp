@@ -72,20 +72,6 @@ nlohmann::json result_document(const Scene& scene, const StartState& start,
   return doc;
 }
 
-// Each sensor set's readings (lx) as `relit` is lit now, by scene set index.
-std::vector<std::vector<double>> set_lux(const RelitScene& relit) {
-  const Scene& scene = relit.scene();
-  const std::vector<Rgb> e = relit.sensor_irradiance();
-  std::vector<std::vector<double>> out(scene.sensors.size());
-  std::size_t point = 0;
-  for (std::size_t s = 0; s < scene.sensors.size(); ++s) {
-    for (std::size_t i = 0; i < scene.sensors[s].points.size(); ++i) {
-      out[s].push_back(luminance(e[point++]));
-    }
-  }
-  return out;
-}
-
 TargetOutcome outcome(const Target& t, std::span<const double> lux) {
   TargetOutcome o{t, set_value(lux, t.kind)};
   const double scale =
@@ -197,7 +183,7 @@ OptimizeResult optimize_lighting(RelitScene& relit, const StartState& start,
   LightingState written = default_lighting_state(scene);
   apply_lighting_state(written, scene, result.state, start.where, start.dir);
   relit.apply(written);
-  const std::vector<std::vector<double>> lux = set_lux(relit);
+  const std::vector<std::vector<double>> lux = sensor_set_lux(relit);
   result.feasible = best.feasible;
   double smallest_u0 = 1;
   for (const Target& t : targets.targets) {

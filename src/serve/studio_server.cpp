@@ -90,6 +90,9 @@ struct StudioServer::Impl {
   std::optional<PendingState> pending;
   bool quit = false;
   Shown shown;
+  // The last state document accepted from any client (shown, pending or being relit): where
+  // the optimise panel's run starts.
+  nlohmann::json received_document = nlohmann::json::object();
   std::set<ConnectionId> clients;
 
   std::atomic<std::size_t> incremental_updates{0};  // written by the worker
@@ -269,6 +272,7 @@ struct StudioServer::Impl {
     }
     {
       std::lock_guard lock(mutex);
+      received_document = r.document;
       pending = PendingState{std::move(state), std::move(r.document), seq, id};
     }
     wake.notify_one();
@@ -415,8 +419,9 @@ struct StudioServer::Impl {
     if (optimizer.joinable()) optimizer.join();  // the last run's thread, finished
     StartState start;
     {
+      // The latest state received: one sent just before this message may not be shown yet.
       std::lock_guard lock(mutex);
-      start.document = shown.document;
+      start.document = received_document;
     }
     start.dir = rlt.parent_path();
     start.where = "the state shown";
@@ -427,11 +432,12 @@ struct StudioServer::Impl {
         options.daylight = request.daylight;
         const OptimizeResult result =
             optimize_lighting(*design_scene, start, request.targets, options);
+        optimize_busy = false;  // before the reply: the client may run again at once
         send_json(id, optimized_message(seq, scene(), result));
       } catch (const std::exception& e) {
+        optimize_busy = false;
         send_json(id, error_message(seq, e.what()));
       }
-      optimize_busy = false;
     });
   }
 

@@ -1,9 +1,10 @@
 // The studio's entry point: connects to `relight serve` (docs/studio-protocol.md), builds
 // the view and the panels from `hello`, the mesh from RLGE and the movable objects' meshes
-// from RLOB, uploads every RLFR, routes state / pick / distribution / error / pong messages,
-// handles clicks in the view (probe a point, or aim a luminaire at it; a press on an
-// emitter's marker drags the emitter, emitters.js; a press on an object drags it, objects.js),
-// keeps the status line, and exposes window.relightStudio for the browser tests.
+// from RLOB, uploads every RLFR, routes state / pick / distribution / annual / optimized /
+// error / pong messages, handles clicks in the view (probe a point, or aim a luminaire at it;
+// a press on an emitter's marker drags the emitter, emitters.js; a press on an object drags
+// it, objects.js), keeps the status line, and exposes window.relightStudio for the browser
+// tests.
 import { AnnualPanel } from './annual.js';
 import { CameraRig } from './cameras.js';
 import { Connection } from './connection.js';
@@ -16,6 +17,7 @@ import { LuminairePanel } from './luminaires.js';
 import { Markers } from './markers.js';
 import { MaterialPanel } from './materials.js';
 import { ObjectPanel, ObjectsView } from './objects.js';
+import { OptimizePanel } from './optimize.js';
 import { decodeFrame, decodeGeometry, decodeObjects, messages } from './protocol.js';
 import { Sensors } from './sensors.js';
 import { StateStore, canonical } from './state.js';
@@ -39,6 +41,7 @@ const api = {
   lastState: null, // {seq, frame} of the last `state` message: the frame that shows it
   annual: null, // the last `annual` result, with the annual_progress messages before it
   annualProgress: 0,
+  optimized: null, // the last `optimized` result of this client's optimise panel
 };
 window.relightStudio = api;
 
@@ -101,6 +104,15 @@ const annualPanel = new AnnualPanel(
   },
   sensors,
 );
+const optimizePanel = new OptimizePanel(
+  $('optimize'),
+  (message) => {
+    const seq = connection.nextSeq();
+    return connection.send({ ...message, seq }) ? seq : null;
+  },
+  // The result becomes the lighting state as a loaded state file does (sent, panels refreshed).
+  { applyState: (doc) => store.replace(doc), stateShown: () => stateShown() },
+);
 // The luminaire in the distribution editor is drawn larger in the view.
 editor.onSelect = (i) => {
   markers.selected = i;
@@ -155,10 +167,17 @@ function onText(msg) {
     case 'annual':
       api.annual = { ...msg, progress_messages: api.annualProgress };
       return annualPanel.onResult(msg);
+    case 'optimized':
+      api.optimized = msg;
+      return optimizePanel.onResult(msg);
     case 'error': {
       api.errors.push(msg.message);
       if (annualPanel.onError(msg)) {
         notice(`Annual: ${msg.message}`, 'error');
+        return;
+      }
+      if (optimizePanel.onError(msg)) {
+        notice(`Optimise: ${msg.message}`, 'error');
         return;
       }
       const undone = store.refused(msg.seq);
@@ -201,6 +220,7 @@ function onHello(hello) {
   objectPanel.setScene(hello);
   materialPanel.setScene(hello);
   annualPanel.setScene(hello);
+  optimizePanel.setScene(hello);
   editor.setScene(hello);
   store.reset(hello.state || {}, hello.client ?? null);
   // Every luminaire's distribution: flux for the panels, exact C0 samples for the editor.
@@ -417,6 +437,16 @@ async function onViewportClick(x, y) {
   });
 }
 
+// ---- the state shown
+
+// Sends an edit still waiting for its animation frame, so that the server, which reads one
+// connection's messages in order, has the state on screen before the optimise panel's run
+// (it starts from the last state it received).
+function stateShown() {
+  store.sendNow(false);
+  return Promise.resolve();
+}
+
 // ---- distribution requests
 
 function requestDistribution(name) {
@@ -478,6 +508,8 @@ Object.assign(api, {
     return store.latestSeq;
   },
   pick: (x, y) => pickAt(x, y),
+  // The sensor readings of the frame shown (lx, every set's points back to back).
+  sensorReadings: () => Array.from(sensors.values),
   // Emitter i's marker on the canvas (CSS px), object i's base centre, and any world point's.
   emitterOnScreen: (i) => emitterMarkers.screenPosition(i),
   objectOnScreen: (i) => objectsView.screenPosition(i),

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "design/illuminance_model.h"
 #include "runtime/relit_scene.h"
 #include "support/design_room.h"
 
@@ -24,15 +25,7 @@ inline std::vector<std::vector<double>> readings(RelitScene& relit,
   LightingState state = default_lighting_state(scene);
   apply_lighting_state(state, scene, document, "test state", design_room().dir.path());
   relit.apply(state);
-  const std::vector<Rgb> e = relit.sensor_irradiance();
-  std::vector<std::vector<double>> out(scene.sensors.size());
-  std::size_t point = 0;
-  for (std::size_t s = 0; s < scene.sensors.size(); ++s) {
-    for (std::size_t i = 0; i < scene.sensors[s].points.size(); ++i) {
-      out[s].push_back(luminance(e[point++]));
-    }
-  }
-  return out;
+  return sensor_set_lux(relit);
 }
 
 }  // namespace relight::testing

@@ -30,6 +30,16 @@ struct Modelled {
   double value(std::size_t set, TargetKind kind, std::span<const double> d) const {
     return model_value(model, {set, kind, 0}, d);
   }
+  // Every dimmer free in 0..1.
+  DimmerProblem problem(std::span<const Target> targets, std::vector<double> watts) const {
+    DimmerProblem p;
+    p.model = &model;
+    p.targets = targets;
+    p.lo.assign(model.free.size(), 0.0);
+    p.hi.assign(model.free.size(), 1.0);
+    p.watts = std::move(watts);
+    return p;
+  }
 };
 
 bool meets(const IlluminanceModel& model, std::span<const Target> targets,
@@ -51,12 +61,7 @@ TEST(DimmerProgram, ThePowerOptimumMeetsTheTargetsWithinHalfAPercentOfAGridSearc
       {kDesk, TargetKind::kEmMin, 0.6 * m.value(kDesk, TargetKind::kEmMin, ones)},
       {kDesk, TargetKind::kU0Min, 0.8 * m.value(kDesk, TargetKind::kU0Min, ones)},
       {kWall, TargetKind::kEmMin, 0.4 * m.value(kWall, TargetKind::kEmMin, ones)}};
-  DimmerProblem p;
-  p.model = &m.model;
-  p.targets = targets;
-  p.lo = {0, 0, 0};
-  p.hi = {1, 1, 1};
-  p.watts = {30, 25, 40};
+  const DimmerProblem p = m.problem(targets, {30, 25, 40});
   const DimmerSolution s = solve_dimmers(p);
   ASSERT_TRUE(s.feasible);
   EXPECT_TRUE(meets(m.model, targets, s.dimmers));
@@ -122,12 +127,7 @@ TEST(DimmerProgram, TheUniformityOptimumMatchesAGridSearchWithinHalfAPercent) {
   const std::vector<double> ones = {1, 1};
   const std::vector<Target> targets = {
       {kDesk, TargetKind::kEmMin, 0.5 * m.value(kDesk, TargetKind::kEmMin, ones)}};
-  DimmerProblem p;
-  p.model = &m.model;
-  p.targets = targets;
-  p.lo = {0, 0};
-  p.hi = {1, 1};
-  p.watts = {1, 1};
+  DimmerProblem p = m.problem(targets, {1, 1});
   p.objective = DesignObjective::kUniformity;
   const DimmerSolution s = solve_dimmers(p);
   ASSERT_TRUE(s.feasible);
@@ -154,12 +154,7 @@ TEST(DimmerProgram, UnreachableTargetsGiveTheClosestStateAndItsViolation) {
   const std::vector<double> ones = {1, 1, 1};
   const double full = m.value(kDesk, TargetKind::kEmMin, ones);
   const std::vector<Target> targets = {{kDesk, TargetKind::kEmMin, 1.5 * full}};
-  DimmerProblem p;
-  p.model = &m.model;
-  p.targets = targets;
-  p.lo = {0, 0, 0};
-  p.hi = {1, 1, 1};
-  p.watts = {1, 1, 1};
+  const DimmerProblem p = m.problem(targets, {1, 1, 1});
   const DimmerSolution s = solve_dimmers(p);
   EXPECT_FALSE(s.feasible);
   for (const double d : s.dimmers) EXPECT_NEAR(d, 1, 1e-5);  // the power stage may give 1e-7
@@ -173,12 +168,9 @@ TEST(DimmerProgram, DimmerBoundsAndUpperTargetsHold) {
   const std::vector<Target> targets = {
       {kDesk, TargetKind::kEmMin, 0.5 * m.value(kDesk, TargetKind::kEmMin, ones)},
       {kWall, TargetKind::kEMax, 0.6 * m.value(kWall, TargetKind::kEMax, ones)}};
-  DimmerProblem p;
-  p.model = &m.model;
-  p.targets = targets;
+  DimmerProblem p = m.problem(targets, {1, 1, 1});
   p.lo = {0.2, 0, 0};
   p.hi = {0.9, 0.5, 1};
-  p.watts = {1, 1, 1};
   const DimmerSolution s = solve_dimmers(p);
   ASSERT_TRUE(s.feasible);
   EXPECT_TRUE(meets(m.model, targets, s.dimmers));
