@@ -1,5 +1,5 @@
 // `relight bench SCENE.rlt [--frames N] [--sky | --emitters | --objects [--object NAME] |
-// --materials]`: times
+// --materials | --optimize TARGETS.json]`: times
 // the run-time weighted sum
 // and, in
 // the same run, a plain parallel streaming read of as many bytes, so the ratio
@@ -16,7 +16,8 @@
 // material on the most vertices changes 5 % a frame, a designer dragging a colour: the studio's
 // approximate frame, then its final one, engine/albedo_edit.h; approximate_ms, final_ms, and
 // first_final_ms for the first edit, solved from nothing); only the kind of source that changed
-// is summed again (runtime/relighter.h).
+// is summed again (runtime/relighter.h). With --optimize TARGETS.json: `relight optimize` timed
+// against a relight of the whole scene (ratio_to_relight).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -31,6 +32,7 @@
 
 #include "cli/commands.h"
 #include "common/input_error.h"
+#include "design/optimize.h"
 #include "runtime/relit_scene.h"
 
 namespace relight {
@@ -45,6 +47,7 @@ struct BenchArgs {
   bool objects = false;
   std::string object;  // with objects: move only this one
   bool materials = false;
+  std::string optimize;  // TARGETS.json: time `relight optimize` instead
 };
 
 // The opaque material on the most vertices (what a designer repaints: a wall, the floor).
@@ -97,7 +100,46 @@ std::vector<double> time_ms(int frames, F&& f) {
   return ms;
 }
 
+// --optimize: `relight optimize` with the targets, from the scene's own state (design/
+// optimize.h), against a relight of the whole scene after every dimmer changed, both medians
+// of `frames` runs in the same process.
+int run_bench_optimize(const BenchArgs& args) {
+  RelitScene relit(args.rlt, std::nullopt);
+  if (relit.scene().sensor_count() == 0) fail_input(args.rlt, "--optimize needs sensors");
+  const DesignTargets targets = load_design_targets(args.optimize, relit.scene());
+  LightingState state = relit.state();
+  const double relight_ms = median(time_ms(args.frames, [&](int i) {
+    for (LuminaireState& l : state.luminaires) l.dimmer = 0.5 + 0.5 * ((i % 2) == 0);
+    relit.apply(state);
+  }));
+  OptimizeResult result;
+  const double optimize_ms = median(time_ms(
+      args.frames, [&](int) { result = optimize_lighting(relit, StartState{}, targets, {}); }));
+  const nlohmann::json line = {{"mode", "optimize"},
+                               {"receivers", relit.relighter().receivers()},
+                               {"luminaires", relit.scene().luminaires.size()},
+                               {"sensors", relit.scene().sensor_count()},
+                               {"frames", args.frames},
+                               {"median_ms", optimize_ms},
+                               {"relight_ms", relight_ms},
+                               {"ratio_to_relight", optimize_ms / relight_ms},
+                               {"feasible", result.feasible},
+                               {"objective", result.objective_value},
+                               {"iterations", result.iterations},
+                               {"aim_trials", result.aim_trials}};
+  std::cout << line.dump() << "\n";
+  return 0;
+}
+
 int run_bench(const BenchArgs& args) {
+  if (!args.optimize.empty()) {
+    if (args.sky || args.emitters || args.objects || args.materials) {
+      fail_input(args.rlt,
+                 "--optimize times inverse design alone: no --sky, --emitters, "
+                 "--objects or --materials with it");
+    }
+    return run_bench_optimize(args);
+  }
   RelitScene relit(args.rlt, std::nullopt);
   Relighter& relighter = relit.relighter();
   std::vector<float> irradiance(3 * relighter.receivers());
@@ -292,6 +334,8 @@ void add_bench_command(CLI::App& app, Action& action) {
   cmd->add_option("--object", args->object, "with --objects: move only this object");
   cmd->add_flag("--materials", args->materials,
                 "edit the albedo of the most used material each frame (approximate and final)");
+  cmd->add_option("--optimize", args->optimize,
+                  "time relight optimize with these targets (TARGETS.json) against a relight");
   cmd->callback([args, &action] { action = [args] { return run_bench(*args); }; });
 }
 

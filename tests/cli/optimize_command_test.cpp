@@ -107,6 +107,21 @@ TEST(OptimizeCommand, TheStateItWritesReproducesTheAchievedValuesInProbe) {
   EXPECT_EQ(render.exit_code, 0) << render.err;
 }
 
+// `relight bench --optimize`: the optimisation timed against a relight, one JSON line.
+TEST(OptimizeCommand, BenchTimesItAgainstARelight) {
+  const fs::path targets =
+      room_dir().write("bench.json", R"({"sensors": {"desk": {"em_min": 50}}})");
+  const testing::CommandResult r =
+      run_relight("bench " + q(room_rlt()) + " --frames 3 --optimize " + q(targets));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json line = nlohmann::json::parse(r.out);
+  EXPECT_EQ(line["mode"], "optimize");
+  EXPECT_EQ(line["feasible"], true);
+  EXPECT_GT(line["median_ms"].get<double>(), 0);
+  EXPECT_NEAR(line["ratio_to_relight"].get<double>(),
+              line["median_ms"].get<double>() / line["relight_ms"].get<double>(), 1e-9);
+}
+
 TEST(OptimizeCommand, InfeasibleTargetsExitZeroNamingTheBindingOne) {
   const nlohmann::json line =
       optimize(R"({"sensors": {"wall": {"em_min": 100000}}})", room_dir().path() / "closest.json");
