@@ -11,7 +11,7 @@ cd "$(dirname "$0")/.."
 scripts/bootstrap.sh --fuzz
 seconds=${FUZZ_SECONDS:-60}
 build=${FUZZ_BUILD:-build-fuzz}
-targets=(ies ldt scene state obj ply gltf epw photo envmap rlt message)
+targets=(ies ldt scene state obj ply gltf epw photo envmap rlt message targets)
 flags="-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined -g"
 if [[ ! -f "$build/build.ninja" ]]; then
   cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_C_COMPILER=clang \

@@ -1,5 +1,6 @@
-// The small scene the state and studio-message fuzz targets apply their input to: a box room
-// with a luminaire, a window, an emitter and a movable object (every kind a state can name).
+// The small scene the state, targets and studio-message fuzz targets apply their input to: a box
+// room with a luminaire, a window, an emitter, a movable object (every kind a state can name)
+// and a sensor set "desk" (what design targets name).
 #pragma once
 
 #include "scene/json_node.h"
@@ -22,7 +23,8 @@ inline const Scene& fuzz_room() {
     "emitters": [ { "name": "panel", "geometry": { "type": "quad", "corner": [1, 2.5, 1],
         "u": [0.5, 0, 0], "v": [0, 0, 0.5] }, "luminance": 500 } ],
     "objects": [ { "name": "box", "geometry": [ { "type": "box", "min": [1, 0, 1],
-                   "max": [1.5, 0.5, 1.5], "material": "grey" } ] } ]
+                   "max": [1.5, 0.5, 1.5], "material": "grey" } ] } ],
+    "sensors": [ { "name": "desk", "points": [[1, 0.8, 1], [2, 0.8, 2]], "normal": [0, 1, 0] } ]
   })",
                                                          "scene.json"),
                                          "/nonexistent/scene.json");
