@@ -16,6 +16,7 @@ constexpr int kHeaderLines = 8;
 constexpr std::size_t kRecordFields = 35;
 constexpr double kMissingRadiation = 9999;
 constexpr double kMissingDewPoint = 99.9;
+constexpr double kMissingAlbedo = 999;               // and above: the data dictionary's "missing"
 constexpr std::uintmax_t kMaxFileBytes = 64u << 20;  // a year of hours is ~1.5 MB
 
 std::vector<std::string_view> split_fields(std::string_view line) {
@@ -113,6 +114,7 @@ WeatherRecord parse_record(const Fields& f) {
   if (dew != kMissingDewPoint) r.dew_point_c = f.number_in(8, "dew point", -90, 60);
   r.direct_normal_irradiance = f.radiation(15, "direct normal radiation");
   r.diffuse_horizontal_irradiance = f.radiation(16, "diffuse horizontal radiation");
+  if (f.number(33, "albedo") < kMissingAlbedo) r.ground_albedo = f.number_in(33, "albedo", 0, 1);
   return r;
 }
 

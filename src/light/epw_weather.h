@@ -9,12 +9,14 @@
 //   1 year, 2 month, 3 day, 4 hour (1..24: the hour ENDING then, local standard time),
 //   8 dew point temperature (°C; 99.9 = missing),
 //   15 direct normal radiation, 16 diffuse horizontal radiation (Wh/m² over the hour, read
-//   as the hour's mean irradiance in W/m²; 9999 = missing).
+//   as the hour's mean irradiance in W/m²; 9999 = missing),
+//   33 albedo (the ground's reflectance, 0..1; 999 = missing).
 // The other fields must be there (a record with fewer than 35 is truncated) but are not read.
 //
 // Choices: a missing radiation value is an error (a year with holes would give annual metrics
 // that look complete and are not); a missing dew point is not (the Perez efficacies then take
-// 2 cm of precipitable water). Radiation above 1500 W/m² (beyond the solar constant) and dew
+// 2 cm of precipitable water), nor is a missing albedo (the ground then reflects 0.2, Perez's
+// and Radiance's default). Radiation above 1500 W/m² (beyond the solar constant) and dew
 // points outside −90..60 °C are refused; so are dates that are not in the calendar (29 February
 // of a year that is not a leap year included) and hours outside 1..24. Problems are
 // InputError "FILE:LINE: field N (name): reason". Records need not be in order or cover a year.
@@ -43,6 +45,7 @@ struct WeatherRecord {
   std::optional<double> dew_point_c;
   double direct_normal_irradiance = 0;       // W/m²
   double diffuse_horizontal_irradiance = 0;  // W/m²
+  std::optional<double> ground_albedo;       // 0..1, when the record gives one
   int line = 0;                              // in the file, for messages
 };
 

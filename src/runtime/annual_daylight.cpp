@@ -52,7 +52,7 @@ EnvironmentSpec record_sky(const WeatherLocation& location, const WeatherRecord&
   sky.direct_normal_irradiance = record.direct_normal_irradiance;
   sky.diffuse_horizontal_irradiance = record.diffuse_horizontal_irradiance;
   sky.dew_point_c = record.dew_point_c;
-  sky.ground_albedo = 0.2;
+  sky.ground_albedo = record.ground_albedo.value_or(0.2);
   sky.sun.placement = SunPlacement::kPlaceAndTime;
   sky.sun.latitude_deg = location.latitude_deg;
   sky.sun.longitude_deg = location.longitude_deg;

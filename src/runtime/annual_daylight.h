@@ -38,7 +38,8 @@ struct OccupiedPeriod {
 // "HH:MM-HH:MM" (end up to 24:00, after start); nullopt otherwise.
 std::optional<OccupiedPeriod> parse_occupied_period(std::string_view text);
 
-// The Perez sky of a record at its evaluation time (h − 30 min), ground albedo 0.2; messages
+// The Perez sky of a record at its evaluation time (h − 30 min), the ground reflecting the
+// record's albedo (0.2 when it gives none); messages
 // name the record's line.
 EnvironmentSpec record_sky(const WeatherLocation& location, const WeatherRecord& record);
 

@@ -32,6 +32,7 @@ TEST(EpwWeather, ASyntheticYearReadsBackFieldByField) {
   EXPECT_EQ(w.records.back().hour, 24);
   EXPECT_EQ(w.records.back().day, 31);
   EXPECT_DOUBLE_EQ(w.records.front().direct_normal_irradiance, 0);  // night
+  EXPECT_EQ(noon.ground_albedo, 0.2);                               // field 33
 }
 
 // The synthetic file with line `line` (1-based) replaced by `replacement`.
@@ -84,6 +85,8 @@ TEST(EpwWeather, BadRecordsNameTheirLineAndField) {
       {with_field(36, 4, "7.5"), "w.epw:36: field 4 (hour): expected an integer"},
       {with_field(37, 8, "120"), "w.epw:37: field 8 (dew point): 120 is outside"},
       {with_field(38, 8, "99.9"), ""},  // missing dew point: allowed
+      {with_field(39, 33, "1.4"), "w.epw:39: field 33 (albedo): 1.4 is outside 0"},
+      {with_field(40, 33, "snow"), "w.epw:40: field 33 (albedo): expected a number"},
       {with_field(1, 7, "north"), "w.epw:1: field 7 (latitude): expected a number"},
       {with_field(1, 9, "20"), "w.epw:1: field 9 (time zone): 20 is outside"},
       {with_line(1, "CITY,x"), "w.epw:1: expected the LOCATION line"},
@@ -105,6 +108,12 @@ TEST(EpwWeather, BadRecordsNameTheirLineAndField) {
   const std::string text = testing::synthetic_epw();
   EXPECT_NE(error_of(text.substr(0, text.size() - 60)).find("w.epw:8768: truncated record"),
             std::string::npos);
+}
+
+TEST(EpwWeather, TheGroundAlbedoIsReadAndMayBeMissing) {
+  EXPECT_EQ(parse_epw(with_field(9, 33, "0.35"), "w.epw").records[0].ground_albedo, 0.35);
+  EXPECT_FALSE(parse_epw(with_field(9, 33, "999"), "w.epw").records[0].ground_albedo);
+  EXPECT_FALSE(parse_epw(with_field(9, 33, "999.000"), "w.epw").records[0].ground_albedo);
 }
 
 }  // namespace

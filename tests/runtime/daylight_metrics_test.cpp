@@ -92,7 +92,14 @@ TEST(AnnualDaylight, OccupiedHoursWithTheSunUpAtTheHalfHour) {
     EXPECT_GT(sun_direction(h.sky.sun).y, 0);
     EXPECT_EQ(h.sky.type, EnvironmentType::kPerezSky);
     EXPECT_EQ(h.sky.direct_normal_irradiance, h.record.direct_normal_irradiance);
+    EXPECT_EQ(h.sky.ground_albedo, 0.2);  // the synthetic file's field 33
   }
+  // A record's own albedo lights the ground; without one it reflects 0.2.
+  WeatherRecord snow = day.hours.front().record;
+  snow.ground_albedo = 0.8;
+  EXPECT_EQ(record_sky(june.location, snow).ground_albedo, 0.8);
+  snow.ground_albedo.reset();
+  EXPECT_EQ(record_sky(june.location, snow).ground_albedo, 0.2);
 }
 
 }  // namespace
