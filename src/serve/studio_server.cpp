@@ -103,6 +103,7 @@ struct StudioServer::Impl {
   std::thread annual;
   std::atomic<bool> annual_busy{false};
   std::atomic<bool> annual_stop{false};
+  std::unique_ptr<RelitScene> year_scene;  // only the annual thread uses it
   // Inverse design for one client at a time (handle(OptimizeRequest)), on its own thread and
   // its own copy of the scene, opened on the first run and kept for the next.
   std::thread optimizer;
@@ -389,7 +390,8 @@ struct StudioServer::Impl {
       send_json(id, annual_progress_message(seq, 0, 0, "preparing"));
       const AnnualHours hours = annual_hours(r.weather, r.period);
       if (hours.hours.empty()) fail_input("message:/weather", "no occupied hour has the sun up");
-      const std::unique_ptr<RelitScene> year_scene = open_for_annual(rlt);
+      // Opened (and the sensors' importance solved, seconds) on the first run, kept for the next.
+      if (!year_scene) year_scene = open_for_annual(rlt);
       std::size_t done = 0;
       auto last = std::chrono::steady_clock::now();
       const AnnualDaylight year =
