@@ -1,0 +1,84 @@
+// `relight annual` speed (issue 17): the demo room's 414 work-plane sensors through the
+// occupied hours (08:00–18:00) of a synthetic year with the sun up (tests/support/
+// synthetic_epw.h, 48.14° N: 3,470 hours), against a baseline measured in the same run: one
+// hour relit as `relight probe --state` relights it (every receiver, the sun's patch bounced
+// through the room). The issue's bound is 8,760 hours in 10 s on 2 cores. The room is
+// precomputed once (a minute).
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <memory>
+
+#include "cli/demo_room.h"
+#include "light/epw_weather.h"
+#include "runtime/annual_daylight.h"
+#include "scene/scene_loader.h"
+#include "sources/precompute.h"
+#include "sources/transfer_file.h"
+#include "support/synthetic_epw.h"
+#include "support/temp_dir.h"
+
+namespace relight {
+namespace {
+
+struct DemoYear {
+  testing::TempDir dir;
+  std::filesystem::path rlt = dir.path() / "demo-room.rlt";
+  AnnualHours hours;
+};
+
+const DemoYear& demo_year() {
+  static const std::unique_ptr<DemoYear> made = [] {
+    auto y = std::make_unique<DemoYear>();
+    const nlohmann::json doc = demo_room_scene();
+    const std::filesystem::path scene_file = y->dir.write("demo-room.json", doc.dump());
+    const Scene scene = scene_from_json(doc, scene_file);
+    PrecomputeOptions options;
+    options.progress = false;
+    write_transfer_file(y->rlt, precompute_transfer(scene, options), scene, doc, scene_file);
+    y->hours = annual_hours(parse_epw(testing::synthetic_epw(), "year.epw"), {});
+    return y;
+  }();
+  return *made;
+}
+
+// Baseline: hours relit one by one as probe relights one (a fresh sun bounce each).
+void BM_AnnualBaselineProbeHours(benchmark::State& state) {
+  const DemoYear& y = demo_year();
+  RelitScene relit(y.rlt, std::nullopt);
+  LightingState s = daylight_alone(relit.state());
+  std::size_t h = 0;
+  for (auto _ : state) {
+    for (PortalState& p : s.portals) p.environment = y.hours.hours[h].sky;
+    h = (h + 97) % y.hours.hours.size();  // hours spread over the year
+    relit.apply(s);
+    benchmark::DoNotOptimize(relit.irradiance().data());
+  }
+}
+BENCHMARK(BM_AnnualBaselineProbeHours)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(40);
+
+// The year: the sensors' importance solved once (opening), then every occupied sunlit hour.
+void BM_AnnualDemoRoomOccupiedYear(benchmark::State& state) {
+  const DemoYear& y = demo_year();
+  for (auto _ : state) {
+    const auto start = std::chrono::steady_clock::now();
+    const std::unique_ptr<RelitScene> relit = open_for_annual(y.rlt);
+    const double open_s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const AnnualDaylight year = annual_daylight(*relit, daylight_alone(relit->state()),
+                                                y.hours.hours, every_sensor_set(relit->scene()));
+    state.counters["hours"] = static_cast<double>(y.hours.hours.size());
+    state.counters["importance_s"] = open_s;
+    state.counters["shells_s"] = year.values.shell_seconds;
+    state.counters["sweep_s"] = year.values.total_seconds;
+    state.counters["ms_per_hour"] =
+        1e3 * year.values.total_seconds / static_cast<double>(y.hours.hours.size());
+  }
+}
+BENCHMARK(BM_AnnualDemoRoomOccupiedYear)->Unit(benchmark::kSecond)->UseRealTime()->Iterations(1);
+
+}  // namespace
+}  // namespace relight
