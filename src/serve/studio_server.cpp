@@ -213,10 +213,12 @@ struct StudioServer::Impl {
     }
     frame_number = number;
     shown_document = p.document;
+    // The state, its frame and the profiles are superseded by the next ones: a client that
+    // does not read misses them (WebSocketServer::send), and its queue stays bounded.
     for (const ConnectionId c : to) {
-      transport->send(c, state_text, false);
+      transport->send(c, state_text, false, true);
       transport->send(c, *frame, true, true);
-      for (const std::string& m : profiles) transport->send(c, m, false);
+      for (const std::string& m : profiles) transport->send(c, m, false, true);
     }
   }
 

@@ -54,10 +54,10 @@ class WebSocketServer {
   void run();
   void stop();
   // Queues a message to one connection; silently dropped when it has closed. A `droppable`
-  // message (a frame a newer one supersedes) is dropped too while the connection still has
-  // more than kSlowClientBytes unsent: a client that does not read cannot grow the queue.
-  // A connection with more than kStalledClientBytes unsent is closed (code 1008).
-  static constexpr std::size_t kSlowClientBytes = std::size_t{16} << 20;
+  // message (a frame, or a broadcast a newer one supersedes) is dropped too while the
+  // connection still has more than kSlowClientBytes unsent: a client that does not read cannot
+  // grow the queue. A connection with more than kStalledClientBytes unsent is closed (1008).
+  static constexpr std::size_t kSlowClientBytes = std::size_t{8} << 20;
   static constexpr std::size_t kStalledClientBytes = std::size_t{64} << 20;
   void send(ConnectionId connection, std::string payload, bool binary, bool droppable = false);
   std::size_t connection_count() const;
