@@ -12,33 +12,21 @@
 #include "cli/demo_room.h"
 #include "light/epw_weather.h"
 #include "runtime/annual_daylight.h"
-#include "scene/scene_loader.h"
-#include "sources/precompute.h"
-#include "sources/transfer_file.h"
+#include "support/precomputed_file.h"
 #include "support/synthetic_epw.h"
-#include "support/temp_dir.h"
 
 namespace relight {
 namespace {
 
 struct DemoYear {
   testing::TempDir dir;
-  std::filesystem::path rlt = dir.path() / "demo-room.rlt";
-  AnnualHours hours;
+  std::filesystem::path rlt = testing::write_precomputed(dir, "demo-room", demo_room_scene());
+  AnnualHours hours = annual_hours(parse_epw(testing::synthetic_epw(), "year.epw"), {});
 };
 
+// Precomputed once (a minute), kept for both benchmarks.
 const DemoYear& demo_year() {
-  static const std::unique_ptr<DemoYear> made = [] {
-    auto y = std::make_unique<DemoYear>();
-    const nlohmann::json doc = demo_room_scene();
-    const std::filesystem::path scene_file = y->dir.write("demo-room.json", doc.dump());
-    const Scene scene = scene_from_json(doc, scene_file);
-    PrecomputeOptions options;
-    options.progress = false;
-    write_transfer_file(y->rlt, precompute_transfer(scene, options), scene, doc, scene_file);
-    y->hours = annual_hours(parse_epw(testing::synthetic_epw(), "year.epw"), {});
-    return y;
-  }();
+  static const std::unique_ptr<DemoYear> made = std::make_unique<DemoYear>();
   return *made;
 }
 

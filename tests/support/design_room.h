@@ -12,10 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "scene/scene_loader.h"
-#include "sources/precompute.h"
-#include "sources/transfer_file.h"
-#include "support/temp_dir.h"
+#include "support/precomputed_file.h"
 
 namespace relight::testing {
 
@@ -59,15 +56,10 @@ inline nlohmann::json design_room_json() {
 
 struct DesignRoom {
   TempDir dir;
-  std::filesystem::path rlt = dir.path() / "office.rlt";
+  std::filesystem::path rlt;
 
-  explicit DesignRoom(const nlohmann::json& document = design_room_json()) {
-    const std::filesystem::path scene_file = dir.write("office.json", document.dump());
-    const Scene scene = scene_from_json(document, scene_file);
-    PrecomputeOptions options;
-    options.progress = false;
-    write_transfer_file(rlt, precompute_transfer(scene, options), scene, document, scene_file);
-  }
+  explicit DesignRoom(const nlohmann::json& document = design_room_json())
+      : rlt(write_precomputed(dir, "office", document)) {}
 };
 
 }  // namespace relight::testing
