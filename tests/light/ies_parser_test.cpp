@@ -112,6 +112,7 @@ TEST(IesParser, FilesRunning90To270AreMirroredAboutTheC90Plane) {
   EXPECT_DOUBLE_EQ(intensity(w, radians(300), radians(45)),
                    intensity(w, radians(240), radians(45)));
   EXPECT_DOUBLE_EQ(*w.rated_lumens, 3000.0);
+  EXPECT_EQ(w.input_watts, 25.0);  // the input watts after the ballast factors
   EXPECT_EQ(w.opening.shape, OpeningShape::kCircular);
   EXPECT_DOUBLE_EQ(w.opening.width_m, 0.3048);  // 1 ft
 }

@@ -195,6 +195,7 @@ TEST(LdtParser, SmallValidFileLoads) {
   const auto w = load_ldt(test_data("small_axial.ldt"));
   EXPECT_DOUBLE_EQ(intensity(w, 0, radians(45)), 200.0);
   EXPECT_DOUBLE_EQ(*w.rated_lumens, 800.0);
+  EXPECT_EQ(w.input_watts, 10.0);  // the first lamp set's wattage with ballast
 }
 
 TEST(LdtParser, TruncatedFileIsReportedAtItsLastLine) {
