@@ -46,8 +46,8 @@ FUZZ_SECONDS ?= 60
 fuzz:
 	@FUZZ_SECONDS=$(FUZZ_SECONDS) JOBS=$(JOBS) scripts/fuzz.sh
 
-# Sanitizers (issue 16): the suite under ASan + UBSan in build-sanitize, the studio server's
-# tests under TSan in build-tsan. Not part of `make test` (a second and third build).
+# Sanitizers (issue 16): the suite under ASan + UBSan in build-sanitize. Not part of `make test`
+# (a second full build).
 test-sanitize:
 	@JOBS=$(JOBS) scripts/test-sanitize.sh
 
