@@ -214,7 +214,8 @@ int move_control_point(LegendreCurve& c, int k, double new_gamma, double new_val
 }
 
 int move_control_point(LegendreCurve& c, int k, double new_value) {
-  return move_control_point(c, k, c.control_gamma[k], new_value);
+  // at(): k is checked before it is read (ASan found the read past the end for a bad k).
+  return move_control_point(c, k, c.control_gamma.at(static_cast<std::size_t>(k)), new_value);
 }
 
 }  // namespace relight
