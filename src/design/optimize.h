@@ -1,5 +1,5 @@
 // Inverse lighting design (`relight optimize`, issue 20; the future work of Dobashi et al. 1995,
-// §7): from the designer's targets (design/design_targets.h) and a start state, the luminaire
+// §6): from the designer's targets (design/design_targets.h) and a start state, the luminaire
 // settings that meet them — the dimmers exactly (design/dimmer_program.h over the linear
 // illuminance model, design/illuminance_model.h), the aims within their cones by a local
 // search from that solution (design/aim_search.h) — written as a lighting state document
