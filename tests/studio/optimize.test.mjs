@@ -17,6 +17,8 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 
+// JSON with sorted keys (the server re-serialises documents; compare by content): the studio's own.
+import { canonical } from '../../studio/src/state.js';
 import * as browser from './browser_support.mjs';
 import { connect, relightBinary, startServer, stopServer, studioScene } from './studio_support.mjs';
 
@@ -51,13 +53,6 @@ test.after(async () => {
 
 const testid = (id) => page.locator(`[data-testid="${id}"]`);
 const relClose = (a, b, tol) => Math.abs(a - b) <= tol * Math.max(Math.abs(a), Math.abs(b), 1e-12);
-
-// JSON with sorted keys (the server re-serialises documents; compare by content).
-function canonical(x) {
-  if (Array.isArray(x)) return `[${x.map(canonical).join(',')}]`;
-  if (x && typeof x === 'object') return `{${Object.keys(x).sort().map((k) => `${JSON.stringify(k)}:${canonical(x[k])}`).join(',')}}`;
-  return JSON.stringify(x);
-}
 
 let runs = 0;
 // `relight optimize` on the served .rlt: its printed line and the state it wrote.
