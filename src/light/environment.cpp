@@ -7,6 +7,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <map>
+#include <mutex>
 #include <stdexcept>
 
 #include "light/environment_map_cubemap.h"
@@ -90,28 +93,6 @@ std::vector<Rgb> map_sh(const Environment& env, int order) {
   return c;
 }
 
-// ∫ f dω and ∫ dω over the rectangle [u0,u1]×[v0,v1] of `face` (u, v ∈ [−1, 1]), by the
-// product Gauss–Legendre rule `rule` in u and v with the solid angle's Jacobian
-// dω = du dv / (1 + u² + v²)^{3/2}.
-struct TexelIntegral {
-  double value = 0, solid_angle = 0;
-};
-template <class F>
-void add_gauss_rect(int face, double u0, double u1, double v0, double v1, const GaussLegendre& rule,
-                    F&& f, TexelIntegral& sum) {
-  const double hu = 0.5 * (u1 - u0), hv = 0.5 * (v1 - v0);
-  for (std::size_t b = 0; b < rule.nodes.size(); ++b) {
-    const double v = v0 + hv * (rule.nodes[b] + 1.0);
-    for (std::size_t a = 0; a < rule.nodes.size(); ++a) {
-      const double u = u0 + hu * (rule.nodes[a] + 1.0);
-      const double r2 = 1.0 + u * u + v * v;
-      const double w = rule.weights[a] * rule.weights[b] * hu * hv / (r2 * std::sqrt(r2));
-      sum.value += w * f(cubemap_direction({face, 0.5 * u + 0.5, 0.5 * v + 0.5}));
-      sum.solid_angle += w;
-    }
-  }
-}
-
 // Gauss–Legendre points per texel and axis for a face of n texels: at least 3, and about 48
 // across a face. The texel's mean radiance is Σ w·J·f / Σ w·J (a constant sky exactly). Against
 // 32 × 32 midpoint sub-cells, for six Perez skies (suns 10°–70° high, overcast to clear) at n = 32,
@@ -123,36 +104,91 @@ int texel_gauss_points(int n) {
   return std::max(3, (48 + n - 1) / n);
 }
 
-std::vector<Rgb> sky_cubemap(const SkyModel& sky, int n) {
+// The sky's texel quadrature of a face size: per texel above the horizon its points (unit
+// directions) and weights w·J, by the product Gauss–Legendre rule in u and v with the solid
+// angle's Jacobian dω = du dv / (1 + u² + v²)^{3/2}; a texel the horizon crosses split there.
+// Texels wholly below the horizon (which see the uniform ground) have no points. The same for
+// every sky: tabulated once per face size, so that a sky's cubemap evaluates only the sky.
+struct SkyTexelRule {
+  std::vector<std::uint32_t> first;  // texel t's points are [first[t], first[t + 1])
+  std::vector<Vec3> directions;
+  std::vector<double> weights;
+  std::vector<double> solid_angle;  // Σ w·J per texel
+  std::vector<bool> below;
+};
+
+void add_gauss_rect(int face, double u0, double u1, double v0, double v1, const GaussLegendre& rule,
+                    SkyTexelRule& out) {
+  const double hu = 0.5 * (u1 - u0), hv = 0.5 * (v1 - v0);
+  for (std::size_t b = 0; b < rule.nodes.size(); ++b) {
+    const double v = v0 + hv * (rule.nodes[b] + 1.0);
+    for (std::size_t a = 0; a < rule.nodes.size(); ++a) {
+      const double u = u0 + hu * (rule.nodes[a] + 1.0);
+      const double r2 = 1.0 + u * u + v * v;
+      out.weights.push_back(rule.weights[a] * rule.weights[b] * hu * hv / (r2 * std::sqrt(r2)));
+      out.directions.push_back(cubemap_direction({face, 0.5 * u + 0.5, 0.5 * v + 0.5}));
+    }
+  }
+}
+
+SkyTexelRule tabulate_sky_texel_rule(int n) {
   const GaussLegendre& rule = gauss_legendre(texel_gauss_points(n));
+  SkyTexelRule out;
+  const std::size_t texels = cubemap_texel_count(n);
+  out.first.reserve(texels + 1);
+  out.solid_angle.assign(texels, 0.0);
+  out.below.assign(texels, false);
+  for (std::size_t t = 0; t < texels; ++t) {
+    out.first.push_back(static_cast<std::uint32_t>(out.weights.size()));
+    const CubemapTexel c = cubemap_texel_from_index(n, t);
+    const bool side = c.face != kPosY && c.face != kNegY;  // y = −v on the four side faces
+    const double v0 = 2.0 * c.j / n - 1.0, v1 = 2.0 * (c.j + 1) / n - 1.0;
+    const double u0 = 2.0 * c.i / n - 1.0, u1 = 2.0 * (c.i + 1) / n - 1.0;
+    if (c.face == kNegY || (side && v0 >= 0)) {
+      out.below[t] = true;
+    } else if (side && v0 < 0 && v1 > 0) {  // the horizon crosses the texel: split it there
+      add_gauss_rect(c.face, u0, u1, v0, 0.0, rule, out);
+      add_gauss_rect(c.face, u0, u1, 0.0, v1, rule, out);
+    } else {
+      add_gauss_rect(c.face, u0, u1, v0, v1, rule, out);
+    }
+    for (std::size_t k = out.first.back(); k < out.weights.size(); ++k) {
+      out.solid_angle[t] += out.weights[k];
+    }
+  }
+  out.first.push_back(static_cast<std::uint32_t>(out.weights.size()));
+  return out;
+}
+
+const SkyTexelRule& sky_texel_rule(int n) {
+  static std::mutex mutex;
+  static std::map<int, SkyTexelRule> rules;  // nodes stay put: references stay valid
+  const std::scoped_lock lock(mutex);
+  auto it = rules.find(n);
+  if (it == rules.end()) it = rules.emplace(n, tabulate_sky_texel_rule(n)).first;
+  return it->second;
+}
+
+std::vector<Rgb> sky_cubemap(const SkyModel& sky, int n) {
+  const SkyTexelRule& rule = sky_texel_rule(n);
   const std::vector<double>& omega = cubemap_solid_angles(n);
   std::vector<Rgb> out(cubemap_texel_count(n));
-  auto f = [&](Vec3 d) { return sky_diffuse_luminance(sky, d); };
-  // Rows are independent (the run time rebuilds a shell per sky change: use every core);
-  // texels wholly below the horizon see the uniform ground and need no quadrature.
-  tbb::parallel_for(tbb::blocked_range<int>(0, 6 * n), [&](const tbb::blocked_range<int>& rows) {
-    for (int row = rows.begin(); row != rows.end(); ++row) {
-      const int face = row / n, j = row % n;
-      const bool side = face != kPosY && face != kNegY;  // y = −v on the four side faces
-      const double v0 = 2.0 * j / n - 1.0, v1 = 2.0 * (j + 1) / n - 1.0;
-      const bool below = face == kNegY || (side && v0 >= 0);
-      for (int i = 0; i < n; ++i) {
-        const double u0 = 2.0 * i / n - 1.0, u1 = 2.0 * (i + 1) / n - 1.0;
-        if (below) {
-          out[cubemap_texel_index(n, {face, i, j})] = grey(sky.ground_luminance);
-          continue;
-        }
-        TexelIntegral sum;
-        if (side && v0 < 0 && v1 > 0) {  // the horizon crosses the texel: split it there
-          add_gauss_rect(face, u0, u1, v0, 0.0, rule, f, sum);
-          add_gauss_rect(face, u0, u1, 0.0, v1, rule, f, sum);
-        } else {
-          add_gauss_rect(face, u0, u1, v0, v1, rule, f, sum);
-        }
-        out[cubemap_texel_index(n, {face, i, j})] = grey(sum.value / sum.solid_angle);
-      }
-    }
-  });
+  // Rows of texels are independent (the run time rebuilds a shell per sky change: use every
+  // core).
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, 6 * static_cast<std::size_t>(n)),
+                    [&](const tbb::blocked_range<std::size_t>& rows) {
+                      for (std::size_t t = rows.begin() * n; t != rows.end() * n; ++t) {
+                        if (rule.below[t]) {
+                          out[t] = grey(sky.ground_luminance);
+                          continue;
+                        }
+                        double value = 0;
+                        for (std::uint32_t k = rule.first[t]; k != rule.first[t + 1]; ++k) {
+                          value += rule.weights[k] * sky_diffuse_luminance(sky, rule.directions[k]);
+                        }
+                        out[t] = grey(value / rule.solid_angle[t]);
+                      }
+                    });
   if (sky.sun) {
     const CubemapTexel t = cubemap_texel(n, sky.sun->direction);
     out[cubemap_texel_index(n, t)] += grey(sky.sun->integrated_luminance() / omega[t.j * n + t.i]);

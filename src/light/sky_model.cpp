@@ -131,6 +131,15 @@ double relative_horizontal_illuminance(const Dome& dome, Vec3 sun, int n_zenith,
   return total;
 }
 
+// The integral a sky is scaled by (the sun direction checked by make_sky first).
+double normalisation_integral(const Dome& dome, Vec3 sun_direction) {
+  if (!(length(sun_direction) > 0) || !is_finite(sun_direction)) {
+    throw std::invalid_argument("sun direction must be finite and non-zero");
+  }
+  return relative_horizontal_illuminance(dome, normalize(sun_direction), kNormalisationNodes,
+                                         2 * kNormalisationNodes);
+}
+
 SkyModel make_sky(const Dome& dome, Vec3 sun_direction, double ground_albedo,
                   double sun_normal_illuminance) {
   if (!(length(sun_direction) > 0) || !is_finite(sun_direction)) {
@@ -161,16 +170,16 @@ void finish(SkyModel& sky) {
       sky.ground_albedo * (sky.sky_horizontal_illuminance + sky.sun_horizontal_illuminance) / kPi;
 }
 
+// `relative_illuminance` is the dome's relative_horizontal_illuminance at kNormalisationNodes.
 SkyModel sky_from_horizontal_illuminance(const Dome& dome, Vec3 sun_direction,
                                          double horizontal_illuminance, double ground_albedo,
-                                         double sun_normal_illuminance) {
+                                         double sun_normal_illuminance,
+                                         double relative_illuminance) {
   if (!(horizontal_illuminance >= 0) || !std::isfinite(horizontal_illuminance)) {
     throw std::invalid_argument("horizontal illuminance must be finite and >= 0");
   }
   SkyModel sky = make_sky(dome, sun_direction, ground_albedo, sun_normal_illuminance);
-  sky.zenith_luminance = horizontal_illuminance /
-                         relative_horizontal_illuminance(
-                             dome, sky.sun_direction, kNormalisationNodes, 2 * kNormalisationNodes);
+  sky.zenith_luminance = horizontal_illuminance / relative_illuminance;
   sky.sky_horizontal_illuminance = horizontal_illuminance;
   finish(sky);
   return sky;
@@ -266,6 +275,7 @@ SunDisc make_sun_disc(Vec3 direction, double normal_illuminance) {
   d.direction = normalize(direction);
   d.angular_radius = radians(kSunAngularDiameterDeg) / 2.0;
   d.cos_angular_radius = std::cos(d.angular_radius);
+  d.tan_angular_radius = std::tan(d.angular_radius);
   const double s = std::sin(d.angular_radius);
   // 1 − cos r = 2 sin²(r/2), without cancellation.
   const double h = std::sin(d.angular_radius / 2.0);
@@ -295,8 +305,10 @@ SkyModel make_sky_from_zenith_luminance(int sky_type, Vec3 sun_direction, double
 SkyModel make_sky_from_horizontal_illuminance(int sky_type, Vec3 sun_direction,
                                               double horizontal_illuminance, double ground_albedo,
                                               double sun_normal_illuminance) {
-  return sky_from_horizontal_illuminance(cie_dome(sky_type), sun_direction, horizontal_illuminance,
-                                         ground_albedo, sun_normal_illuminance);
+  const Dome dome = cie_dome(sky_type);
+  return sky_from_horizontal_illuminance(dome, sun_direction, horizontal_illuminance, ground_albedo,
+                                         sun_normal_illuminance,
+                                         normalisation_integral(dome, sun_direction));
 }
 
 SkyModel make_perez_sky_from_horizontal_illuminance(const CieSkyParameters& coefficients,
@@ -305,12 +317,14 @@ SkyModel make_perez_sky_from_horizontal_illuminance(const CieSkyParameters& coef
                                                     double ground_albedo,
                                                     double sun_normal_illuminance) {
   Dome dome{SkyFormula::kPerez, 0, coefficients};
+  double integral = normalisation_integral(dome, sun_direction);
   // Coefficients under which no direction of the dome is lit: a uniform dome instead.
-  if (!(relative_horizontal_illuminance(dome, normalize(sun_direction), 64, 128) > 0)) {
+  if (!(integral > 0)) {
     dome.p = CieSkyParameters{};
+    integral = normalisation_integral(dome, sun_direction);
   }
   return sky_from_horizontal_illuminance(dome, sun_direction, horizontal_illuminance, ground_albedo,
-                                         sun_normal_illuminance);
+                                         sun_normal_illuminance, integral);
 }
 
 double sky_diffuse_luminance(const SkyModel& sky, Vec3 dir) {

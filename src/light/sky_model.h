@@ -84,6 +84,7 @@ struct SunDisc {
   Vec3 direction{0, 1, 0};        // unit, toward the disc centre
   double angular_radius = 0;      // radians (half of 0.53°)
   double cos_angular_radius = 1;  // cos r
+  double tan_angular_radius = 0;  // tan r: the cone's spread per metre along its axis
   double solid_angle = 0;         // 2π(1 − cos r), sr
   double normal_illuminance = 0;  // lx on a plane facing the sun: ∫_disc L cos α dω
   double luminance = 0;           // uniform over the disc, cd/m²

@@ -33,22 +33,66 @@ Vec3 face_point(int face, double u, double v) {
   }
 }
 
+// Y_lm(centre) · Ω per texel and coefficient (texel-major, sh_count(order) a texel).
+std::vector<double> tabulate_sh_weights(int order, int n) {
+  const std::vector<Vec3>& directions = cubemap_texel_directions(n);
+  const std::vector<double>& omega = cubemap_solid_angles(n);
+  const auto k = static_cast<std::size_t>(sh_count(order));
+  std::vector<double> table(directions.size() * k);
+  std::vector<double> y(k);
+  for (std::size_t t = 0; t < directions.size(); ++t) {
+    const CubemapTexel texel = cubemap_texel_from_index(n, t);
+    sh_eval(order, directions[t], y);
+    for (std::size_t b = 0; b < k; ++b) table[t * k + b] = y[b] * omega[texel.j * n + texel.i];
+  }
+  return table;
+}
+
+// The SH weights of every texel, tabulated once per (order, N) like the solid angles: a shell
+// projects its cubemap whenever its sky changes (every hour of `relight annual`).
+const std::vector<double>& cubemap_sh_weights(int order, int n) {
+  static std::mutex mutex;
+  static std::map<std::pair<int, int>, std::vector<double>> tables;
+  const std::scoped_lock lock(mutex);
+  auto it = tables.find({order, n});
+  if (it == tables.end())
+    it = tables.emplace(std::pair{order, n}, tabulate_sh_weights(order, n)).first;
+  return it->second;
+}
+
 template <class T>
 std::vector<T> project(int order, int n, std::span<const T> texels) {
   assert(texels.size() == cubemap_texel_count(n));
-  const std::vector<double> omega = cubemap_solid_angles(n);
-  std::vector<T> c(sh_count(order));
-  for (int face = 0; face < 6; ++face)
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i) {
-        const CubemapTexel t{face, i, j};
-        sh_add_sample(cubemap_texel_direction(n, t),
-                      texels[cubemap_texel_index(n, t)] * omega[j * n + i], std::span<T>(c));
-      }
+  const std::vector<double>& table = cubemap_sh_weights(order, n);
+  const auto k = static_cast<std::size_t>(sh_count(order));
+  std::vector<T> c(k);
+  for (std::size_t t = 0; t < texels.size(); ++t) {
+    const T& value = texels[t];
+    if (value == T{}) continue;  // e.g. the half of a shell behind its portal
+    const double* y = table.data() + t * k;
+    for (std::size_t b = 0; b < k; ++b) c[b] += value * y[b];
+  }
   return c;
 }
 
+std::vector<Vec3> tabulate_texel_directions(int n) {
+  std::vector<Vec3> d(cubemap_texel_count(n));
+  for (std::size_t t = 0; t < d.size(); ++t) {
+    d[t] = cubemap_texel_direction(n, cubemap_texel_from_index(n, t));
+  }
+  return d;
+}
+
 }  // namespace
+
+const std::vector<Vec3>& cubemap_texel_directions(int n) {
+  static std::mutex mutex;
+  static std::map<int, std::vector<Vec3>> tables;  // nodes stay put: references stay valid
+  const std::scoped_lock lock(mutex);
+  auto it = tables.find(n);
+  if (it == tables.end()) it = tables.emplace(n, tabulate_texel_directions(n)).first;
+  return it->second;
+}
 
 Vec3 cubemap_direction(CubemapCoord c) {
   return normalize(face_point(c.face, 2.0 * c.s - 1.0, 2.0 * c.t - 1.0));

@@ -63,6 +63,9 @@ double cubemap_texel_solid_angle(int n, int i, int j);
 // once per N for the life of the process (a sky's cubemap is made every hour of a year from
 // the same sub-texel grid); safe to call from many threads.
 const std::vector<double>& cubemap_solid_angles(int n);
+// Unit directions of every texel centre (index as cubemap_texel_index), tabulated and shared
+// the same way.
+const std::vector<Vec3>& cubemap_texel_directions(int n);
 
 // Face and (s, t) of a direction (need not be unit; must be non-zero). Ties between axes go
 // to x, then y, then z.
@@ -72,7 +75,7 @@ CubemapTexel cubemap_texel(int n, Vec3 dir);
 
 // c_lm = Σ_texels value · Y_lm(centre) · Ω for l < order: texels hold 6·N² values in the
 // layout above (per-texel averages of the function, e.g. radiance). Error O(1/N²) for smooth
-// functions.
+// functions. The weights Y_lm(centre) · Ω are tabulated once per (order, N) for the process.
 std::vector<double> sh_project_cubemap(int order, int n, std::span<const double> texels);
 std::vector<Rgb> sh_project_cubemap(int order, int n, std::span<const Rgb> texels);
 

@@ -25,7 +25,7 @@ bool may_reach(const BoundingSphere& b, const SunDisc& disc, Vec3 origin) {
   const double along = dot(v, disc.direction);
   if (along < -b.radius) return false;
   const double across = length(v - disc.direction * along);
-  return across <= b.radius + length(v) * std::tan(disc.angular_radius) * 1.01 + 1e-9;
+  return across <= b.radius + length(v) * disc.tan_angular_radius * 1.01 + 1e-9;
 }
 
 }  // namespace
@@ -34,7 +34,7 @@ PortalSun make_portal_sun(std::uint32_t portal, const SunDisc& disc, Rgb illumin
                           std::shared_ptr<const RayTracer> exterior) {
   PortalSun sun{portal, disc, illuminance, std::move(exterior), {}};
   const Frame frame = frame_from_normal(disc.direction);
-  const double t = std::tan(disc.angular_radius);
+  const double t = disc.tan_angular_radius;
   // A direction of the disc at tangent-plane offset (x, y) · tan r from its centre.
   const auto direction = [&](double x, double y) {
     return normalize(frame.to_world({x * t, y * t, 1}));
@@ -88,10 +88,16 @@ Rgb sun_irradiance(const SunGeometry& g, std::span<const PortalSun> suns, Vec3 p
 
 bool sun_may_light_triangle(const SunGeometry& g, std::span<const PortalSun> suns, Vec3 a, Vec3 b,
                             Vec3 c, Vec3 n) {
-  const Vec3 m = (a + b + c) / 3;
-  const double r = std::max({length(a - m), length(b - m), length(c - m)});
+  // The bounding sphere only for a triangle that faces some sun (every hour of `relight
+  // annual` asks this of every triangle of the room).
+  Vec3 m;
+  double r = -1;
   for (const PortalSun& sun : suns) {
     if (sun.portal >= g.portals.size() || dot(n, sun.disc.direction) <= 0) continue;
+    if (r < 0) {
+      m = (a + b + c) / 3;
+      r = std::max({length(a - m), length(b - m), length(c - m)});
+    }
     // A ray from a point within r of m is a ray from m moved by at most r.
     const BoundingSphere& bound = g.portals[sun.portal];
     if (may_reach({bound.centre, bound.radius + 1.01 * r}, sun.disc, m)) return true;

@@ -87,9 +87,9 @@ void render_shell(const ShellInputs& inputs, const PortalFrame& portal, int face
   }
   std::vector<Rgb>& half = workspace.sh_scratch;
   half = shell.cubemap;
+  const std::vector<Vec3>& directions = cubemap_texel_directions(face_size);
   for (std::size_t t = 0; t < half.size(); ++t) {
-    const Vec3 dir = cubemap_texel_direction(face_size, cubemap_texel_from_index(face_size, t));
-    if (dot(dir, portal.outward) <= 0) half[t] = Rgb{};
+    if (dot(directions[t], portal.outward) <= 0) half[t] = Rgb{};
   }
   shell.sh = sh_project_cubemap(sh_order, face_size, std::span<const Rgb>(half));
 }
