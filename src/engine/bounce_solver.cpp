@@ -63,11 +63,22 @@ ColumnChange add(ColumnChange a, const ColumnChange& b) {
 // an entry — column tiles that stay in a core's cache read G once per tile and were slower).
 __attribute__((target_clones("default", "arch=x86-64-v3"))) void gather_columns(
     const float* values, const int* indices, Eigen::Index entries, const float* reflected,
-    Eigen::Index columns, float* sum) {
+    Eigen::Index columns, float* __restrict sum) {
   std::fill_n(sum, columns, 0.0f);
-  for (Eigen::Index e = 0; e < entries; ++e) {
+  Eigen::Index e = 0;
+  for (; e + 4 <= entries; e += 4) {
+    const float a0 = values[e], a1 = values[e + 1], a2 = values[e + 2], a3 = values[e + 3];
+    const float* __restrict r0 = reflected + indices[e] * columns;
+    const float* __restrict r1 = reflected + indices[e + 1] * columns;
+    const float* __restrict r2 = reflected + indices[e + 2] * columns;
+    const float* __restrict r3 = reflected + indices[e + 3] * columns;
+    for (Eigen::Index k = 0; k < columns; ++k) {
+      sum[k] += (a0 * r0[k] + a1 * r1[k]) + (a2 * r2[k] + a3 * r3[k]);
+    }
+  }
+  for (; e < entries; ++e) {
     const float a = values[e];
-    const float* row = reflected + indices[e] * columns;
+    const float* __restrict row = reflected + indices[e] * columns;
     for (Eigen::Index k = 0; k < columns; ++k) sum[k] += a * row[k];
   }
 }
