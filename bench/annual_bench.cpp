@@ -60,8 +60,10 @@ void BM_AnnualDemoRoomOccupiedYear(benchmark::State& state) {
                                                 y.hours.hours, every_sensor_set(relit->scene()));
     state.counters["hours"] = static_cast<double>(y.hours.hours.size());
     state.counters["importance_s"] = open_s;
-    state.counters["shells_s"] = year.values.shell_seconds;
     state.counters["sweep_s"] = year.values.total_seconds;
+    state.counters["streams"] = static_cast<double>(year.values.streams);
+    state.counters["shells_thread_s"] = year.values.shell_seconds;
+    state.counters["hours_thread_s"] = year.values.hour_seconds;
     state.counters["ms_per_hour"] =
         1e3 * year.values.total_seconds / static_cast<double>(y.hours.hours.size());
   }

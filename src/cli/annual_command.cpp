@@ -143,10 +143,12 @@ int run_annual(const AnnualArgs& args) {
   const RuntimeScene* runtime = relit->relighter().runtime_scene();
   const double importance = runtime != nullptr ? runtime->sensor_importance_seconds() : 0;
   std::printf(
-      "annual: %zu hours x %zu sensors in %.2f s (the sensors' importance %.2f s, once; "
-      "shells %.2f s; sums and suns %.2f s)\n",
+      "annual: %zu hours x %zu sensors in %.2f s (the sensors' importance %.2f s, once; the "
+      "hours %.2f s in %zu streams, whose threads spent %.2f s on shells and %.2f s on sums "
+      "and suns)\n",
       hours.hours.size(), values.sensors, importance + values.total_seconds, importance,
-      values.shell_seconds, values.total_seconds - values.shell_seconds);
+      values.total_seconds, values.streams, values.shell_seconds,
+      values.hour_seconds - values.shell_seconds);
   if (!args.output.empty()) {
     write_text_atomically(args.output, results_csv(sets, year.per_sensor));
     std::printf("wrote %s\n", args.output.c_str());

@@ -182,9 +182,18 @@ double RuntimeScene::bounce(std::span<const float> direct, std::span<float> indi
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-void RuntimeScene::solve_sensor_importance() {
+void RuntimeScene::solve_sensor_importance(std::shared_ptr<const SensorImportance> solved) {
   if (!gather_) throw std::invalid_argument("RuntimeScene: no gather operator stored");
-  if (!importance_) importance_ = sensor_importance(*gather_, receivers_, bounce_);
+  if (importance_) return;
+  if (solved) {
+    if (solved->vertices != vertex_count_ || solved->sensors != receivers() - vertex_count_) {
+      throw std::invalid_argument("RuntimeScene: the importance given is another scene's");
+    }
+    importance_ = std::move(solved);
+    return;
+  }
+  importance_ = std::make_shared<const SensorImportance>(
+      relight::sensor_importance(*gather_, receivers_, bounce_));
 }
 
 double RuntimeScene::bounce_to_sensors(std::span<const float> direct,

@@ -23,6 +23,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <span>
 #include <vector>
@@ -123,8 +124,11 @@ class RuntimeScene {
 
   // Solves every sensor's importance (engine/sensor_importance.h) once, for
   // bounce_to_sensors: seconds on a room (the demo room's 414 sensors). Needs can_bounce().
-  void solve_sensor_importance();
-  bool has_sensor_importance() const { return importance_.has_value(); }
+  // With `solved` (the same transfer's, solved by another RuntimeScene of it), takes that
+  // instead; throws std::invalid_argument when its vertex and sensor counts are not these.
+  void solve_sensor_importance(std::shared_ptr<const SensorImportance> solved = nullptr);
+  bool has_sensor_importance() const { return importance_ != nullptr; }
+  std::shared_ptr<const SensorImportance> sensor_importance() const { return importance_; }
   // Wall time of its solve, seconds (0 before it).
   double sensor_importance_seconds() const { return importance_ ? importance_->seconds : 0; }
   // bounce() at the sensor rows alone, through their importance: the vertex rows of
@@ -140,7 +144,7 @@ class RuntimeScene {
   RayTracer occluders_, glass_;
   std::vector<BoundingSphere> glass_bounds_;  // per portal
   std::optional<GatherOperator> gather_;
-  std::optional<SensorImportance> importance_;
+  std::shared_ptr<const SensorImportance> importance_;  // read-only: shared with twins
   Receivers receivers_;  // positions, normals, albedo per receiver (0 at sensors)
   BounceSettings bounce_;
   // Vertex → the (triangle, corner) pairs around it, compressed: [first[v], first[v + 1]).

@@ -1,7 +1,15 @@
 // A year of daylight through the precomputed transfer; see annual_daylight.h.
 #include "runtime/annual_daylight.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+#include <tbb/partitioner.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
 #include <chrono>
+#include <mutex>
 #include <numeric>
 #include <optional>
 
@@ -109,6 +117,56 @@ LightingState daylight_alone(LightingState state) {
   return state;
 }
 
+namespace {
+
+// Relights `relit` for hours [first, last) from `state` and writes their sensor values into
+// the rows first..last of `out` (lux and direct_sun_lux already sized).
+struct StreamSeconds {
+  double hours = 0, shells = 0;
+};
+StreamSeconds sweep_hours(RelitScene& relit, LightingState state, std::span<const AnnualHour> hours,
+                          std::size_t first, std::size_t last, std::span<const std::size_t> sensors,
+                          std::span<const Vec3> points, std::span<const Vec3> normals,
+                          AnnualValues& out, const std::function<void()>& on_hour) {
+  const auto start = std::chrono::steady_clock::now();
+  double shell_seconds = 0;
+  for (std::size_t h = first; h < last; ++h) {
+    for (PortalState& p : state.portals) p.environment = hours[h].sky;
+    relit.apply(state);
+    const Relighter& relighter = relit.relighter();
+    for (std::size_t p = 0; p < state.portals.size(); ++p) {
+      shell_seconds += relighter.shell_seconds(p);
+    }
+    const std::vector<Rgb> e = relit.sensor_irradiance();
+    // ASE's direct sunlight: the suns traced past the room and the movable objects as placed —
+    // as the relight traced them at the sensors when there are no objects, else again here.
+    std::optional<SunGeometry> geometry;
+    const std::vector<Rgb> traced =
+        relighter.objects() == nullptr ? relit.sensor_sun_irradiance() : std::vector<Rgb>{};
+    if (!relighter.suns().empty() && traced.empty()) {
+      geometry.emplace(relighter.sun_geometry());
+      if (relighter.objects() != nullptr) geometry->occluders = relighter.objects()->occluders();
+    }
+    float* const lux = out.lux.data() + h * sensors.size();
+    float* const sun_lux = out.direct_sun_lux.data() + h * sensors.size();
+    for (std::size_t c = 0; c < sensors.size(); ++c) {
+      lux[c] = static_cast<float>(luminance(e[sensors[c]]));
+      Rgb sun;
+      if (!traced.empty()) {
+        sun = traced[sensors[c]];
+      } else if (geometry) {
+        sun = sun_irradiance(*geometry, relighter.suns(), points[c], normals[c]);
+      }
+      sun_lux[c] = static_cast<float>(luminance(sun));
+    }
+    on_hour();
+  }
+  return {std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+          shell_seconds};
+}
+
+}  // namespace
+
 AnnualValues annual_sensor_values(RelitScene& relit, const LightingState& base,
                                   std::span<const AnnualHour> hours,
                                   std::span<const std::size_t> sensors,
@@ -128,30 +186,44 @@ AnnualValues annual_sensor_values(RelitScene& relit, const LightingState& base,
   }
   AnnualValues out;
   out.sensors = sensors.size();
-  out.lux.reserve(hours.size() * sensors.size());
-  out.direct_sun_lux.reserve(hours.size() * sensors.size());
-  LightingState state = base;
-  for (const AnnualHour& hour : hours) {
-    for (PortalState& p : state.portals) p.environment = hour.sky;
-    relit.apply(state);
-    for (std::size_t p = 0; p < state.portals.size(); ++p) {
-      out.shell_seconds += relit.relighter().shell_seconds(p);
-    }
-    const std::vector<Rgb> e = relit.sensor_irradiance();
-    const Relighter& relighter = relit.relighter();
-    // ASE's direct sunlight: the suns traced past the room and the movable objects as placed.
-    std::optional<SunGeometry> geometry;
-    if (!relighter.suns().empty()) {
-      geometry.emplace(relighter.sun_geometry());
-      if (relighter.objects() != nullptr) geometry->occluders = relighter.objects()->occluders();
-    }
-    for (std::size_t c = 0; c < sensors.size(); ++c) {
-      out.lux.push_back(static_cast<float>(luminance(e[sensors[c]])));
-      const Rgb sun =
-          geometry ? sun_irradiance(*geometry, relighter.suns(), points[c], normals[c]) : Rgb{};
-      out.direct_sun_lux.push_back(static_cast<float>(luminance(sun)));
-    }
-    if (on_hour) on_hour();
+  out.lux.assign(hours.size() * sensors.size(), 0.0f);
+  out.direct_sun_lux.assign(hours.size() * sensors.size(), 0.0f);
+  // Streams of consecutive hours, each relit by its own twin of `relit` (a relighter is not
+  // thread-safe): within an hour the shell's sky, the sums and the sun use every core, but
+  // parts of it run on one (the sky's normalisation, the SH and Haar transforms of the shell,
+  // the gaps between parallel loops); a second stream fills those. Every hour is relit from
+  // `base` alone (open_for_annual: no warm start), so the values do not depend on the split.
+  const std::size_t streams =
+      std::min({kAnnualStreams,
+                tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism),
+                std::max<std::size_t>(hours.size(), 1)});
+  std::vector<std::unique_ptr<RelitScene>> twins;
+  for (std::size_t k = 1; k < streams; ++k) twins.push_back(relit.twin());
+  std::mutex progress;
+  const auto hour_done = [&] {
+    if (!on_hour) return;
+    const std::scoped_lock lock(progress);
+    on_hour();
+  };
+  std::vector<StreamSeconds> seconds(streams);
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, streams, 1),
+      [&](const tbb::blocked_range<std::size_t>& range) {
+        for (std::size_t k = range.begin(); k != range.end(); ++k) {
+          // Isolated: a thread waiting inside one stream's parallel loops must not take up
+          // the other stream (it would then finish that whole stream first).
+          tbb::this_task_arena::isolate([&] {
+            seconds[k] = sweep_hours(k == 0 ? relit : *twins[k - 1], base, hours,
+                                     hours.size() * k / streams, hours.size() * (k + 1) / streams,
+                                     sensors, points, normals, out, hour_done);
+          });
+        }
+      },
+      tbb::simple_partitioner{});
+  out.streams = streams;
+  for (const StreamSeconds& s : seconds) {
+    out.hour_seconds += s.hours;
+    out.shell_seconds += s.shells;
   }
   out.total_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

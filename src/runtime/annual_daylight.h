@@ -70,12 +70,21 @@ struct AnnualValues {
   std::size_t sensors = 0;
   std::vector<float> lux;             // hours × sensors
   std::vector<float> direct_sun_lux;  // hours × sensors
-  double shell_seconds = 0;           // rebuilding the portals' shells
-  double total_seconds = 0;
+  std::size_t streams = 1;            // hours relit at once (kAnnualStreams)
+  double total_seconds = 0;           // wall time
+  // Summed over the streams (thread time): every hour, and its rebuilding of the portals'
+  // shells.
+  double hour_seconds = 0, shell_seconds = 0;
 };
 
-// Relights `relit` for every hour from `base`; `sensors` are indices into the scene's sensor
-// points (scene order, sets back to back). `on_hour` is called after each hour.
+// At most this many streams of hours are relit at once (as many as TBB may run threads, up
+// to this), each by its own relighter: a further copy of the runtime scene and the gather
+// operator per stream.
+inline constexpr std::size_t kAnnualStreams = 2;
+
+// Relights `relit` (and its twins, RelitScene::twin) for every hour from `base`; `sensors` are
+// indices into the scene's sensor points (scene order, sets back to back). `on_hour` is called
+// after each hour, from any of the streams' threads, one call at a time.
 AnnualValues annual_sensor_values(RelitScene& relit, const LightingState& base,
                                   std::span<const AnnualHour> hours,
                                   std::span<const std::size_t> sensors,

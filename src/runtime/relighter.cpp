@@ -31,13 +31,14 @@ bool can_read_sensors_only(const TransferView& transfer, const Scene& scene) {
 }
 
 std::optional<RuntimeScene> make_runtime_scene(const TransferView& transfer, const Scene& scene,
-                                               bool sensors_only) {
+                                               bool sensors_only,
+                                               std::shared_ptr<const SensorImportance> solved) {
   if (scene.portals.empty() && scene.emitters.empty() && scene.objects.empty() &&
       (glossy_materials(scene.materials).empty() || transfer.scene.gather_rows.empty())) {
     return std::nullopt;
   }
   std::optional<RuntimeScene> runtime(std::in_place, transfer.scene, bounce_settings(scene));
-  if (sensors_only && !scene.portals.empty()) runtime->solve_sensor_importance();
+  if (sensors_only && !scene.portals.empty()) runtime->solve_sensor_importance(std::move(solved));
   return runtime;
 }
 
@@ -51,8 +52,9 @@ SunBounce sun_bounce(const RelighterSettings& settings, bool sensors_only) {
 Relighter::Relighter(TransferView transfer, const Scene& scene, RelighterSettings settings)
     : transfer_(std::move(transfer)),
       luminaire_specs_(scene.luminaires),
-      runtime_(make_runtime_scene(
-          transfer_, scene, settings.sensors_only && can_read_sensors_only(transfer_, scene))),
+      runtime_(make_runtime_scene(transfer_, scene,
+                                  settings.sensors_only && can_read_sensors_only(transfer_, scene),
+                                  settings.sensor_importance)),
       luminaires_(
           {transfer_.luminaires, transfer_.receivers, transfer_.sh_order, transfer_.direct_sh_mode},
           scene, settings.window),

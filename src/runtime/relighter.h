@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <span>
 #include <vector>
@@ -41,6 +42,9 @@ struct RelighterSettings {
   // glossy materials, whose light at the sensors depends on the whole room's, and from the
   // first state that edits materials on.
   bool sensors_only = false;
+  // The sensors' importance already solved for this transfer (another Relighter's: see
+  // sensor_importance()), taken instead of solving it again.
+  std::shared_ptr<const SensorImportance> sensor_importance;
 };
 
 class Relighter {
@@ -83,6 +87,10 @@ class Relighter {
   // The scene's receivers, occluders and gather operator for light computed at run time;
   // null for a scene with no portals, emitters or movable objects.
   const RuntimeScene* runtime_scene() const { return runtime_ ? &*runtime_ : nullptr; }
+  // The sensors' importance when relight() reads the sensors alone through it, else null.
+  std::shared_ptr<const SensorImportance> sensor_importance() const {
+    return runtime_ ? runtime_->sensor_importance() : nullptr;
+  }
   // The current shell of portal p (for renderers showing the view out of a window).
   const Shell& shell(std::size_t p) const { return portals_.portal(p).shell; }
   // Wall time of the last shell update of portal p, seconds.

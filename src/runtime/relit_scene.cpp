@@ -10,11 +10,26 @@ namespace relight {
 RelitScene::RelitScene(const std::filesystem::path& rlt,
                        const std::optional<std::filesystem::path>& state_file,
                        const RelighterSettings& settings)
-    : transfer_(std::make_unique<TransferFile>(open_transfer_file(rlt))) {
-  relighter_ = std::make_unique<Relighter>(transfer_->view, transfer_->scene, settings);
+    : transfer_(std::make_shared<const TransferFile>(open_transfer_file(rlt))),
+      settings_(settings) {
+  relighter_ = std::make_unique<Relighter>(transfer_->view, transfer_->scene, settings_);
   irradiance_.resize(3 * relighter_->receivers());
   apply(state_file ? load_lighting_state(transfer_->scene, *state_file)
                    : default_lighting_state(transfer_->scene));
+}
+
+RelitScene::RelitScene(TwinKey /*key*/, std::shared_ptr<const TransferFile> transfer,
+                       const RelighterSettings& settings, const LightingState& state)
+    : transfer_(std::move(transfer)), settings_(settings) {
+  relighter_ = std::make_unique<Relighter>(transfer_->view, transfer_->scene, settings_);
+  irradiance_.resize(3 * relighter_->receivers());
+  apply(state);
+}
+
+std::unique_ptr<RelitScene> RelitScene::twin() const {
+  RelighterSettings settings = settings_;
+  settings.sensor_importance = relighter_->sensor_importance();
+  return std::make_unique<RelitScene>(TwinKey{}, transfer_, settings, relighter_->state());
 }
 
 void RelitScene::apply(const LightingState& state) {
@@ -40,6 +55,18 @@ std::vector<Rgb> RelitScene::sensor_irradiance() const {
   for (std::size_t s = 0; s < transfer_->sensor_count; ++s) {
     const std::size_t r = 3 * sensor_receiver(transfer_->vertex_count, s);
     out.push_back({irradiance_[r], irradiance_[r + 1], irradiance_[r + 2]});
+  }
+  return out;
+}
+
+std::vector<Rgb> RelitScene::sensor_sun_irradiance() const {
+  const std::span<const float> direct = relighter_->portals().sun_direct();
+  std::vector<Rgb> out;
+  if (direct.empty()) return out;
+  out.reserve(transfer_->sensor_count);
+  for (std::size_t s = 0; s < transfer_->sensor_count; ++s) {
+    const std::size_t r = 3 * sensor_receiver(transfer_->vertex_count, s);
+    out.push_back({direct[r], direct[r + 1], direct[r + 2]});
   }
   return out;
 }

@@ -26,6 +26,20 @@ class RelitScene {
              const std::optional<std::filesystem::path>& state_file,
              const RelighterSettings& settings = {});
 
+  // A second RelitScene of the same opened file (shared, read-only) with the same settings
+  // and the sensors' importance shared (not solved again), lit by this one's state. A
+  // relighter is not thread-safe: a caller that relights in parallel (`relight annual`'s
+  // streams of hours) gives each thread its own. It holds its own relighter and runtime scene
+  // (the gather operator copied: 29 MB for the demo room).
+  std::unique_ptr<RelitScene> twin() const;
+  // twin()'s constructor (the key can only be made here).
+  class TwinKey {
+    friend class RelitScene;
+    TwinKey() = default;
+  };
+  RelitScene(TwinKey, std::shared_ptr<const TransferFile> transfer,
+             const RelighterSettings& settings, const LightingState& state);
+
   const TransferFile& transfer() const { return *transfer_; }
   const Scene& scene() const { return transfer_->scene; }
   Relighter& relighter() { return *relighter_; }
@@ -42,6 +56,9 @@ class RelitScene {
   std::vector<float> indirect_irradiance();
   // Sensor illuminance (lx, RGB) in scene order, sensor sets back to back.
   std::vector<Rgb> sensor_irradiance() const;
+  // The portals' exact suns alone at every sensor (PortalSetLighting::sun_direct: no movable
+  // object's shadow), as the last apply() traced them; empty when there is no sun.
+  std::vector<Rgb> sensor_sun_irradiance() const;
   // Per-vertex luminance L = ρE/π (cd/m², RGB), 3 per vertex, from `irradiance` (3 per
   // receiver or per vertex).
   std::vector<float> vertex_radiance(std::span<const float> irradiance) const;
@@ -54,7 +71,8 @@ class RelitScene {
   const RayTracer& mesh_tracer();
 
  private:
-  std::unique_ptr<TransferFile> transfer_;  // stable address: the Relighter refers to it
+  std::shared_ptr<const TransferFile> transfer_;  // stable address: the Relighter refers to it
+  RelighterSettings settings_;
   std::unique_ptr<Relighter> relighter_;
   std::vector<float> irradiance_;
   std::unique_ptr<RayTracer> opaque_tracer_, portal_tracer_, mesh_tracer_;

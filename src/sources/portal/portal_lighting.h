@@ -98,6 +98,10 @@ class PortalSetLighting : public SourceTerm {
   // portals): for per-pixel tracing.
   std::span<const PortalSun> suns() const { return suns_; }
   SunGeometry sun_geometry() const;
+  // Their direct irradiance (penumbra included, the room's shadows, no movable object's), 3 per
+  // receiver (RGB), as the last update traced it: at the sensor rows alone when the sun bounce
+  // is SunBounce::kSensors (the vertex rows zero); empty when there is no sun.
+  std::span<const float> sun_direct() const { return sun_direct_; }
   // Wall time of the last suns' update: the direct light at every receiver and its bounce.
   double sun_seconds() const { return sun_seconds_; }
   double sun_bounce_seconds() const { return sun_bounce_seconds_; }
