@@ -9,6 +9,8 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "math/frame.h"
+
 namespace relight {
 
 namespace {
@@ -60,14 +62,43 @@ RuntimeScene::RuntimeScene(const RuntimeSceneView& view, BounceSettings bounce)
     }
   }
   glass_bounds_.resize(boxes.size());
+  std::vector<double> largest(boxes.size(), 0.0);  // the area of the triangle giving the normal
   for (std::size_t p = 0; p < boxes.size(); ++p) {
     if (boxes[p].first.x <= boxes[p].second.x)
-      glass_bounds_[p].centre = (boxes[p].first + boxes[p].second) * 0.5;
+      glass_bounds_[p].sphere.centre = (boxes[p].first + boxes[p].second) * 0.5;
   }
   for (std::size_t t = 0; t < view.glass_triangles.size(); ++t) {
-    BoundingSphere& b = glass_bounds_[view.glass_portal[t]];
-    for (const std::uint32_t v : view.glass_triangles[t])
-      b.radius = std::max(b.radius, length(positions_[v] - b.centre));
+    GlassBounds& b = glass_bounds_[view.glass_portal[t]];
+    const auto& tri = view.glass_triangles[t];
+    const Vec3 face =
+        cross(positions_[tri[1]] - positions_[tri[0]], positions_[tri[2]] - positions_[tri[0]]);
+    if (length(face) > largest[view.glass_portal[t]]) {
+      largest[view.glass_portal[t]] = length(face);
+      b.normal = normalize(face);
+    }
+    for (const std::uint32_t v : tri)
+      b.sphere.radius = std::max(b.sphere.radius, length(positions_[v] - b.sphere.centre));
+  }
+  for (GlassBounds& b : glass_bounds_) {
+    const Frame frame = frame_from_normal(b.normal);
+    b.u = frame.t;
+    b.v = frame.b;
+    b.u_min = b.v_min = 1e300;
+    b.u_max = b.v_max = -1e300;
+  }
+  for (std::size_t t = 0; t < view.glass_triangles.size(); ++t) {
+    GlassBounds& b = glass_bounds_[view.glass_portal[t]];
+    for (const std::uint32_t v : view.glass_triangles[t]) {
+      const Vec3 d = positions_[v] - b.sphere.centre;
+      b.u_min = std::min(b.u_min, dot(d, b.u));
+      b.u_max = std::max(b.u_max, dot(d, b.u));
+      b.v_min = std::min(b.v_min, dot(d, b.v));
+      b.v_max = std::max(b.v_max, dot(d, b.v));
+      b.depth = std::max(b.depth, std::abs(dot(d, b.normal)));
+    }
+  }
+  for (GlassBounds& b : glass_bounds_) {
+    if (b.u_min > b.u_max) b.u_min = b.u_max = b.v_min = b.v_max = 0;  // no glass
   }
   PreparedMesh mesh;
   mesh.positions = positions_;

@@ -67,6 +67,18 @@ struct BoundingSphere {
   double radius = 0;
 };
 
+// What holds a portal's glass: a sphere, and a plane slab with a rectangle in it — the plane
+// through the sphere's centre with the normal of the glass's largest triangle, the extent of
+// the glass vertices along two axes of that plane and their largest distance from it
+// (`depth`; 0 for flat glass). Rays of the sun that cannot cross the rectangle grown by the
+// slab cannot pass the glass (sources/portal/portal_sun.cpp culls the room's triangles so).
+struct GlassBounds {
+  BoundingSphere sphere;
+  Vec3 normal{0, 1, 0}, u{1, 0, 0}, v{0, 0, 1};       // unit; u, v in the plane
+  double u_min = 0, u_max = 0, v_min = 0, v_max = 0;  // from sphere.centre along u, v
+  double depth = 0;
+};
+
 // Irradiance (lx, RGB) at a point with a unit normal; called from many threads at once.
 using IrradianceField = std::function<Rgb(Vec3 point, Vec3 normal)>;
 // Whether a field may light any point of the triangle (a, b, c) of unit normal n: false lets
@@ -89,10 +101,10 @@ class RuntimeScene {
   // (ids: the portal's index).
   const RayTracer& occluders() const { return occluders_; }
   const RayTracer& glass() const { return glass_; }
-  // A sphere holding portal p's glass (radius 0 for a portal with none): the centre of its
-  // vertices' bounding box, the radius to the farthest one.
-  BoundingSphere glass_bounds(std::uint32_t portal) const {
-    return portal < glass_bounds_.size() ? glass_bounds_[portal] : BoundingSphere{};
+  // What holds portal p's glass (a sphere of radius 0 for a portal with none): the sphere
+  // about the centre of its vertices' bounding box, to the farthest one; the slab around it.
+  GlassBounds glass_bounds(std::uint32_t portal) const {
+    return portal < glass_bounds_.size() ? glass_bounds_[portal] : GlassBounds{};
   }
 
   // Whether the precompute kept the gather operator (bounce() is then available).
@@ -142,7 +154,7 @@ class RuntimeScene {
   std::vector<Triangle> triangles_;         // opaque
   std::vector<std::uint32_t> opaque_slot_;  // mesh triangle index → index into triangles_
   RayTracer occluders_, glass_;
-  std::vector<BoundingSphere> glass_bounds_;  // per portal
+  std::vector<GlassBounds> glass_bounds_;  // per portal
   std::optional<GatherOperator> gather_;
   std::shared_ptr<const SensorImportance> importance_;  // read-only: shared with twins
   Receivers receivers_;  // positions, normals, albedo per receiver (0 at sensors)

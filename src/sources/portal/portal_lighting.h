@@ -121,8 +121,8 @@ class PortalSetLighting : public SourceTerm {
   const Scene* scene_;
   std::vector<PortalState> states_;
   std::vector<PortalLighting> portals_;
-  std::vector<BoundingSphere> bounds_;  // per portal: around its glass
-  std::vector<PortalSun> suns_;         // the portals' exact suns
+  std::vector<GlassBounds> bounds_;  // per portal: around its glass
+  std::vector<PortalSun> suns_;      // the portals' exact suns
   // What suns_ was traced for: per sun its portal, disc, illuminance and exterior placement.
   struct SunKey {
     std::uint32_t portal;

@@ -28,6 +28,36 @@ bool may_reach(const BoundingSphere& b, const SunDisc& disc, Vec3 origin) {
   return across <= b.radius + length(v) * disc.tan_angular_radius * 1.01 + 1e-9;
 }
 
+// Whether a ray of the disc's cone from some point of the triangle (a, b, c) may cross the
+// glass's slab within its rectangle (GlassBounds): the triangle moved along the sun's axis
+// onto the plane is a triangle again (a parallel projection), whose box there must meet the
+// rectangle grown by what the other rays of the cone add and by the offset of ray origins
+// from surfaces. A ray at angle ε ≤ r from the axis s, from a point at distance t along s from
+// the plane, crosses it within 2·t·tan r / (|s·n| − tan r) of the axis's crossing, and a
+// glass vertex at distance depth from the plane moves a crossing by at most
+// depth / (|s·n| − tan r). Conservative: true whenever a corner is not in front of the plane
+// or the sun grazes it (|s·n| < 0.05).
+bool may_cross_glass(const GlassBounds& g, Vec3 s, double tan_spread, const Vec3 (&corners)[3]) {
+  const double cos_incidence = std::abs(dot(s, g.normal));
+  if (cos_incidence < 0.05 || cos_incidence <= 2 * tan_spread) return true;
+  double u_lo = 1e300, u_hi = -1e300, v_lo = 1e300, v_hi = -1e300, t_max = 0, scale = 1;
+  for (const Vec3& p : corners) {
+    const double t = dot(g.sphere.centre - p, g.normal) / dot(s, g.normal);
+    if (!(t > 0)) return true;
+    t_max = std::max(t_max, t);
+    const Vec3 q = p + s * t - g.sphere.centre;
+    u_lo = std::min(u_lo, dot(q, g.u));
+    u_hi = std::max(u_hi, dot(q, g.u));
+    v_lo = std::min(v_lo, dot(q, g.v));
+    v_hi = std::max(v_hi, dot(q, g.v));
+    scale = std::max({scale, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+  }
+  const double margin =
+      (2.02 * t_max * tan_spread + g.depth) / (cos_incidence - tan_spread) + 1e-4 * scale;
+  return u_hi >= g.u_min - margin && u_lo <= g.u_max + margin && v_hi >= g.v_min - margin &&
+         v_lo <= g.v_max + margin;
+}
+
 }  // namespace
 
 PortalSun make_portal_sun(std::uint32_t portal, const SunDisc& disc, Rgb illuminance,
@@ -54,7 +84,8 @@ PortalSun make_portal_sun(std::uint32_t portal, const SunDisc& disc, Rgb illumin
 }
 
 double sun_disc_fraction(const SunGeometry& g, const PortalSun& sun, Vec3 origin, bool penumbra) {
-  if (sun.portal >= g.portals.size() || !may_reach(g.portals[sun.portal], sun.disc, origin)) {
+  if (sun.portal >= g.portals.size() ||
+      !may_reach(g.portals[sun.portal].sphere, sun.disc, origin)) {
     return 0;
   }
   const bool centre = passes(g, sun, origin, sun.disc.direction);
@@ -99,8 +130,11 @@ bool sun_may_light_triangle(const SunGeometry& g, std::span<const PortalSun> sun
       r = std::max({length(a - m), length(b - m), length(c - m)});
     }
     // A ray from a point within r of m is a ray from m moved by at most r.
-    const BoundingSphere& bound = g.portals[sun.portal];
-    if (may_reach({bound.centre, bound.radius + 1.01 * r}, sun.disc, m)) return true;
+    const GlassBounds& bound = g.portals[sun.portal];
+    if (may_reach({bound.sphere.centre, bound.sphere.radius + 1.01 * r}, sun.disc, m) &&
+        may_cross_glass(bound, sun.disc.direction, sun.disc.tan_angular_radius, {a, b, c})) {
+      return true;
+    }
   }
   return false;
 }

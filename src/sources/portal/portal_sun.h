@@ -54,9 +54,9 @@ PortalSun make_portal_sun(std::uint32_t portal, const SunDisc& disc, Rgb illumin
 
 // What the sun's rays are traced against.
 struct SunGeometry {
-  Occluders occluders;                      // the opaque scene (and placed objects)
-  const RayTracer& glass;                   // the portals' glass, ids: portal index
-  std::span<const BoundingSphere> portals;  // scene order
+  Occluders occluders;                   // the opaque scene (and placed objects)
+  const RayTracer& glass;                // the portals' glass, ids: portal index
+  std::span<const GlassBounds> portals;  // scene order
 };
 
 // The fraction of the sun's disc seen from `origin` (already off the surface) through its

@@ -3,6 +3,7 @@
 // rays count (their own portal first, nothing opaque, no exterior object).
 #include <cmath>
 #include <memory>
+#include <random>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -12,6 +13,18 @@
 namespace relight {
 namespace {
 
+// A 2 × 2 m window in the plane z = 0 about `centre`, as RuntimeScene bounds it.
+GlassBounds window_bounds(Vec3 centre) {
+  GlassBounds b;
+  b.sphere = {centre, std::sqrt(2.0)};
+  b.normal = {0, 0, 1};
+  b.u = {1, 0, 0};
+  b.v = {0, 1, 0};
+  b.u_min = b.v_min = -1;
+  b.u_max = b.v_max = 1;
+  return b;
+}
+
 // Two 2 × 2 m windows in the plane z = 0 (x ∈ [−1, 1] and, portal 1, x ∈ [3, 5]; y ∈ [−1, 1])
 // and the sun straight along +z; points at z = −1.
 struct Windows {
@@ -19,8 +32,7 @@ struct Windows {
                               {3, -1, 0},  {5, -1, 0}, {5, 1, 0}, {3, 1, 0}};
   RayTracer glass{positions, {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}, {4, 6, 7}}, {0, 0, 1, 1}};
   RayTracer nothing{positions, {}, {}};
-  std::vector<BoundingSphere> bounds{{{0, 0, 0}, 2 * std::sqrt(2.0)},
-                                     {{4, 0, 0}, 2 * std::sqrt(2.0)}};
+  std::vector<GlassBounds> bounds{window_bounds({0, 0, 0}), window_bounds({4, 0, 0})};
   PortalSun sun =
       make_portal_sun(0, make_sun_disc({0, 0, 1}, 100000), {100000, 100000, 100000}, nullptr);
   SunGeometry geometry(const RayTracer& occluders) const { return {occluders, glass, bounds}; }
@@ -73,6 +85,59 @@ TEST(PortalSun, OnlyRaysLeavingThroughTheirOwnPortalUnoccludedCount) {
   // Facing away from the sun: nothing, whatever is seen.
   const Rgb e = sun_irradiance(w.geometry(w.nothing), std::span(&w.sun, 1), {0, 0, -1}, {0, 0, -1});
   EXPECT_EQ(e.r, 0.0);
+}
+
+// sun_may_light_triangle culls the room's triangles for the sun's patch (every hour of `relight
+// annual`): by the glass's bounding sphere and by its rectangle, the triangle moved along the
+// sun onto the window's plane. Conservative: no triangle that some point of it sees any of the
+// disc through a window of (4 × 4 points and the corners, penumbra traced) is culled, over
+// random small triangles up to 2 m behind the windows and suns up to 60° from the normal —
+// and the rectangle culls triangles the sphere alone keeps.
+TEST(PortalSun, TrianglesCulledForTheSunPatchSeeNoneOfTheSun) {
+  const Windows w;
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> unit(0, 1);
+  int culled = 0, lit = 0, kept_by_sphere_alone = 0;
+  for (int k = 0; k < 8000; ++k) {
+    const double polar = radians(60 * unit(rng)), azimuth = 2 * kPi * unit(rng);
+    const Vec3 s{std::sin(polar) * std::cos(azimuth), std::sin(polar) * std::sin(azimuth),
+                 std::cos(polar)};
+    const PortalSun sun = make_portal_sun(k % 2, make_sun_disc(s, 100000), {1, 1, 1}, nullptr);
+    const Vec3 a{-2.5 + 9 * unit(rng), -2.5 + 5 * unit(rng), -0.01 - 2 * unit(rng)};
+    const double size = 0.02 + 0.3 * unit(rng);
+    const Vec3 b = a + Vec3{size * (unit(rng) - 0.5), size * (unit(rng) - 0.5), 0.1 * size};
+    const Vec3 c = a + Vec3{size * (unit(rng) - 0.5), size * (unit(rng) - 0.5), -0.1 * size};
+    const Vec3 n = Vec3{0, 0, 1};  // faces the window; the normal only gates facing the sun
+    const SunGeometry g = w.geometry(w.nothing);
+    bool sees = false;
+    for (int i = 0; i <= 4 && !sees; ++i) {
+      for (int j = 0; i + j <= 4 && !sees; ++j) {
+        const Vec3 p = a + (b - a) * (i / 4.0) + (c - a) * (j / 4.0);
+        sees = sun_disc_fraction(g, sun, offset_from_surface(p, n), true) > 0;
+      }
+    }
+    const bool may = sun_may_light_triangle(g, std::span(&sun, 1), a, b, c, n);
+    if (sees) {
+      ++lit;
+      EXPECT_TRUE(may) << "triangle " << k;
+    }
+    if (!may) {
+      ++culled;
+      // What the sphere alone (RuntimeScene's bound before the rectangle) would have kept.
+      GlassBounds sphere_only = w.bounds[sun.portal];
+      sphere_only.u_min = sphere_only.v_min = -1e9;
+      sphere_only.u_max = sphere_only.v_max = 1e9;
+      std::vector<GlassBounds> loose = w.bounds;
+      loose[sun.portal] = sphere_only;
+      const SunGeometry g_loose{w.nothing, w.glass, loose};
+      if (sun_may_light_triangle(g_loose, std::span(&sun, 1), a, b, c, n)) ++kept_by_sphere_alone;
+    }
+  }
+  std::printf("%d triangles lit, %d culled, %d of them kept by the sphere alone\n", lit, culled,
+              kept_by_sphere_alone);
+  EXPECT_GT(lit, 500);
+  EXPECT_GT(culled, 2000);
+  EXPECT_GT(kept_by_sphere_alone, 400);
 }
 
 }  // namespace
