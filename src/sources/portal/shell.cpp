@@ -2,6 +2,7 @@
 // sources/portal/shell.h.
 #include "sources/portal/shell.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -76,11 +77,30 @@ void render_shell(const ShellInputs& inputs, const PortalFrame& portal, int face
     apply_frost(workspace.frost, shell.cubemap, workspace.frost_scratch);
   }
 
-  // 4. Tint.
-  for (Rgb& l : shell.cubemap) l = l * inputs.tint;
-
-  // 5. SH of the final cubemap, or of its outward half.
+  // 4. SH of a grey cubemap (a sky, no exterior object): its one channel projected, then
+  // tinted — a third of the work of 5 (every hour of `relight annual` makes a shell).
   shell.sh_order = sh_order;
+  const bool grey = std::all_of(shell.cubemap.begin(), shell.cubemap.end(),
+                                [](const Rgb& l) { return l.r == l.g && l.r == l.b; });
+  if (grey) {
+    std::vector<double>& values = workspace.grey_scratch;
+    values.resize(shell.cubemap.size());
+    const std::vector<Vec3>& directions = cubemap_texel_directions(face_size);
+    for (std::size_t t = 0; t < values.size(); ++t) {
+      const bool behind = inputs.sh_outward_half && dot(directions[t], portal.outward) <= 0;
+      values[t] = behind ? 0.0 : shell.cubemap[t].r;
+    }
+    const std::vector<double> c =
+        sh_project_cubemap(sh_order, face_size, std::span<const double>(values));
+    shell.sh.resize(c.size());
+    for (std::size_t k = 0; k < c.size(); ++k) shell.sh[k] = inputs.tint * c[k];
+  }
+
+  // 5. Tint.
+  for (Rgb& l : shell.cubemap) l = l * inputs.tint;
+  if (grey) return;
+
+  // 6. SH of the final cubemap, or of its outward half.
   if (!inputs.sh_outward_half) {
     shell.sh = sh_project_cubemap(sh_order, face_size, std::span<const Rgb>(shell.cubemap));
     return;

@@ -81,7 +81,8 @@ struct Shell {
 struct ShellWorkspace {
   FrostPlan frost;
   std::vector<Rgb> frost_scratch;
-  std::vector<Rgb> sh_scratch;  // the outward half, for sh_outward_half
+  std::vector<Rgb> sh_scratch;       // the outward half, for sh_outward_half
+  std::vector<double> grey_scratch;  // the same of a grey cubemap, one value a texel
 };
 
 // Renders the shell into `shell`, reusing its storage and the workspace. face_size ≥ 1 (32 is
