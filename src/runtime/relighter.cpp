@@ -49,7 +49,7 @@ SunBounce sun_bounce(const RelighterSettings& settings, bool sensors_only) {
 
 }  // namespace
 
-Relighter::Relighter(TransferView transfer, const Scene& scene, RelighterSettings settings)
+Relighter::Relighter(TransferView transfer, const Scene& scene, const RelighterSettings& settings)
     : transfer_(std::move(transfer)),
       luminaire_specs_(scene.luminaires),
       runtime_(make_runtime_scene(transfer_, scene,

@@ -49,7 +49,7 @@ struct RelighterSettings {
 
 class Relighter {
  public:
-  Relighter(TransferView transfer, const Scene& scene, RelighterSettings settings = {});
+  Relighter(TransferView transfer, const Scene& scene, const RelighterSettings& settings = {});
   Relighter(const Relighter&) = delete;  // the terms refer to transfer_
   Relighter& operator=(const Relighter&) = delete;
 
