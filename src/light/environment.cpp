@@ -8,8 +8,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <map>
-#include <mutex>
 #include <stdexcept>
 
 #include "light/environment_map_cubemap.h"
@@ -19,6 +17,7 @@
 #include "math/equirect.h"
 #include "math/legendre.h"
 #include "math/sh.h"
+#include "math/tabulated.h"
 
 namespace relight {
 
@@ -161,12 +160,7 @@ SkyTexelRule tabulate_sky_texel_rule(int n) {
 }
 
 const SkyTexelRule& sky_texel_rule(int n) {
-  static std::mutex mutex;
-  static std::map<int, SkyTexelRule> rules;  // nodes stay put: references stay valid
-  const std::scoped_lock lock(mutex);
-  auto it = rules.find(n);
-  if (it == rules.end()) it = rules.emplace(n, tabulate_sky_texel_rule(n)).first;
-  return it->second;
+  return tabulated<SkyTexelRule>(n, [](int size) { return tabulate_sky_texel_rule(size); });
 }
 
 std::vector<Rgb> sky_cubemap(const SkyModel& sky, int n) {

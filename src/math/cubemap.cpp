@@ -4,10 +4,10 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
-#include <map>
-#include <mutex>
+#include <utility>
 
 #include "math/sh.h"
+#include "math/tabulated.h"
 
 namespace relight {
 namespace {
@@ -51,13 +51,9 @@ std::vector<double> tabulate_sh_weights(int order, int n) {
 // The SH weights of every texel, tabulated once per (order, N) like the solid angles: a shell
 // projects its cubemap whenever its sky changes (every hour of `relight annual`).
 const std::vector<double>& cubemap_sh_weights(int order, int n) {
-  static std::mutex mutex;
-  static std::map<std::pair<int, int>, std::vector<double>> tables;
-  const std::scoped_lock lock(mutex);
-  auto it = tables.find({order, n});
-  if (it == tables.end())
-    it = tables.emplace(std::pair{order, n}, tabulate_sh_weights(order, n)).first;
-  return it->second;
+  return tabulated<std::vector<double>>(std::pair{order, n}, [](std::pair<int, int> key) {
+    return tabulate_sh_weights(key.first, key.second);
+  });
 }
 
 template <class T>
@@ -86,12 +82,7 @@ std::vector<Vec3> tabulate_texel_directions(int n) {
 }  // namespace
 
 const std::vector<Vec3>& cubemap_texel_directions(int n) {
-  static std::mutex mutex;
-  static std::map<int, std::vector<Vec3>> tables;  // nodes stay put: references stay valid
-  const std::scoped_lock lock(mutex);
-  auto it = tables.find(n);
-  if (it == tables.end()) it = tables.emplace(n, tabulate_texel_directions(n)).first;
-  return it->second;
+  return tabulated<std::vector<Vec3>>(n, [](int k) { return tabulate_texel_directions(k); });
 }
 
 Vec3 cubemap_direction(CubemapCoord c) {
@@ -138,12 +129,7 @@ std::vector<double> tabulate_solid_angles(int n) {
 }  // namespace
 
 const std::vector<double>& cubemap_solid_angles(int n) {
-  static std::mutex mutex;
-  static std::map<int, std::vector<double>> tables;  // nodes stay put: references stay valid
-  const std::scoped_lock lock(mutex);
-  auto it = tables.find(n);
-  if (it == tables.end()) it = tables.emplace(n, tabulate_solid_angles(n)).first;
-  return it->second;
+  return tabulated<std::vector<double>>(n, [](int k) { return tabulate_solid_angles(k); });
 }
 
 CubemapCoord cubemap_coord(Vec3 d) {

@@ -4,9 +4,8 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
-#include <map>
-#include <mutex>
 
+#include "math/tabulated.h"
 #include "math/vec3.h"
 
 namespace relight {
@@ -98,12 +97,7 @@ GaussLegendre solve_gauss_legendre(int n) {
 }  // namespace
 
 const GaussLegendre& gauss_legendre(int n) {
-  static std::mutex mutex;
-  static std::map<int, GaussLegendre> rules;  // nodes stay put: references stay valid
-  const std::scoped_lock lock(mutex);
-  auto it = rules.find(n);
-  if (it == rules.end()) it = rules.emplace(n, solve_gauss_legendre(n)).first;
-  return it->second;
+  return tabulated<GaussLegendre>(n, [](int k) { return solve_gauss_legendre(k); });
 }
 
 }  // namespace relight
