@@ -119,11 +119,13 @@ LightingState daylight_alone(LightingState state) {
 
 namespace {
 
-// Relights `relit` for hours [first, last) from `state` and writes their sensor values into
-// the rows first..last of `out` (lux and direct_sun_lux already sized).
+// A stream's thread time: all its hours, and their shells.
 struct StreamSeconds {
   double hours = 0, shells = 0;
 };
+
+// Relights `relit` for hours [first, last) from `state` and writes their sensor values into
+// the rows first..last of `out` (lux and direct_sun_lux already sized).
 StreamSeconds sweep_hours(RelitScene& relit, LightingState state, std::span<const AnnualHour> hours,
                           std::size_t first, std::size_t last, std::span<const std::size_t> sensors,
                           std::span<const Vec3> points, std::span<const Vec3> normals,

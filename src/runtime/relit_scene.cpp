@@ -49,26 +49,23 @@ std::vector<float> RelitScene::indirect_irradiance() {
   return out;
 }
 
-std::vector<Rgb> RelitScene::sensor_irradiance() const {
+std::vector<Rgb> RelitScene::sensor_rows(std::span<const float> per_receiver) const {
   std::vector<Rgb> out;
+  if (per_receiver.empty()) return out;
   out.reserve(transfer_->sensor_count);
   for (std::size_t s = 0; s < transfer_->sensor_count; ++s) {
     const std::size_t r = 3 * sensor_receiver(transfer_->vertex_count, s);
-    out.push_back({irradiance_[r], irradiance_[r + 1], irradiance_[r + 2]});
+    out.push_back({per_receiver[r], per_receiver[r + 1], per_receiver[r + 2]});
   }
   return out;
 }
 
+std::vector<Rgb> RelitScene::sensor_irradiance() const {
+  return sensor_rows(irradiance_);
+}
+
 std::vector<Rgb> RelitScene::sensor_sun_irradiance() const {
-  const std::span<const float> direct = relighter_->portals().sun_direct();
-  std::vector<Rgb> out;
-  if (direct.empty()) return out;
-  out.reserve(transfer_->sensor_count);
-  for (std::size_t s = 0; s < transfer_->sensor_count; ++s) {
-    const std::size_t r = 3 * sensor_receiver(transfer_->vertex_count, s);
-    out.push_back({direct[r], direct[r + 1], direct[r + 2]});
-  }
-  return out;
+  return sensor_rows(relighter_->portals().sun_direct());
 }
 
 std::vector<float> RelitScene::vertex_radiance(std::span<const float> irradiance) const {

@@ -71,6 +71,10 @@ class RelitScene {
   const RayTracer& mesh_tracer();
 
  private:
+  // The sensors' rows of a per-receiver RGB array (3 per receiver), in scene order; empty for
+  // an empty array.
+  std::vector<Rgb> sensor_rows(std::span<const float> per_receiver) const;
+
   std::shared_ptr<const TransferFile> transfer_;  // stable address: the Relighter refers to it
   RelighterSettings settings_;
   std::unique_ptr<Relighter> relighter_;
