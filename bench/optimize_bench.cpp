@@ -28,7 +28,8 @@ nlohmann::json open_plan_office() {
     for (int k = 0; k < 5; ++k) {
       const double exponent = 1 + (i + k) % 4;  // four beam widths, so the columns differ
       luminaires.push_back(
-          {{"name", "L" + std::to_string(i) + "-" + std::to_string(k)},
+          {{"name",
+            std::string(1, 'L').append(std::to_string(i)).append("-").append(std::to_string(k))},
            {"position", {1 + 2 * i, 2.9, 1 + 2 * k}},
            {"distribution",
             {{"type", "cosine_power"}, {"candela", 400 + 50 * k}, {"exponent", exponent}}}});
