@@ -131,7 +131,8 @@ double relative_horizontal_illuminance(const Dome& dome, Vec3 sun, int n_zenith,
   return total;
 }
 
-// The integral a sky is scaled by (the sun direction checked by make_sky first).
+// The integral a sky is scaled by: relative_horizontal_illuminance at kNormalisationNodes.
+// It runs before make_sky, so it checks the sun direction the way make_sky does.
 double normalisation_integral(const Dome& dome, Vec3 sun_direction) {
   if (!(length(sun_direction) > 0) || !is_finite(sun_direction)) {
     throw std::invalid_argument("sun direction must be finite and non-zero");
