@@ -131,21 +131,23 @@ double relative_horizontal_illuminance(const Dome& dome, Vec3 sun, int n_zenith,
   return total;
 }
 
-// The integral a sky is scaled by: relative_horizontal_illuminance at kNormalisationNodes.
-// It runs before make_sky, so it checks the sun direction the way make_sky does.
-double normalisation_integral(const Dome& dome, Vec3 sun_direction) {
+// The unit sun direction; std::invalid_argument unless finite and non-zero.
+Vec3 unit_sun_direction(Vec3 sun_direction) {
   if (!(length(sun_direction) > 0) || !is_finite(sun_direction)) {
     throw std::invalid_argument("sun direction must be finite and non-zero");
   }
-  return relative_horizontal_illuminance(dome, normalize(sun_direction), kNormalisationNodes,
-                                         2 * kNormalisationNodes);
+  return normalize(sun_direction);
+}
+
+// The integral a sky is scaled by: relative_horizontal_illuminance at kNormalisationNodes.
+double normalisation_integral(const Dome& dome, Vec3 sun_direction) {
+  return relative_horizontal_illuminance(dome, unit_sun_direction(sun_direction),
+                                         kNormalisationNodes, 2 * kNormalisationNodes);
 }
 
 SkyModel make_sky(const Dome& dome, Vec3 sun_direction, double ground_albedo,
                   double sun_normal_illuminance) {
-  if (!(length(sun_direction) > 0) || !is_finite(sun_direction)) {
-    throw std::invalid_argument("sun direction must be finite and non-zero");
-  }
+  const Vec3 sun = unit_sun_direction(sun_direction);
   if (!(ground_albedo >= 0 && ground_albedo <= 1)) {
     throw std::invalid_argument("ground albedo must lie in 0..1");
   }
@@ -156,7 +158,7 @@ SkyModel make_sky(const Dome& dome, Vec3 sun_direction, double ground_albedo,
   sky.formula = dome.formula;
   sky.sky_type = dome.sky_type;
   sky.parameters = dome.p;
-  sky.sun_direction = normalize(sun_direction);
+  sky.sun_direction = sun;
   sky.indicatrix_normaliser = normaliser(dome, sky.sun_direction);
   sky.ground_albedo = ground_albedo;
   if (sun_normal_illuminance > 0 && sky.sun_direction.y > 0) {

@@ -80,15 +80,18 @@ void render_shell(const ShellInputs& inputs, const PortalFrame& portal, int face
   // 4. SH of a grey cubemap (a sky, no exterior object): its one channel projected, then
   // tinted — a third of the work of 5 (every hour of `relight annual` makes a shell).
   shell.sh_order = sh_order;
+  // Texels the SH leaves out: those behind the portal's plane, for sh_outward_half.
+  const std::vector<Vec3>& directions = cubemap_texel_directions(face_size);
+  const auto left_out = [&](std::size_t t) {
+    return inputs.sh_outward_half && dot(directions[t], portal.outward) <= 0;
+  };
   const bool grey = std::all_of(shell.cubemap.begin(), shell.cubemap.end(),
                                 [](const Rgb& l) { return l.r == l.g && l.r == l.b; });
   if (grey) {
     std::vector<double>& values = workspace.grey_scratch;
     values.resize(shell.cubemap.size());
-    const std::vector<Vec3>& directions = cubemap_texel_directions(face_size);
     for (std::size_t t = 0; t < values.size(); ++t) {
-      const bool behind = inputs.sh_outward_half && dot(directions[t], portal.outward) <= 0;
-      values[t] = behind ? 0.0 : shell.cubemap[t].r;
+      values[t] = left_out(t) ? 0.0 : shell.cubemap[t].r;
     }
     const std::vector<double> c =
         sh_project_cubemap(sh_order, face_size, std::span<const double>(values));
@@ -107,9 +110,8 @@ void render_shell(const ShellInputs& inputs, const PortalFrame& portal, int face
   }
   std::vector<Rgb>& half = workspace.sh_scratch;
   half = shell.cubemap;
-  const std::vector<Vec3>& directions = cubemap_texel_directions(face_size);
   for (std::size_t t = 0; t < half.size(); ++t) {
-    if (dot(directions[t], portal.outward) <= 0) half[t] = Rgb{};
+    if (left_out(t)) half[t] = Rgb{};
   }
   shell.sh = sh_project_cubemap(sh_order, face_size, std::span<const Rgb>(half));
 }
