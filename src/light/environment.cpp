@@ -63,9 +63,10 @@ std::vector<Rgb> sky_sh(const SkyModel& sky, int order) {
   std::vector<double> c(sh_count(order), 0.0);
   const DomeQuadrature rule = sky_dome_quadrature(sky.sun_direction, std::max(64, order + 32),
                                                   std::max(128, 2 * order + 64));
+  const SkyTable table = tabulate_sky(sky);
   for (std::size_t i = 0; i < rule.weights.size(); ++i) {
     const Vec3 d = rule.directions[i];
-    sh_add_sample(d, sky_diffuse_luminance(sky, d) * rule.weights[i], std::span<double>(c));
+    sh_add_sample(d, sky_diffuse_luminance(table, d) * rule.weights[i], std::span<double>(c));
   }
   // Ground: the cap of angular radius 90° about −y.
   add_cap(order, {0, -1, 0}, 0.0, sky.ground_luminance, c);
@@ -167,6 +168,7 @@ std::vector<Rgb> sky_cubemap(const SkyModel& sky, int n) {
   const SkyTexelRule& rule = sky_texel_rule(n);
   const std::vector<double>& omega = cubemap_solid_angles(n);
   std::vector<Rgb> out(cubemap_texel_count(n));
+  const SkyTable table = tabulate_sky(sky);
   // Rows of texels are independent (the run time rebuilds a shell per sky change: use every
   // core).
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, 6 * static_cast<std::size_t>(n)),
@@ -178,7 +180,8 @@ std::vector<Rgb> sky_cubemap(const SkyModel& sky, int n) {
                         }
                         double value = 0;
                         for (std::uint32_t k = rule.first[t]; k != rule.first[t + 1]; ++k) {
-                          value += rule.weights[k] * sky_diffuse_luminance(sky, rule.directions[k]);
+                          value +=
+                              rule.weights[k] * sky_diffuse_luminance(table, rule.directions[k]);
                         }
                         out[t] = grey(value / rule.solid_angle[t]);
                       }
@@ -341,9 +344,10 @@ Rgb environment_integral(const Environment& env) {
     case EnvironmentKind::kSky: {
       const SkyModel& sky = env.sky;
       const DomeQuadrature rule = sky_dome_quadrature(sky.sun_direction, 192, 384);
+      const SkyTable table = tabulate_sky(sky);
       double dome = 0;
       for (std::size_t i = 0; i < rule.weights.size(); ++i) {
-        dome += sky_diffuse_luminance(sky, rule.directions[i]) * rule.weights[i];
+        dome += sky_diffuse_luminance(table, rule.directions[i]) * rule.weights[i];
       }
       double total = dome + sky.ground_luminance * 2.0 * kPi;
       if (sky.sun) total += sky.sun->integrated_luminance();

@@ -1,12 +1,15 @@
 // CIE standard general sky (ISO 15469) and traditional CIE overcast sky: closed-form
 // horizontal illuminance, absolute scaling checked by an independent quadrature, zenith
 // normalisation, the uniform type 5, type 1 against the traditional overcast sky, ground and
-// sun disc photometry.
+// sun disc photometry; the tabulated sky against the formula.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <random>
 
+#include "light/perez_sky.h"
 #include "light/sky_model.h"
 #include "light/sun_position.h"
 #include "sky_test_support.h"
@@ -181,6 +184,71 @@ TEST(SkyModel, ZenithAndHorizontalScalingAgree) {
   EXPECT_THROW(make_sky_from_zenith_luminance(16, sun, 1, 0.2, 0), std::invalid_argument);
   EXPECT_THROW(make_sky_from_zenith_luminance(3, sun, -1, 0.2, 0), std::invalid_argument);
   EXPECT_THROW(make_sky_from_zenith_luminance(3, sun, 1, 1.5, 0), std::invalid_argument);
+}
+
+// max |table − formula| / (L + Lz) over random dome directions and the places the tables are
+// hardest: around the sun and the antisun (χ up to 2°) and the Perez guard near the horizon.
+double worst_table_error(const SkyModel& sky) {
+  const SkyTable table = tabulate_sky(sky);
+  double worst = 0;
+  const auto check = [&](Vec3 d) {
+    d = normalize(d);
+    const double exact = sky_diffuse_luminance(sky, d);
+    worst = std::max(
+        worst, std::abs(sky_diffuse_luminance(table, d) - exact) / (exact + sky.zenith_luminance));
+  };
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int i = 0; i < 4000; ++i) check({u(random), std::abs(u(random)) + 1e-3, u(random)});
+  const Vec3 s = sky.sun_direction, across = normalize(cross(s, Vec3{0.3, 0.1, 0.9}));
+  for (int i = 1; i < 400; ++i) {
+    const double a = radians(2.0) * i / 400;
+    check(s * std::cos(a) + across * std::sin(a));
+    check(s * -std::cos(a) + across * std::sin(a));
+  }
+  for (int i = 0; i < 400; ++i) {
+    const double az = 2 * kPi * i / 400;
+    for (const double y : {1e-4, 0.05, 0.0999, 0.1, 0.1001, 0.2}) {
+      check({std::cos(az), y, std::sin(az)});
+    }
+  }
+  return worst;
+}
+
+TEST(SkyTable, WithinTwoE5OfTheFormulaForEveryCieType) {
+  for (int type = 0; type <= 15; ++type) {
+    for (const double h : {2.0, 30.0, 85.0}) {
+      const SkyModel sky =
+          make_sky_from_zenith_luminance(type, horizontal_to_world(20, h), 1000, 0.2, 0);
+      EXPECT_LT(worst_table_error(sky), 2e-5) << "type " << type << ", sun " << h << "°";
+    }
+  }
+}
+
+TEST(SkyTable, TraditionalOvercastReproducedToRounding) {
+  const SkyModel sky = make_sky_from_zenith_luminance(0, horizontal_to_world(0, 40), 1000, 0.2, 0);
+  EXPECT_LT(worst_table_error(sky), 1e-14);
+}
+
+TEST(SkyTable, WithinTwoE5OfTheFormulaForPerezSkies) {
+  // Weather from overcast to clear (d down to −5.4, a gradation that changes sign near the
+  // horizon), and coefficients outside the fits' usual range: b > 0 (the guard at cos Z = 0.1),
+  // d > 0.
+  for (const double dni : {0.0, 200.0, 500.0, 900.0}) {
+    for (const double dhi : {20.0, 80.0, 300.0}) {
+      for (const double h : {3.0, 10.0, 60.0}) {
+        const SkyModel sky = make_perez_sky({dni, dhi, 10.0, 172}, horizontal_to_world(20, h), 0.2);
+        EXPECT_LT(worst_table_error(sky), 2e-5) << dni << " W/m², " << dhi << " W/m², " << h << "°";
+      }
+    }
+  }
+  for (const CieSkyParameters& p :
+       {CieSkyParameters{0.5, 0.3, 2, -3, 0.3}, CieSkyParameters{1.2, -0.1, 20, -6, 0.1},
+        CieSkyParameters{0.4, -0.5, 0.5, 1.0, -0.5}}) {
+    const SkyModel sky =
+        make_perez_sky_from_horizontal_illuminance(p, horizontal_to_world(20, 25), 20000, 0.2, 0);
+    EXPECT_LT(worst_table_error(sky), 2e-5) << "b " << p.b << ", d " << p.d;
+  }
 }
 
 }  // namespace
