@@ -171,21 +171,20 @@ std::vector<Rgb> sky_cubemap(const SkyModel& sky, int n) {
   const SkyTable table = tabulate_sky(sky);
   // Rows of texels are independent (the run time rebuilds a shell per sky change: use every
   // core).
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, 6 * static_cast<std::size_t>(n)),
-                    [&](const tbb::blocked_range<std::size_t>& rows) {
-                      for (std::size_t t = rows.begin() * n; t != rows.end() * n; ++t) {
-                        if (rule.below[t]) {
-                          out[t] = grey(sky.ground_luminance);
-                          continue;
-                        }
-                        double value = 0;
-                        for (std::uint32_t k = rule.first[t]; k != rule.first[t + 1]; ++k) {
-                          value +=
-                              rule.weights[k] * sky_diffuse_luminance(table, rule.directions[k]);
-                        }
-                        out[t] = grey(value / rule.solid_angle[t]);
-                      }
-                    });
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, 6 * static_cast<std::size_t>(n)),
+      [&](const tbb::blocked_range<std::size_t>& rows) {
+        for (std::size_t t = rows.begin() * n; t != rows.end() * n; ++t) {
+          if (rule.below[t]) {
+            out[t] = grey(sky.ground_luminance);
+            continue;
+          }
+          const std::size_t first = rule.first[t], count = rule.first[t + 1] - first;
+          out[t] = grey(sky_weighted_sum(table, std::span(rule.directions).subspan(first, count),
+                                         std::span(rule.weights).subspan(first, count)) /
+                        rule.solid_angle[t]);
+        }
+      });
   if (sky.sun) {
     const CubemapTexel t = cubemap_texel(n, sky.sun->direction);
     out[cubemap_texel_index(n, t)] += grey(sky.sun->integrated_luminance() / omega[t.j * n + t.i]);
@@ -345,10 +344,7 @@ Rgb environment_integral(const Environment& env) {
       const SkyModel& sky = env.sky;
       const DomeQuadrature rule = sky_dome_quadrature(sky.sun_direction, 192, 384);
       const SkyTable table = tabulate_sky(sky);
-      double dome = 0;
-      for (std::size_t i = 0; i < rule.weights.size(); ++i) {
-        dome += sky_diffuse_luminance(table, rule.directions[i]) * rule.weights[i];
-      }
+      const double dome = sky_weighted_sum(table, rule.directions, rule.weights);
       double total = dome + sky.ground_luminance * 2.0 * kPi;
       if (sky.sun) total += sky.sun->integrated_luminance();
       return grey(total);

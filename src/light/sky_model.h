@@ -30,6 +30,7 @@
 #pragma once
 
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "math/vec3.h"
@@ -181,5 +182,9 @@ struct SkyTable {
 SkyTable tabulate_sky(const SkyModel& sky);
 // sky_diffuse_luminance(sky, dir) from the sky's table.
 double sky_diffuse_luminance(const SkyTable& table, Vec3 dir);
+// Σ weights[k] · sky_diffuse_luminance(table, directions[k]) (as many weights as directions):
+// a cubemap texel's quadrature in one call.
+double sky_weighted_sum(const SkyTable& table, std::span<const Vec3> directions,
+                        std::span<const double> weights);
 
 }  // namespace relight
