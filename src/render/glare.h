@@ -34,7 +34,9 @@
 //    line of sight (DGP's windows) τ is mirrored about the horizontal plane of sight (a choice:
 //    the Guth index was fitted above it).
 // Tests: tests/cli/glare_command_test.cpp (DGP of a window view and UGR of one luminaire by
-// hand).
+// hand; UGR in the CIE 190:2010 standard room, 4H × 8H at 0.7/0.5/0.2 with a tabulated LDT
+// luminaire at spacing 1:1, within 1 unit of the standard's tabular value: 24.56 against 24.06,
+// the room's own interreflection giving a background 14 % darker than the table's flux transfer).
 #pragma once
 
 #include <optional>
