@@ -63,10 +63,9 @@ std::vector<Rgb> sky_sh(const SkyModel& sky, int order) {
   std::vector<double> c(sh_count(order), 0.0);
   const DomeQuadrature rule = sky_dome_quadrature(sky.sun_direction, std::max(64, order + 32),
                                                   std::max(128, 2 * order + 64));
-  const SkyTable table = tabulate_sky(sky);
   for (std::size_t i = 0; i < rule.weights.size(); ++i) {
     const Vec3 d = rule.directions[i];
-    sh_add_sample(d, sky_diffuse_luminance(table, d) * rule.weights[i], std::span<double>(c));
+    sh_add_sample(d, tabulated_sky_luminance(sky, d) * rule.weights[i], std::span<double>(c));
   }
   // Ground: the cap of angular radius 90° about −y.
   add_cap(order, {0, -1, 0}, 0.0, sky.ground_luminance, c);
@@ -168,7 +167,6 @@ std::vector<Rgb> sky_cubemap(const SkyModel& sky, int n) {
   const SkyTexelRule& rule = sky_texel_rule(n);
   const std::vector<double>& omega = cubemap_solid_angles(n);
   std::vector<Rgb> out(cubemap_texel_count(n));
-  const SkyTable table = tabulate_sky(sky);
   // Rows of texels are independent (the run time rebuilds a shell per sky change: use every
   // core).
   tbb::parallel_for(
@@ -180,7 +178,7 @@ std::vector<Rgb> sky_cubemap(const SkyModel& sky, int n) {
             continue;
           }
           const std::size_t first = rule.first[t], count = rule.first[t + 1] - first;
-          out[t] = grey(sky_weighted_sum(table, std::span(rule.directions).subspan(first, count),
+          out[t] = grey(sky_weighted_sum(sky, std::span(rule.directions).subspan(first, count),
                                          std::span(rule.weights).subspan(first, count)) /
                         rule.solid_angle[t]);
         }
@@ -343,8 +341,7 @@ Rgb environment_integral(const Environment& env) {
     case EnvironmentKind::kSky: {
       const SkyModel& sky = env.sky;
       const DomeQuadrature rule = sky_dome_quadrature(sky.sun_direction, 192, 384);
-      const SkyTable table = tabulate_sky(sky);
-      const double dome = sky_weighted_sum(table, rule.directions, rule.weights);
+      const double dome = sky_weighted_sum(sky, rule.directions, rule.weights);
       double total = dome + sky.ground_luminance * 2.0 * kPi;
       if (sky.sun) total += sky.sun->integrated_luminance();
       return grey(total);

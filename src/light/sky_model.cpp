@@ -66,21 +66,16 @@ struct Dome {
   CieSkyParameters p;
 };
 
-// The dome's gradation φ(Z) (1 for the traditional overcast sky, whose formula is not a
-// product) and the relative luminance given it.
-double gradation(const Dome& dome, double cos_z) {
-  if (dome.formula == SkyFormula::kPerez) return perez_gradation(dome.p, cos_z);
-  return dome.sky_type == 0 ? 1.0 : cie_gradation(dome.p, cos_z);
-}
-double relative(const Dome& dome, double norm, double gradation, Vec3 dir, Vec3 sun) {
-  if (dome.formula == SkyFormula::kPerez) {
-    return std::max(perez_indicatrix(dome.p, sun_angle(dir, sun)) * gradation, 0.0) * norm;
-  }
-  if (dome.sky_type == 0) return (1.0 + 2.0 * std::max(dir.y, 0.0)) / 3.0;
-  return cie_indicatrix(dome.p, sun_angle(dir, sun).chi) * gradation * norm;
-}
+// The dome's relative luminance in `dir`, with its normaliser.
 double relative(const Dome& dome, double norm, Vec3 dir, Vec3 sun) {
-  return relative(dome, norm, gradation(dome, std::max(dir.y, 0.0)), dir, sun);
+  const double cos_z = std::max(dir.y, 0.0);
+  if (dome.formula == SkyFormula::kPerez) {
+    return std::max(perez_indicatrix(dome.p, sun_angle(dir, sun)) * perez_gradation(dome.p, cos_z),
+                    0.0) *
+           norm;
+  }
+  if (dome.sky_type == 0) return (1.0 + 2.0 * cos_z) / 3.0;
+  return cie_indicatrix(dome.p, sun_angle(dir, sun).chi) * cie_gradation(dome.p, cos_z) * norm;
 }
 
 // 1 / (f(Zs)·φ(0)): the relative luminance at the zenith made 1.
@@ -139,53 +134,61 @@ SkyTable tabulate(const Dome& dome, Vec3 sun, double norm) {
 }
 
 // Linear interpolation in a table of kSkyTableIntervals + 1 nodes over q in [0, 1] (clamped).
-double interpolate(const std::vector<double>& nodes, double q) {
+[[gnu::always_inline]] inline double interpolate(const std::vector<double>& nodes, double q) {
   const double x = std::clamp(q, 0.0, 1.0) * kSkyTableIntervals;
   const int i = std::min(static_cast<int>(x), kSkyTableIntervals - 1);
   const auto k = static_cast<std::size_t>(i);
   return nodes[k] + (x - i) * (nodes[k + 1] - nodes[k]);
 }
 
-// The table's relative luminance times its scale, for dir.y >= 0.
-double table_value(const SkyTable& t, Vec3 dir) {
-  const double y = std::max(dir.y, 0.0);
-  const double g = t.perez
-                       ? interpolate(t.gradation, (1.0 / std::max(y, kPerezMinCosZenith) - 1.0) /
-                                                      (kPerezMaxReciprocal - 1.0))
-                       : interpolate(t.gradation, y);
-  // |dir − sun|/√2 = √(1 − cos χ).
+// The table's gradation at cos Z = y (>= 0) and its indicatrix (times its scale, the
+// normaliser) toward the unit `dir`. Without branches on the direction (the sun's side, a coin
+// toss over a cubemap, is a select), and inlined into the loops over many directions: 3× faster
+// than a call per direction.
+[[gnu::always_inline]] inline double table_gradation(const SkyTable& t, double y) {
+  return interpolate(
+      t.gradation,
+      t.perez ? (1.0 / std::max(y, kPerezMinCosZenith) - 1.0) / (kPerezMaxReciprocal - 1.0) : y);
+}
+[[gnu::always_inline]] inline double table_indicatrix(const SkyTable& t, Vec3 dir) {
+  // |dir ∓ sun|/√2 = √(1 ∓ cos χ), toward the nearer of the sun and the antisun.
   const double c = dot(dir, t.sun_direction);
-  const double f = c >= 0 ? interpolate(t.toward_sun, std::sqrt(std::max(1.0 - c, 0.0)))
-                          : interpolate(t.away_from_sun, std::sqrt(std::max(1.0 + c, 0.0)));
-  const double v = g * f;
-  return (t.perez ? std::max(v, 0.0) : v) * t.scale;
+  const std::vector<double>& indicatrix = c >= 0 ? t.toward_sun : t.away_from_sun;
+  return interpolate(indicatrix, std::sqrt(std::max(1.0 - std::abs(c), 0.0))) * t.scale;
+}
+// Their product: the relative luminance, for dir.y >= 0.
+[[gnu::always_inline]] inline double table_value(const SkyTable& t, double gradation, Vec3 dir) {
+  const double v = gradation * table_indicatrix(t, dir);
+  return t.perez ? std::max(v, 0.0) : v;
+}
+[[gnu::always_inline]] inline double table_value(const SkyTable& t, Vec3 dir) {
+  return table_value(t, table_gradation(t, std::max(dir.y, 0.0)), dir);
 }
 
 // Zenith nodes of the quadrature that scales a sky to its horizontal illuminance (twice as
-// many in azimuth): against 192 × 384 nodes, within 3.3e-8 for every CIE type and within
+// many in azimuth): against 192 × 384 nodes, within 2e-7 for every CIE type and within
 // 1.2e-4 for Perez skies (whose guards put kinks into the integrand), over suns from 2° to 85°
 // (tests/light/sky_model_test.cpp, perez_sky_test.cpp); a quarter of the cost of 192 × 384,
 // which a moving sun pays every frame and `relight annual` every hour.
 constexpr int kNormalisationNodes = 96;
 
-// ∫ (L/Lz) cos Z dω over the dome, by sky_dome_quadrature. The formula itself, not the dome's
-// SkyTable: this integral scales the sky, and the table's kinks at its nodes would slow the
-// quadrature's convergence (twice the error at 96 nodes against 192).
-double relative_horizontal_illuminance(const Dome& dome, Vec3 sun, int n_zenith, int n_azimuth) {
-  const double norm = normaliser(dome, sun);
-  const DomeQuadrature rule = sky_dome_quadrature(sun, n_zenith, n_azimuth);
-  // The rule is rings of equal zenith angle (n_zenith of them), each two half turns of azimuth
-  // from the sun's meridian that mirror each other (the Gauss–Legendre nodes are symmetric),
-  // and the dome is symmetric about that meridian: per ring the gradation once, and one half
-  // turn counted twice.
-  const std::size_t ring = rule.weights.size() / static_cast<std::size_t>(n_zenith);
+// ∫ (L/Lz) cos Z dω over the dome, by sky_dome_quadrature's rule over the dome's table. The
+// rule is rings of equal zenith angle, each two half turns of azimuth from the sun's meridian
+// that mirror each other (the Gauss–Legendre nodes are symmetric), and the dome is symmetric
+// about that meridian: per ring the gradation once, and one half turn counted twice.
+double relative_horizontal_illuminance(const SkyTable& table, int n_zenith, int n_azimuth) {
+  const DomeRule rule = sky_dome_rule(table.sun_direction, n_zenith, n_azimuth);
+  const std::size_t half_turn = rule.azimuth_weight.size() / 2;
   double total = 0;
-  for (std::size_t first = 0; first < rule.weights.size(); first += ring) {
-    const double g = gradation(dome, std::max(rule.directions[first].y, 0.0));
-    for (std::size_t i = first; i < first + ring / 2; ++i) {
-      const Vec3 d = rule.directions[i];
-      total += 2 * rule.weights[i] * d.y * relative(dome, norm, g, d, sun);
+  for (std::size_t k = 0; k < rule.zenith_weight.size(); ++k) {
+    const double mu = rule.zenith_cos[k], s = rule.zenith_sin[k];
+    const double g = table_gradation(table, mu);
+    double ring = 0;
+    for (std::size_t j = 0; j < half_turn; ++j) {
+      const Vec3 d{s * rule.azimuth_sin[j], mu, -s * rule.azimuth_cos[j]};
+      ring += rule.azimuth_weight[j] * table_value(table, g, d);
     }
+    total += 2 * rule.zenith_weight[k] * mu * ring;
   }
   return total;
 }
@@ -199,9 +202,8 @@ Vec3 unit_sun_direction(Vec3 sun_direction) {
 }
 
 // The integral a sky is scaled by: relative_horizontal_illuminance at kNormalisationNodes.
-double normalisation_integral(const Dome& dome, Vec3 sun_direction) {
-  return relative_horizontal_illuminance(dome, unit_sun_direction(sun_direction),
-                                         kNormalisationNodes, 2 * kNormalisationNodes);
+double normalisation_integral(const SkyModel& sky) {
+  return relative_horizontal_illuminance(*sky.table, kNormalisationNodes, 2 * kNormalisationNodes);
 }
 
 SkyModel make_sky(const Dome& dome, Vec3 sun_direction, double ground_albedo,
@@ -219,6 +221,8 @@ SkyModel make_sky(const Dome& dome, Vec3 sun_direction, double ground_albedo,
   sky.parameters = dome.p;
   sky.sun_direction = sun;
   sky.indicatrix_normaliser = normaliser(dome, sky.sun_direction);
+  sky.table = std::make_shared<const SkyTable>(
+      tabulate(dome, sky.sun_direction, sky.indicatrix_normaliser));
   sky.ground_albedo = ground_albedo;
   if (sun_normal_illuminance > 0 && sky.sun_direction.y > 0) {
     sky.sun = make_sun_disc(sky.sun_direction, sun_normal_illuminance);
@@ -232,16 +236,22 @@ void finish(SkyModel& sky) {
       sky.ground_albedo * (sky.sky_horizontal_illuminance + sky.sun_horizontal_illuminance) / kPi;
 }
 
-// `relative_illuminance` is the dome's relative_horizontal_illuminance at kNormalisationNodes.
-SkyModel sky_from_horizontal_illuminance(const Dome& dome, Vec3 sun_direction,
+// The sky scaled by the dome's horizontal illuminance. A Perez dome whose coefficients light no
+// direction of it becomes a uniform dome.
+SkyModel sky_from_horizontal_illuminance(Dome dome, Vec3 sun_direction,
                                          double horizontal_illuminance, double ground_albedo,
-                                         double sun_normal_illuminance,
-                                         double relative_illuminance) {
+                                         double sun_normal_illuminance) {
   if (!(horizontal_illuminance >= 0) || !std::isfinite(horizontal_illuminance)) {
     throw std::invalid_argument("horizontal illuminance must be finite and >= 0");
   }
   SkyModel sky = make_sky(dome, sun_direction, ground_albedo, sun_normal_illuminance);
-  sky.zenith_luminance = horizontal_illuminance / relative_illuminance;
+  double integral = normalisation_integral(sky);
+  if (dome.formula == SkyFormula::kPerez && !(integral > 0)) {
+    dome.p = CieSkyParameters{};
+    sky = make_sky(dome, sun_direction, ground_albedo, sun_normal_illuminance);
+    integral = normalisation_integral(sky);
+  }
+  sky.zenith_luminance = horizontal_illuminance / integral;
   sky.sky_horizontal_illuminance = horizontal_illuminance;
   finish(sky);
   return sky;
@@ -271,7 +281,7 @@ double sky_relative_luminance(int sky_type, Vec3 dir, Vec3 sun_dir) {
   return relative(dome, normaliser(dome, sun_dir), dir, sun_dir);
 }
 
-DomeQuadrature sky_dome_quadrature(Vec3 sun_dir, int n_zenith, int n_azimuth) {
+DomeRule sky_dome_rule(Vec3 sun_dir, int n_zenith, int n_azimuth) {
   if (n_zenith < 1 || n_azimuth < 1) {
     throw std::invalid_argument("quadrature needs at least one node per dimension");
   }
@@ -292,35 +302,44 @@ DomeQuadrature sky_dome_quadrature(Vec3 sun_dir, int n_zenith, int n_azimuth) {
   } else {
     panels = {{0.0, horizon, n_zenith}};
   }
+  DomeRule rule;
   // Azimuth: Gauss–Legendre on each half turn [0, π] and [π, 2π] from the sun's azimuth. The
   // sky is symmetric about the sun's meridian; on each half the integrand is smooth up to that
   // meridian, and the nodes cluster toward it, i.e. toward the circumsolar peak.
   const double sun_azimuth = std::atan2(sun.x, -sun.z);
   const int n_half = (n_azimuth + 1) / 2;
   const GaussLegendre& gl_az = gauss_legendre(n_half);
-  std::vector<double> sin_az, cos_az, w_az;
   for (int half = 0; half < 2; ++half) {
     for (int j = 0; j < n_half; ++j) {
       const double az = sun_azimuth + kPi * (half + 0.5 * (gl_az.nodes[j] + 1.0));
-      sin_az.push_back(std::sin(az));
-      cos_az.push_back(std::cos(az));
-      w_az.push_back(0.5 * kPi * gl_az.weights[j]);
+      rule.azimuth_sin.push_back(std::sin(az));
+      rule.azimuth_cos.push_back(std::cos(az));
+      rule.azimuth_weight.push_back(0.5 * kPi * gl_az.weights[j]);
     }
   }
-  DomeQuadrature rule;
-  rule.directions.reserve(static_cast<std::size_t>(n_zenith) * w_az.size());
-  rule.weights.reserve(rule.directions.capacity());
   for (const Panel& panel : panels) {
     const GaussLegendre& gl = gauss_legendre(panel.n);
     const double half = 0.5 * (panel.hi - panel.lo), mid = 0.5 * (panel.hi + panel.lo);
     for (int k = 0; k < panel.n; ++k) {
       const double z = mid + half * gl.nodes[k];
-      const double s = std::sin(z), mu = std::cos(z);
-      const double w = half * gl.weights[k] * s;  // dω = sin Z dZ dφ
-      for (std::size_t j = 0; j < w_az.size(); ++j) {
-        rule.directions.push_back({s * sin_az[j], mu, -s * cos_az[j]});
-        rule.weights.push_back(w * w_az[j]);
-      }
+      rule.zenith_sin.push_back(std::sin(z));
+      rule.zenith_cos.push_back(std::cos(z));
+      rule.zenith_weight.push_back(half * gl.weights[k] * std::sin(z));  // dω = sin Z dZ dφ
+    }
+  }
+  return rule;
+}
+
+DomeQuadrature sky_dome_quadrature(Vec3 sun_dir, int n_zenith, int n_azimuth) {
+  const DomeRule r = sky_dome_rule(sun_dir, n_zenith, n_azimuth);
+  DomeQuadrature rule;
+  rule.directions.reserve(r.zenith_weight.size() * r.azimuth_weight.size());
+  rule.weights.reserve(rule.directions.capacity());
+  for (std::size_t k = 0; k < r.zenith_weight.size(); ++k) {
+    const double s = r.zenith_sin[k], mu = r.zenith_cos[k];
+    for (std::size_t j = 0; j < r.azimuth_weight.size(); ++j) {
+      rule.directions.push_back({s * r.azimuth_sin[j], mu, -s * r.azimuth_cos[j]});
+      rule.weights.push_back(r.zenith_weight[k] * r.azimuth_weight[j]);
     }
   }
   return rule;
@@ -328,7 +347,9 @@ DomeQuadrature sky_dome_quadrature(Vec3 sun_dir, int n_zenith, int n_azimuth) {
 
 double sky_relative_horizontal_illuminance(int sky_type, Vec3 sun_dir, int n_zenith,
                                            int n_azimuth) {
-  return relative_horizontal_illuminance(cie_dome(sky_type), normalize(sun_dir), n_zenith,
+  const Dome dome = cie_dome(sky_type);
+  const Vec3 sun = normalize(sun_dir);
+  return relative_horizontal_illuminance(tabulate(dome, sun, normaliser(dome, sun)), n_zenith,
                                          n_azimuth);
 }
 
@@ -359,7 +380,7 @@ SkyModel make_sky_from_zenith_luminance(int sky_type, Vec3 sun_direction, double
   SkyModel sky = make_sky(cie_dome(sky_type), sun_direction, ground_albedo, sun_normal_illuminance);
   sky.zenith_luminance = zenith_luminance;
   sky.sky_horizontal_illuminance =
-      zenith_luminance * sky_relative_horizontal_illuminance(sky_type, sky.sun_direction);
+      zenith_luminance * relative_horizontal_illuminance(*sky.table, 192, 384);
   finish(sky);
   return sky;
 }
@@ -367,10 +388,8 @@ SkyModel make_sky_from_zenith_luminance(int sky_type, Vec3 sun_direction, double
 SkyModel make_sky_from_horizontal_illuminance(int sky_type, Vec3 sun_direction,
                                               double horizontal_illuminance, double ground_albedo,
                                               double sun_normal_illuminance) {
-  const Dome dome = cie_dome(sky_type);
-  return sky_from_horizontal_illuminance(dome, sun_direction, horizontal_illuminance, ground_albedo,
-                                         sun_normal_illuminance,
-                                         normalisation_integral(dome, sun_direction));
+  return sky_from_horizontal_illuminance(cie_dome(sky_type), sun_direction, horizontal_illuminance,
+                                         ground_albedo, sun_normal_illuminance);
 }
 
 SkyModel make_perez_sky_from_horizontal_illuminance(const CieSkyParameters& coefficients,
@@ -378,15 +397,9 @@ SkyModel make_perez_sky_from_horizontal_illuminance(const CieSkyParameters& coef
                                                     double horizontal_illuminance,
                                                     double ground_albedo,
                                                     double sun_normal_illuminance) {
-  Dome dome{SkyFormula::kPerez, 0, coefficients};
-  double integral = normalisation_integral(dome, sun_direction);
-  // Coefficients under which no direction of the dome is lit: a uniform dome instead.
-  if (!(integral > 0)) {
-    dome.p = CieSkyParameters{};
-    integral = normalisation_integral(dome, sun_direction);
-  }
-  return sky_from_horizontal_illuminance(dome, sun_direction, horizontal_illuminance, ground_albedo,
-                                         sun_normal_illuminance, integral);
+  return sky_from_horizontal_illuminance({SkyFormula::kPerez, 0, coefficients}, sun_direction,
+                                         horizontal_illuminance, ground_albedo,
+                                         sun_normal_illuminance);
 }
 
 double sky_diffuse_luminance(const SkyModel& sky, Vec3 dir) {
@@ -395,22 +408,26 @@ double sky_diffuse_luminance(const SkyModel& sky, Vec3 dir) {
          relative(dome_of(sky), sky.indicatrix_normaliser, dir, sky.sun_direction);
 }
 
-SkyTable tabulate_sky(const SkyModel& sky) {
-  SkyTable t = tabulate(dome_of(sky), sky.sun_direction, sky.indicatrix_normaliser);
-  t.scale *= sky.zenith_luminance;
-  t.ground_luminance = sky.ground_luminance;
-  return t;
+double tabulated_sky_luminance(const SkyModel& sky, Vec3 dir) {
+  if (dir.y < 0) return sky.ground_luminance;
+  return sky.table ? sky.zenith_luminance * table_value(*sky.table, dir)
+                   : sky_diffuse_luminance(sky, dir);
 }
 
-double sky_diffuse_luminance(const SkyTable& table, Vec3 dir) {
-  return dir.y < 0 ? table.ground_luminance : table_value(table, dir);
-}
-
-double sky_weighted_sum(const SkyTable& table, std::span<const Vec3> directions,
+double sky_weighted_sum(const SkyModel& sky, std::span<const Vec3> directions,
                         std::span<const double> weights) {
   double sum = 0;
+  if (!sky.table) {
+    for (std::size_t k = 0; k < directions.size(); ++k) {
+      sum += weights[k] * sky_diffuse_luminance(sky, directions[k]);
+    }
+    return sum;
+  }
+  const SkyTable& table = *sky.table;
   for (std::size_t k = 0; k < directions.size(); ++k) {
-    sum += weights[k] * sky_diffuse_luminance(table, directions[k]);
+    const Vec3 d = directions[k];
+    sum += weights[k] *
+           (d.y < 0 ? sky.ground_luminance : sky.zenith_luminance * table_value(table, d));
   }
   return sum;
 }

@@ -15,8 +15,8 @@
 //    Represented as sky type 0 (kTraditionalOvercastSky).
 //  * Absolute scale: by the zenith luminance Lz, or by the sky's diffuse horizontal
 //    illuminance E_h = ∫_{upper hemisphere} L cos Z dω, computed by a product quadrature
-//    (sky_dome_quadrature below; converged to ~1e-8 relative for every type and sun
-//    position, see sky_model_test.cpp).
+//    (sky_dome_quadrature below) of the tabulated dome (SkyTable below; converged to ~1e-7
+//    relative for every type and sun position, see sky_model_test.cpp).
 //  * Ground (below the horizon): a uniform Lambertian luminance
 //      L_g = ground_albedo · (E_h,sky + E_h,sun) / π,  E_h,sun = E_sun,n · sin h_s (h_s > 0).
 //  * Sun: a disc of angular diameter 0.53° and uniform luminance L_s chosen so that the
@@ -29,6 +29,7 @@
 // unit vectors pointing away from the observer (toward the sky element).
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <span>
 #include <vector>
@@ -70,10 +71,18 @@ struct DomeQuadrature {
   std::vector<double> weights;
 };
 DomeQuadrature sky_dome_quadrature(Vec3 sun_dir, int n_zenith, int n_azimuth);
+// The same rule unexpanded, a product of its zenith nodes (weights with sin Z) and its azimuth
+// nodes (both half turns, the sun's side first; direction {sin Z·sin φ, cos Z, −sin Z·cos φ}):
+// for the loops that use the rule's structure (a gradation per ring, a half turn by symmetry).
+struct DomeRule {
+  std::vector<double> zenith_sin, zenith_cos, zenith_weight;
+  std::vector<double> azimuth_sin, azimuth_cos, azimuth_weight;
+};
+DomeRule sky_dome_rule(Vec3 sun_dir, int n_zenith, int n_azimuth);
 
 // ∫_{upper hemisphere} (L/Lz) cos Z dω: the horizontal illuminance of a sky whose zenith
 // luminance is 1 (7π/9 for the traditional overcast sky, π for type 5), by
-// sky_dome_quadrature(sun_dir, n_zenith, n_azimuth).
+// sky_dome_quadrature(sun_dir, n_zenith, n_azimuth) of the tabulated dome (SkyTable).
 double sky_relative_horizontal_illuminance(int sky_type, Vec3 sun_dir, int n_zenith = 192,
                                            int n_azimuth = 384);
 
@@ -116,6 +125,32 @@ enum class SkyFormula { kCie, kPerez };
 inline constexpr double kPerezMinCosZenith = 0.1;
 inline constexpr double kPerezMinZenith = 1e-6;
 
+// ---- The dome tabulated ------------------------------------------------------------------
+
+// The dome's relative luminance for the tens of thousands of directions of a cubemap or a
+// quadrature (a sky's shell and its scaling, which `relight annual` makes for every hour of a
+// year): its two factors, the gradation and the indicatrix, tabulated once per sky at
+// kSkyTableIntervals + 1 nodes each and interpolated linearly — a square root and three table
+// reads a direction instead of two exponentials and an arc cosine. The gradation is tabulated
+// over cos Z (a CIE sky), or over 1/max(cos Z, 0.1) (a Perez sky, whose guarded gradation
+// 1 + a·exp(b·s) is then a plain exponential), the indicatrix over the chord |dir − sun| for
+// χ <= 90° and over |dir + sun| beyond: unlike χ or cos χ, the chord makes the indicatrix smooth
+// at both ends (the circumsolar peak, the antisolar point), so linear interpolation errs by
+// ~h²·|f''|/8 there too. The traditional overcast sky, a linear gradation, is reproduced to
+// rounding; every other sky differs from the formula by at most 2e-5 of the luminance plus the
+// zenith's (1.3e-5 measured over every CIE type and a range of Perez skies, suns 2°–85°:
+// tests/light/sky_model_test.cpp, SkyTable.*): far below the error of a cubemap texel's mean
+// (~1e-3). Made with the sky (SkyModel::table); point evaluations (a ray of the reference, an
+// eye's view) use the formula itself, sky_diffuse_luminance.
+inline constexpr int kSkyTableIntervals = 1024;
+
+struct SkyTable {
+  double scale = 1;  // the normaliser 1/(f(Zs)·φ(0)): relative luminance 1 at the zenith
+  Vec3 sun_direction{0, 1, 0};
+  bool perez = false;  // gradation over 1/max(cos Z, 0.1), negative products clamped to 0
+  std::vector<double> gradation, toward_sun, away_from_sun;
+};
+
 struct SkyModel {
   SkyFormula formula = SkyFormula::kCie;
   int sky_type = 0;                       // kCie: 0 = traditional overcast, 1..15
@@ -128,6 +163,7 @@ struct SkyModel {
   double ground_albedo = 0.2;
   double ground_luminance = 0;  // cd/m², uniform below the horizon
   std::optional<SunDisc> sun;   // present when E_sun,n > 0 and the sun is above the horizon
+  std::shared_ptr<const SkyTable> table;  // the dome tabulated (set by the make_* functions)
 };
 
 // The sky scaled by its zenith luminance, or by the dome's diffuse horizontal illuminance.
@@ -154,37 +190,11 @@ double sky_diffuse_luminance(const SkyModel& sky, Vec3 dir);
 // The same plus the sun disc: what an eye looking in `dir` would see.
 double sky_luminance(const SkyModel& sky, Vec3 dir);
 
-// ---- Many directions of one sky ------------------------------------------------------------
-
-// sky_diffuse_luminance for the tens of thousands of directions of a cubemap or a quadrature (a
-// sky's shell, which `relight annual` makes for every hour of a year): the dome's two factors,
-// the gradation and the indicatrix, tabulated once per sky at kSkyTableIntervals + 1 nodes each
-// and interpolated linearly — a square root and three table reads a direction instead of two
-// exponentials and an arc cosine. The gradation is tabulated over cos Z (a CIE sky), or over
-// 1/max(cos Z, 0.1) (a Perez sky, whose guarded gradation 1 + a·exp(b·s) is then a plain
-// exponential), the indicatrix over the chord |dir − sun| for χ <= 90° and over |dir + sun|
-// beyond: unlike χ or cos χ, the chord makes the indicatrix smooth at both ends (the
-// circumsolar peak, the antisolar point), so linear interpolation errs by ~h²·|f''|/8 there too.
-// The traditional overcast sky, a linear gradation, is reproduced to rounding; every other sky
-// differs from sky_diffuse_luminance by at most 2e-5 of the luminance plus the zenith's (1.3e-5
-// measured over every CIE type and a range of Perez skies, suns 2°–85°: tests/light/
-// sky_model_test.cpp, SkyTable.*): far below the error of a cubemap texel's mean (~1e-3).
-inline constexpr int kSkyTableIntervals = 1024;
-
-struct SkyTable {
-  double scale = 0;             // Lz · 1/(f(Zs)·φ(0)): relative luminance to cd/m²
-  double ground_luminance = 0;  // below the horizon
-  Vec3 sun_direction{0, 1, 0};
-  bool perez = false;  // gradation over 1/max(cos Z, 0.1), negative products clamped to 0
-  std::vector<double> gradation, toward_sun, away_from_sun;
-};
-
-SkyTable tabulate_sky(const SkyModel& sky);
-// sky_diffuse_luminance(sky, dir) from the sky's table.
-double sky_diffuse_luminance(const SkyTable& table, Vec3 dir);
-// Σ weights[k] · sky_diffuse_luminance(table, directions[k]) (as many weights as directions):
+// sky_diffuse_luminance from the sky's table (the formula when it has none).
+double tabulated_sky_luminance(const SkyModel& sky, Vec3 dir);
+// Σ weights[k] · tabulated_sky_luminance(sky, directions[k]) (as many weights as directions):
 // a cubemap texel's quadrature in one call.
-double sky_weighted_sum(const SkyTable& table, std::span<const Vec3> directions,
+double sky_weighted_sum(const SkyModel& sky, std::span<const Vec3> directions,
                         std::span<const double> weights);
 
 }  // namespace relight

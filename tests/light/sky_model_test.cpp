@@ -61,7 +61,8 @@ TEST(SkyModel, EveryTypeScaledByHorizontalIlluminanceReproducesIt) {
 }
 
 // The built-in rule (192 × 384) has converged: against a 1.5× finer rule, sun high, low and
-// below the horizon.
+// below the horizon. The integrand is the tabulated dome (SkyTable), smooth between its nodes
+// but not across them: 1.0e-7 measured (3.3e-8 with the formula itself).
 TEST(SkyModel, HorizontalIlluminanceQuadratureConverges) {
   double worst = 0;
   for (int type : {0, 2, 7, 12, 15}) {
@@ -72,7 +73,7 @@ TEST(SkyModel, HorizontalIlluminanceQuadratureConverges) {
       worst = std::max(worst, std::abs(coarse / fine - 1));
     }
   }
-  EXPECT_LT(worst, 1e-7);
+  EXPECT_LT(worst, 2e-7);
   std::cout << "[ measured ] default vs 1.5x finer E_h rule, worst relative difference " << worst
             << "\n";
 }
@@ -179,8 +180,9 @@ TEST(SkyModel, ZenithAndHorizontalScalingAgree) {
   const SkyModel a = make_sky_from_zenith_luminance(8, sun, 4000.0, 0.2, 0);
   const SkyModel b =
       make_sky_from_horizontal_illuminance(8, sun, a.sky_horizontal_illuminance, 0.2, 0);
-  EXPECT_NEAR(b.zenith_luminance, 4000.0, 1e-9 * 4000.0);
-  EXPECT_NEAR(sky_diffuse_luminance(b, {0, 1, 0}), 4000.0, 1e-9 * 4000.0);
+  // The two scalings integrate the tabulated dome at 192 and 96 zenith nodes: 1.2e-9 apart.
+  EXPECT_NEAR(b.zenith_luminance, 4000.0, 1e-8 * 4000.0);
+  EXPECT_NEAR(sky_diffuse_luminance(b, {0, 1, 0}), 4000.0, 1e-8 * 4000.0);
   EXPECT_THROW(make_sky_from_zenith_luminance(16, sun, 1, 0.2, 0), std::invalid_argument);
   EXPECT_THROW(make_sky_from_zenith_luminance(3, sun, -1, 0.2, 0), std::invalid_argument);
   EXPECT_THROW(make_sky_from_zenith_luminance(3, sun, 1, 1.5, 0), std::invalid_argument);
@@ -189,13 +191,12 @@ TEST(SkyModel, ZenithAndHorizontalScalingAgree) {
 // max |table − formula| / (L + Lz) over random dome directions and the places the tables are
 // hardest: around the sun and the antisun (χ up to 2°) and the Perez guard near the horizon.
 double worst_table_error(const SkyModel& sky) {
-  const SkyTable table = tabulate_sky(sky);
   double worst = 0;
   const auto check = [&](Vec3 d) {
     d = normalize(d);
     const double exact = sky_diffuse_luminance(sky, d);
     worst = std::max(
-        worst, std::abs(sky_diffuse_luminance(table, d) - exact) / (exact + sky.zenith_luminance));
+        worst, std::abs(tabulated_sky_luminance(sky, d) - exact) / (exact + sky.zenith_luminance));
   };
   std::mt19937 random(7);
   std::uniform_real_distribution<double> u(-1, 1);
