@@ -46,8 +46,9 @@ FUZZ_SECONDS ?= 60
 fuzz:
 	@FUZZ_SECONDS=$(FUZZ_SECONDS) JOBS=$(JOBS) scripts/fuzz.sh
 
-# Sanitizers (issue 16): the suite under ASan + UBSan in build-sanitize. Not part of `make test`
-# (a second full build).
+# Sanitizers (issue 16): the suite under ASan + UBSan in build-sanitize, then the studio server
+# under TSan in build-tsan (scripts/test-sanitize.sh). Not part of `make test` (two more full
+# builds).
 test-sanitize:
 	@JOBS=$(JOBS) scripts/test-sanitize.sh
 

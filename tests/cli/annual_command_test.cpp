@@ -221,5 +221,25 @@ TEST(AnnualCommand, BadArgumentsAndWeatherFilesExitTwo) {
       room.epw.string() + ": no occupied hour has the sun up");
 }
 
+// RELIGHT_THREADS caps relight's parallel loops (cli/cli.cpp): one thread makes one stream of
+// hours, and the values do not change; a bad value is an input error naming the variable.
+TEST(AnnualCommand, RelightThreadsCapsTheStreamsAndKeepsTheValues) {
+  const AnnualRoom& room = annual_room();
+  const std::string args = "annual '" + room.rlt.string() + "' --weather '" + room.epw.string() +
+                           "' --occupied 11:00-13:00 -o '";
+  const fs::path all = room.dir.path() / "all-threads.csv", one = room.dir.path() / "one.csv";
+  const auto every_core = run_relight(args + all.string() + "'");
+  ASSERT_EQ(every_core.exit_code, 0) << every_core.err;
+  const auto capped = run_relight(args + one.string() + "'", "export RELIGHT_THREADS=1");
+  ASSERT_EQ(capped.exit_code, 0) << capped.err;
+  EXPECT_NE(capped.out.find(" in 1 streams"), std::string::npos) << capped.out;
+  EXPECT_EQ(read_text(one), read_text(all));
+  for (const char* bad : {"0", "two", "-1", "3x", "''", "99999"}) {
+    testing::expect_input_error(
+        run_relight(args + one.string() + "'", std::string("export RELIGHT_THREADS=") + bad),
+        "RELIGHT_THREADS: expected a whole number");
+  }
+}
+
 }  // namespace
 }  // namespace relight
