@@ -130,8 +130,8 @@ inline constexpr double kPerezMinZenith = 1e-6;
 // The dome's relative luminance for the tens of thousands of directions of a cubemap or a
 // quadrature (a sky's shell and its scaling, which `relight annual` makes for every hour of a
 // year): its two factors, the gradation and the indicatrix, tabulated once per sky at
-// kSkyTableIntervals + 1 nodes each and interpolated linearly — a square root and three table
-// reads a direction instead of two exponentials and an arc cosine. The gradation is tabulated
+// kSkyTableIntervals + 1 nodes each and interpolated linearly — a square root and two table
+// lookups a direction instead of two exponentials and an arc cosine. The gradation is tabulated
 // over cos Z (a CIE sky), or over 1/max(cos Z, 0.1) (a Perez sky, whose guarded gradation
 // 1 + a·exp(b·s) is then a plain exponential), the indicatrix over the chord |dir − sun| for
 // χ <= 90° and over |dir + sun| beyond: unlike χ or cos χ, the chord makes the indicatrix smooth

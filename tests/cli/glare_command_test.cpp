@@ -6,8 +6,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <string>
 #include <vector>
 
@@ -179,12 +177,7 @@ TEST(GlareCommand, UgrInTheCie190StandardRoomIsItsTabularValueWithinOneUnit) {
 
   // The tabular value.
   const PhotometricWeb web = load_ldt(ldt);
-  const LuminousOpening opening = ldt_luminous_opening(parse_ldt(
-      [&] {
-        std::ifstream in(ldt, std::ios::binary);
-        return std::string(std::istreambuf_iterator<char>(in), {});
-      }(),
-      ldt));
+  const LuminousOpening opening = ldt_luminous_opening(parse_ldt(testing::read_text(ldt), ldt));
   double sum = 0;
   for (const Vec3& p : positions) {
     const double t = p.x - observer.x, r = p.z - observer.z;  // across and along the sight
