@@ -61,7 +61,13 @@ ColumnChange add(ColumnChange a, const ColumnChange& b) {
 // the one the CPU runs chosen when the program loads (the sensors' 414-column importance on the
 // demo room: 3.3 s with SSE2, 2.7 s with AVX2; bound by reading the rows of `reflected`, 1.6 KB
 // an entry — column tiles that stay in a core's cache read G once per tile and were slower).
-__attribute__((target_clones("default", "arch=x86-64-v3"))) void gather_columns(
+// Not under ThreadSanitizer: the clones' ifunc resolver runs in the dynamic loader before TSan's
+// runtime is up, and TSan instruments it (a crash at load; the TSan build of make test-sanitize,
+// where speed does not matter).
+#ifndef __SANITIZE_THREAD__
+__attribute__((target_clones("default", "arch=x86-64-v3")))
+#endif
+void gather_columns(
     const float* values, const int* indices, Eigen::Index entries, const float* reflected,
     Eigen::Index columns, float* __restrict sum) {
   std::fill_n(sum, columns, 0.0f);
