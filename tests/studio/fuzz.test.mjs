@@ -9,7 +9,9 @@ import test from 'node:test';
 import assert from 'node:assert/strict';
 import net from 'node:net';
 
-import { connect, residentKiB, startServer, stopServer } from './studio_support.mjs';
+import {
+  assertMemory, connect, residentKiB, startServer, stopServer,
+} from './studio_support.mjs';
 
 const kMessages = Number(process.env.STUDIO_FUZZ_MESSAGES ?? 10000);
 // Over the server's 8 MiB message limit (a weather file fits under it): closed with 1009.
@@ -178,7 +180,7 @@ test(`the server survives ${kMessages} random and malformed messages without a l
     assert.ok(stats.pongs > 0);
     // No leak: the 10,000 messages may not grow the server by more than 16 MiB over the warm-up
     // (allocator caches and frame buffers settle during the warm-up).
-    assert.ok(after - warm < 16 * 1024, `grew ${after - warm} KiB`);
+    assertMemory(after - warm < 16 * 1024, `grew ${after - warm} KiB`);
   } finally {
     assert.equal(await stopServer(server), 0, server.stderr());
   }
