@@ -40,11 +40,14 @@ bench: build
 	@BUILD=$(BUILD) scripts/bench-nearfield.sh
 
 # Fuzzing (issue 16): libFuzzer targets built with clang, ASan and UBSan in build-fuzz, each run
-# FUZZ_SECONDS (60) from its seed corpus; exits non-zero on any crash. Not part of `make test`,
-# which replays the corpora (seeds and regression inputs) through the normal build.
+# FUZZ_SECONDS (60) from its seed corpus, or until FUZZ_RUNS executions when that comes first;
+# FUZZ_TARGETS="ies ldt" runs some. Exits non-zero on any crash. Not part of `make test`, which
+# replays the corpora (seeds and regression inputs) through the normal build.
 FUZZ_SECONDS ?= 60
+FUZZ_RUNS ?= -1
 fuzz:
-	@FUZZ_SECONDS=$(FUZZ_SECONDS) JOBS=$(JOBS) scripts/fuzz.sh
+	@FUZZ_SECONDS=$(FUZZ_SECONDS) FUZZ_RUNS=$(FUZZ_RUNS) FUZZ_TARGETS="$(FUZZ_TARGETS)" \
+	  JOBS=$(JOBS) scripts/fuzz.sh
 
 # Sanitizers (issue 16): the suite under ASan + UBSan in build-sanitize, then the studio server
 # under TSan in build-tsan (scripts/test-sanitize.sh). Not part of `make test` (two more full

@@ -15,6 +15,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -98,23 +99,24 @@ std::vector<std::uint8_t> encode_exr(const Image& image, ExrChannels channels) {
   return encode_exr_as<Imath::half>(image, Imf::HALF);
 }
 
-// Reads the named channels as floats into interleaved slots 0..2 of `data` (an absent
-// channel reads as 0).
+// Reads the named channels as floats into interleaved slots 0..2 of `data` (3 floats a pixel
+// of the window); a channel the file lacks is filled with 0 by the library, so every slot is
+// written. `data` is not initialised before: a file that declares a large window and ends
+// early fails on its first missing chunk having touched only the rows it decoded.
 void read_float_channels(Imf::InputFile& file, const Imath::Box2i& window,
-                         const char* const (&names)[3], std::vector<float>& data) {
+                         const char* const (&names)[3], float* data) {
   const auto width =
       static_cast<std::size_t>(static_cast<long long>(window.max.x) - window.min.x + 1);
   Imf::FrameBuffer frame;
   for (int c = 0; c < 3; ++c) {
-    if (names[c] == nullptr) continue;
-    frame.insert(names[c], Imf::Slice::Make(Imf::FLOAT, data.data() + c, window, kPixelStride,
+    frame.insert(names[c], Imf::Slice::Make(Imf::FLOAT, data + c, window, kPixelStride,
                                             kPixelStride * width, 1, 1, 0.0));
   }
   file.setFrameBuffer(frame);
   file.readPixels(window.min.y, window.max.y);
 }
 
-Image to_image(int width, int height, const std::vector<float>& data) {
+Image to_image(int width, int height, const float* data) {
   Image image = make_image(width, height);
   for (std::size_t i = 0; i < image.pixels.size(); ++i) {
     image.pixels[i] = {data[3 * i], data[3 * i + 1], data[3 * i + 2]};
@@ -160,20 +162,23 @@ Image decode_exr(const fs::path& path) {
     return name;
   };
 
-  std::vector<float> data(3 * static_cast<std::size_t>(w * h), 0.0f);
+  const std::size_t samples = 3 * static_cast<std::size_t>(w * h);
   if (channels.findChannel("R") || channels.findChannel("G") || channels.findChannel("B")) {
-    const char* const names[3] = {find("R"), find("G"), find("B")};
-    read_float_channels(file, window, names, data);
-    return to_image(width, height, data);
+    for (const char* name : {"R", "G", "B"}) find(name);
+    const auto data = std::make_unique_for_overwrite<float[]>(samples);
+    read_float_channels(file, window, {"R", "G", "B"}, data.get());
+    return to_image(width, height, data.get());
   }
   if (channels.findChannel("RY") || channels.findChannel("BY")) {
     return read_luminance_chroma(path, window, width, height);
   }
   if (channels.findChannel("Y")) {
-    const char* const names[3] = {find("Y"), nullptr, nullptr};
-    read_float_channels(file, window, names, data);
-    for (std::size_t i = 0; i < data.size(); i += 3) data[i + 1] = data[i + 2] = data[i];
-    return to_image(width, height, data);
+    find("Y");
+    const auto data = std::make_unique_for_overwrite<float[]>(samples);
+    // Y into slot 0; the two names the file lacks are filled with 0, then overwritten.
+    read_float_channels(file, window, {"Y", "relight.absent.1", "relight.absent.2"}, data.get());
+    for (std::size_t i = 0; i < samples; i += 3) data[i + 1] = data[i + 2] = data[i];
+    return to_image(width, height, data.get());
   }
   fail_input(path.string(), "no R, G, B or Y channel");
 }

@@ -7,6 +7,7 @@
 #include <libexif/exif-data.h>
 
 #include <libexif/exif-mem.h>
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -28,7 +29,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr std::size_t kHeaderBytes = std::size_t{256} * 1024;  // EXIF and other APPn segments come first
+constexpr std::size_t kHeaderBytes =
+    std::size_t{256} * 1024;  // EXIF and other APPn segments come first
 
 struct ExifDataUnref {
   void operator()(ExifData* data) const { exif_data_unref(data); }
@@ -184,8 +186,12 @@ Photo read_photo(const fs::path& path) {
   if (!fs::is_regular_file(path, error)) fail_input(path.string(), "no such file");
   {
     // Refused before decoding: a header may declare a size whose pixels would not fit.
+    // As many bytes as the file has, up to kHeaderBytes: a small file allocates no more.
+    const std::uintmax_t file_bytes = fs::file_size(path, error);
     std::ifstream in(path, std::ios::binary);
-    std::vector<std::uint8_t> head(kHeaderBytes);
+    std::vector<std::uint8_t> head(
+        error ? kHeaderBytes
+              : static_cast<std::size_t>(std::min<std::uintmax_t>(file_bytes, kHeaderBytes)));
     in.read(reinterpret_cast<char*>(head.data()), static_cast<std::streamsize>(head.size()));
     head.resize(static_cast<std::size_t>(in.gcount()));
     if (const auto size = declared_size(head);

@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
+#include <fstream>
 #include <memory>
 #include <string>
 
@@ -30,8 +32,45 @@ std::string lower_extension(const fs::path& path) {
   return ext;
 }
 
+// A Radiance RGBE file (Ward, "Real Pixels", Graphics Gems II, 1991) is header lines up to an
+// empty one, the resolution "-Y H +X W", then H scanlines: flat, 4 bytes a pixel, or — when
+// 8 ≤ W < 32768 and a scanline starts with the bytes 2, 2 — run-length encoded: 4 bytes, then
+// each of the 4 components in runs of at most 127 bytes, each run at least 2 bytes. stb decodes
+// the bytes a flat file lacks as zeros: a truncated file would read as black, and a file of a
+// few bytes declaring 2²⁴ × 2⁴ pixels would fill gigabytes. So the pixel data must hold at
+// least those minima; refused before decoding otherwise. Pinned by EnvironmentMapIo.*Truncated*.
+void check_hdr_holds_its_pixels(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  while (std::getline(in, line) && !line.empty()) {
+  }
+  if (!std::getline(in, line)) return;  // no resolution line: stb says what is wrong
+  int height = 0, width = 0;
+  if (std::sscanf(line.c_str(), "-Y %d +X %d", &height, &width) != 2 || height <= 0 || width <= 0) {
+    return;
+  }
+  const std::streamoff start = in.tellg();
+  char first[2] = {};
+  in.read(first, 2);
+  const bool run_length =
+      width >= 8 && width < 32768 && in.gcount() == 2 && first[0] == 2 && first[1] == 2;
+  const auto w = static_cast<std::uintmax_t>(width), h = static_cast<std::uintmax_t>(height);
+  const std::uintmax_t needed = run_length ? h * (4 + 4 * 2 * ((w + 126) / 127)) : h * w * 4;
+  std::error_code error;
+  const std::uintmax_t size = fs::file_size(path, error);
+  if (error || start < 0) return;
+  const std::uintmax_t held = size - static_cast<std::uintmax_t>(start);
+  if (held < needed) {
+    fail_input(path.string(), "declares " + std::to_string(width) + " × " + std::to_string(height) +
+                                  " pixels but holds " + std::to_string(held) +
+                                  " bytes of them (at least " + std::to_string(needed) +
+                                  " needed): truncated");
+  }
+}
+
 EquirectMap read_hdr(const fs::path& path) {
   if (!stbi_is_hdr(path.c_str())) fail_input(path.string(), "not a Radiance HDR (RGBE) file");
+  check_hdr_holds_its_pixels(path);
   int width = 0, height = 0, channels = 0;
   const std::unique_ptr<float, StbFloatFree> pixels(
       stbi_loadf(path.c_str(), &width, &height, &channels, 3));

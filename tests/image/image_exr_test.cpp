@@ -142,6 +142,21 @@ TEST_F(ImageExr, LuminanceOnlyFileReadsAsGrey) {
   EXPECT_EQ(read.at(2, 1).b, 7.0);
 }
 
+// The decode buffer is not initialised (a truncated file touches only what it decoded), so a
+// channel the file lacks must still read as exactly 0, never as what the memory held.
+TEST_F(ImageExr, AChannelTheFileLacksReadsAsZero) {
+  const Imath::Box2i window({0, 0}, {3, 1});
+  write_foreign_exr(path("rb.exr"), window, {"R", "B"}, Imf::NO_COMPRESSION,
+                    {1, 2, 3, 4, 5, 6, 7, 8, 10, 20, 30, 40, 50, 60, 70, 80});
+  for (int round = 0; round < 3; ++round) {  // reuse of freed memory must not show through
+    const Image read = read_exr(path("rb.exr"));
+    ASSERT_EQ(read.pixels.size(), 8u);
+    EXPECT_EQ(read.at(2, 1).r, 7.0);
+    EXPECT_EQ(read.at(2, 1).b, 70.0);
+    for (const Rgb& p : read.pixels) EXPECT_EQ(p.g, 0.0);
+  }
+}
+
 TEST_F(ImageExr, LuminanceChromaFileReadsAsRgb) {
   {
     Imf::RgbaOutputFile out(path("yc.exr").c_str(), 8, 8, Imf::WRITE_YC);

@@ -90,6 +90,43 @@ TEST(EnvironmentMapIo, Errors) {
   EXPECT_NE(error_of(dir.path() / "nan.exr").find("texel (2, 3) is not finite"), std::string::npos);
 }
 
+// stb decodes the bytes a flat .hdr lacks as zeros; relight refuses a file whose pixel data is
+// shorter than its resolution needs (4 bytes a pixel flat; 4 + 8⌈W/127⌉ bytes a run-length
+// scanline), naming the sizes, before decoding.
+TEST(EnvironmentMapIo, TruncatedRadianceHdrIsRefusedBeforeDecoding) {
+  testing::TempDir dir;
+  const std::string header = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n";
+  // Flat (W < 8): 4 × 2 pixels need 32 bytes; 31 are there.
+  const fs::path flat = dir.write("flat.hdr", header + "-Y 2 +X 4\n" + std::string(31, '\x80'));
+  EXPECT_NE(error_of(flat).find(flat.string() +
+                                ": declares 4 × 2 pixels but holds 31 bytes of them (at least 32 "
+                                "needed): truncated"),
+            std::string::npos)
+      << error_of(flat);
+  // 32 bytes are enough for the check (stb then decodes them).
+  const fs::path whole = dir.write("whole.hdr", header + "-Y 2 +X 4\n" + std::string(32, '\x80'));
+  EXPECT_EQ(error_of(whole), "");
+  // A few bytes declaring 2^24 × 2^23 pixels: refused at once, not decoded from zeros.
+  const fs::path huge = dir.write(
+      "huge.hdr", header + "-Y 8388608 +X 16777216\n" + std::string("\x02\x02\x00\x10", 4));
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_NE(error_of(huge).find("declares 16777216 × 8388608 pixels but holds 4 bytes"),
+            std::string::npos);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1.0);
+  // A run-length file (stb writes runs for 8 ≤ W < 32768): a constant row is 4 + 4 runs of 2
+  // bytes, the minimum, so one byte less is refused.
+  const int w = 64, h = 32;
+  const std::vector<float> rgb(3 * w * h, 0.5f);
+  const fs::path rle = dir.path() / "rle.hdr";
+  ASSERT_NE(stbi_write_hdr(rle.c_str(), w, h, 3, rgb.data()), 0);
+  EXPECT_EQ(error_of(rle), "");
+  fs::resize_file(rle, fs::file_size(rle) - 1);
+  EXPECT_NE(error_of(rle).find("declares 64 × 32 pixels but holds 383 bytes of them (at least "
+                               "384 needed)"),
+            std::string::npos)
+      << error_of(rle);
+}
+
 TEST(EnvironmentMapIo, LoadEnvironmentFromSpec) {
   testing::TempDir dir;
   write_exr(dir.path() / "env.exr", make_image(16, 8, {10, 10, 10}));
