@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <initializer_list>
 #include <memory>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
@@ -179,6 +180,20 @@ std::optional<std::pair<std::uint32_t, std::uint32_t>> declared_size(
   return std::pair{width, height};
 }
 
+// Whether the first bytes are a JPEG (SOI then a marker, ITU-T T.81 §B.1.1.3), PNG (its 8-byte
+// signature, PNG §5.2) or TIFF/BigTIFF (byte order then 42 or 43, TIFF 6.0 §2). imread picks its
+// decoder by signature among all it has; a file that is none of these three could reach another
+// (libgdcm's DICOM reader aborts the process on some files:
+// tests/fuzz/corpus/photo/not-a-photo-dicom).
+bool is_jpeg_png_or_tiff(const std::vector<std::uint8_t>& b) {
+  const auto starts = [&](std::initializer_list<std::uint8_t> magic) {
+    return b.size() >= magic.size() && std::equal(magic.begin(), magic.end(), b.begin());
+  };
+  return starts({0xFF, 0xD8, 0xFF}) || starts({0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'}) ||
+         starts({'I', 'I', 42, 0}) || starts({'M', 'M', 0, 42}) || starts({'I', 'I', 43, 0}) ||
+         starts({'M', 'M', 0, 43});
+}
+
 }  // namespace
 
 Photo read_photo(const fs::path& path) {
@@ -194,6 +209,7 @@ Photo read_photo(const fs::path& path) {
               : static_cast<std::size_t>(std::min<std::uintmax_t>(file_bytes, kHeaderBytes)));
     in.read(reinterpret_cast<char*>(head.data()), static_cast<std::streamsize>(head.size()));
     head.resize(static_cast<std::size_t>(in.gcount()));
+    if (!is_jpeg_png_or_tiff(head)) fail_input(path.string(), "not a JPEG, PNG or TIFF file");
     if (const auto size = declared_size(head);
         size && static_cast<double>(size->first) * size->second > kMaxPhotoPixels) {
       std::ostringstream reason;

@@ -87,7 +87,15 @@ TEST(Photo, AMissingOrUndecodableFileIsAnInputErrorNamingIt) {
     }
   };
   expect_error(dir.path() / "none.jpg", "no such file");
-  expect_error(dir.write("junk.jpg", "not a photo"), "cannot decode as JPEG, PNG or TIFF");
+  expect_error(dir.write("junk.jpg", "not a photo"), "not a JPEG, PNG or TIFF file");
+  expect_error(dir.write("cut.jpg", std::string("\xFF\xD8\xFF\xE0\x00", 5)),
+               "cannot decode as JPEG, PNG or TIFF");
+  // Another format imread knows is refused before it is decoded: a DICOM preamble (which
+  // libgdcm's reader, reached through imread, aborted on) and a Radiance picture.
+  expect_error(dir.write("dicom.jpg", std::string(128, '\0') + "DICM"),
+               "not a JPEG, PNG or TIFF file");
+  expect_error(dir.write("picture.jpg", "#?RADIANCE\n\n-Y 1 +X 1\n\x80\x80\x80\x80"),
+               "not a JPEG, PNG or TIFF file");
 }
 
 TEST(Photo, AHeaderDeclaringMoreThan250MegapixelsIsRefusedBeforeDecodingInUnderASecond) {
