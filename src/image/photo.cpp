@@ -137,6 +137,46 @@ std::uint32_t in_order(const std::vector<std::uint8_t>& b, std::size_t at, int b
   return v;
 }
 
+// The offset of the first marker segment of a JPEG (after its SOI) whose marker satisfies
+// `wanted`, walking the segments' lengths (ITU-T T.81 §B.1.1.4); nullopt when none starts within
+// these bytes (at least 10 of them from the marker on).
+template <typename Wanted>
+std::optional<std::size_t> find_jpeg_marker(const std::vector<std::uint8_t>& b, Wanted wanted) {
+  std::size_t at = 2;
+  while (at + 9 < b.size() && b[at] == 0xFF) {
+    const std::uint8_t marker = b[at + 1];
+    if (marker == 0xFF) {  // a fill byte before the marker
+      ++at;
+      continue;
+    }
+    if (wanted(marker)) return at;
+    at += 2 + big_endian(b, at + 2, 2);
+  }
+  return std::nullopt;
+}
+
+// Whether a JPEG's bytes from its first scan (SOS) on hold an EOI marker (FF D9): in
+// entropy-coded data a byte FF is always followed by 00 or a marker (T.81 §B.1.1.5), so FF D9 is
+// the end of the image, never data. A file cut inside its scans has none; libjpeg would decode
+// the rest of the declared picture from nothing (a grey lower part) with only a warning.
+bool jpeg_reaches_its_end(std::ifstream& in, const std::vector<std::uint8_t>& head) {
+  const auto scan = find_jpeg_marker(head, [](std::uint8_t marker) { return marker == 0xDA; });
+  if (!scan) return true;  // no scan within the header: imread says what is wrong
+  in.clear();
+  in.seekg(static_cast<std::streamoff>(*scan));
+  std::vector<char> chunk(std::size_t{1} << 16);
+  bool after_ff = false;
+  while (in.read(chunk.data(), static_cast<std::streamsize>(chunk.size())) || in.gcount() > 0) {
+    const auto count = static_cast<std::size_t>(in.gcount());
+    for (std::size_t k = 0; k < count; ++k) {
+      const auto byte = static_cast<unsigned char>(chunk[k]);
+      if (after_ff && byte == 0xD9) return true;
+      after_ff = byte == 0xFF;
+    }
+  }
+  return false;
+}
+
 // Width × height from the first bytes of a JPEG (its start-of-frame marker, ITU-T T.81 §B.2.2),
 // PNG (IHDR, PNG §11.2.2) or TIFF (ImageWidth 256 and ImageLength 257 of the first IFD,
 // TIFF 6.0 §2); nullopt when the header does not say within these bytes.
@@ -147,19 +187,11 @@ std::optional<std::pair<std::uint32_t, std::uint32_t>> declared_size(
     return std::pair{big_endian(b, 16, 4), big_endian(b, 20, 4)};
   }
   if (n >= 4 && b[0] == 0xFF && b[1] == 0xD8) {
-    std::size_t at = 2;
-    while (at + 9 < n && b[at] == 0xFF) {
-      const std::uint8_t marker = b[at + 1];
-      if (marker == 0xFF) {  // a fill byte before the marker
-        ++at;
-        continue;
-      }
-      const bool frame =
-          marker >= 0xC0 && marker <= 0xCF && marker != 0xC4 && marker != 0xC8 && marker != 0xCC;
-      if (frame) return std::pair{big_endian(b, at + 7, 2), big_endian(b, at + 5, 2)};
-      at += 2 + big_endian(b, at + 2, 2);
-    }
-    return std::nullopt;
+    const auto frame = find_jpeg_marker(b, [](std::uint8_t marker) {
+      return marker >= 0xC0 && marker <= 0xCF && marker != 0xC4 && marker != 0xC8 && marker != 0xCC;
+    });
+    if (!frame) return std::nullopt;
+    return std::pair{big_endian(b, *frame + 7, 2), big_endian(b, *frame + 5, 2)};
   }
   const bool little = n >= 8 && b[0] == 'I' && b[1] == 'I' && b[2] == 42 && b[3] == 0;
   const bool big = n >= 8 && b[0] == 'M' && b[1] == 'M' && b[2] == 0 && b[3] == 42;
@@ -216,6 +248,9 @@ Photo read_photo(const fs::path& path) {
       reason << size->first << " × " << size->second << " px: more than relight reads ("
              << kMaxPhotoPixels / 1e6 << " megapixels)";
       fail_input(path.string(), reason.str());
+    }
+    if (head[0] == 0xFF && !jpeg_reaches_its_end(in, head)) {
+      fail_input(path.string(), "a JPEG without its end (EOI marker): truncated");
     }
   }
   const cv::Mat decoded = cv::imread(path.string(), cv::IMREAD_ANYDEPTH | cv::IMREAD_COLOR);

@@ -98,6 +98,27 @@ TEST(Photo, AMissingOrUndecodableFileIsAnInputErrorNamingIt) {
                "not a JPEG, PNG or TIFF file");
 }
 
+// libjpeg decodes a file cut inside its scans with a warning, the missing part grey; relight
+// refuses it. The whole file and one with bytes after its EOI (cameras pad) still read.
+TEST(Photo, AJpegCutBeforeItsEndIsRefusedAndTrailingBytesAreKept) {
+  const testing::TempDir dir;
+  write_photo_jpeg(dir.path() / "a.jpg", gradient(64, 48), 90, {0.01, std::nullopt, std::nullopt});
+  const std::string jpeg = testing::read_text(dir.path() / "a.jpg");
+  EXPECT_EQ(read_photo(dir.write("padded.jpg", jpeg + std::string(300, '\0'))).width, 64);
+  const std::size_t scan = jpeg.find("\xFF\xDA");
+  ASSERT_NE(scan, std::string::npos);
+  for (const std::size_t cut : {jpeg.size() - 2, jpeg.size() - 1, (scan + jpeg.size()) / 2}) {
+    const auto file = dir.write("cut.jpg", jpeg.substr(0, cut));
+    try {
+      read_photo(file);
+      ADD_FAILURE() << "no error for a JPEG cut to " << cut << " bytes";
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()),
+                file.string() + ": a JPEG without its end (EOI marker): truncated");
+    }
+  }
+}
+
 TEST(Photo, AHeaderDeclaringMoreThan250MegapixelsIsRefusedBeforeDecodingInUnderASecond) {
   const testing::TempDir dir;
   write_photo_jpeg(dir.path() / "a.jpg", gradient(64, 48), 90, {0.01, std::nullopt, std::nullopt});
