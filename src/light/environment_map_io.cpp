@@ -9,8 +9,10 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iterator>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "common/input_error.h"
 #include "image/image_exr.h"
@@ -39,6 +41,45 @@ std::string lower_extension(const fs::path& path) {
 // the bytes a flat file lacks as zeros: a truncated file would read as black, and a file of a
 // few bytes declaring 2²⁴ × 2⁴ pixels would fill gigabytes. So the pixel data must hold at
 // least those minima; refused before decoding otherwise. Pinned by EnvironmentMapIo.*Truncated*.
+// Walks the run-length scanlines from `start`: each is 2, 2, W (big-endian 16 bits), then per
+// component runs until W values: a byte c > 128 repeats the next byte c − 128 times, else c
+// literal bytes follow. Debian's stb (2022) loops forever on a run of length 0 and reads zeros
+// past the end of the file, so a run of 0, one longer than what is left of the scanline, or
+// the end of the file inside the runs is refused (make fuzz found a 93-byte file hanging
+// relight; EnvironmentMapIo.ARunOfZero...). A scanline without the 2, 2 mark ends the walk: stb
+// reads the rest as flat pixels, whose size was checked.
+void check_hdr_runs(const fs::path& path, std::ifstream& in, std::streamoff start, int width,
+                    int height) {
+  in.clear();
+  in.seekg(start);
+  std::vector<unsigned char> data{std::istreambuf_iterator<char>(in), {}};
+  std::size_t at = 0;
+  const auto fail_at = [&](int row, const std::string& what) {
+    fail_input(path.string(),
+               "bad run-length data in scanline " + std::to_string(row) + ": " + what);
+  };
+  for (int row = 0; row < height; ++row) {
+    if (at + 4 > data.size()) fail_at(row, "the file ends");
+    if (data[at] != 2 || data[at + 1] != 2 || (data[at + 2] & 0x80) != 0) return;
+    if ((data[at + 2] << 8 | data[at + 3]) != width) fail_at(row, "its length is not the width");
+    at += 4;
+    for (int component = 0; component < 4; ++component) {
+      for (int left = width; left > 0;) {
+        if (at >= data.size()) fail_at(row, "the file ends");
+        const int c = data[at++];
+        const int count = c > 128 ? c - 128 : c;
+        if (count == 0 || count > left) {
+          fail_at(row, "a run of " + std::to_string(count) + " where " + std::to_string(left) +
+                           " values are left");
+        }
+        at += c > 128 ? 1 : static_cast<std::size_t>(count);
+        if (at > data.size()) fail_at(row, "the file ends");
+        left -= count;
+      }
+    }
+  }
+}
+
 void check_hdr_holds_its_pixels(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
   std::string line;
@@ -66,6 +107,7 @@ void check_hdr_holds_its_pixels(const fs::path& path) {
                                   " bytes of them (at least " + std::to_string(needed) +
                                   " needed): truncated");
   }
+  if (run_length) check_hdr_runs(path, in, start, width, height);
 }
 
 EquirectMap read_hdr(const fs::path& path) {

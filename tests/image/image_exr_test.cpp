@@ -13,6 +13,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -201,6 +202,31 @@ TEST_F(ImageExr, TruncatedFileIsInputError) {
   fs::copy_file(path("whole.exr"), path("cut.exr"));
   fs::resize_file(path("cut.exr"), size / 2);
   EXPECT_THROW(read_exr(path("cut.exr")), InputError);
+}
+
+// OpenEXR allocates an attribute by its declared size before reading it; a header attribute
+// larger than the rest of the file is refused first, naming it.
+TEST_F(ImageExr, AnAttributeLargerThanTheFileIsRefusedNamingIt) {
+  write_exr(path("whole.exr"), make_image(4, 2, {1, 2, 3}));
+  std::string bytes;
+  {
+    std::ifstream in(path("whole.exr"), std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  const std::string attribute("channels\0chlist\0", 16);
+  const std::size_t at = bytes.find(attribute);
+  ASSERT_NE(at, std::string::npos);
+  bytes.replace(at + attribute.size(), 4, "\xFF\xFF\xFF\x7F");  // 2^31 - 1 bytes
+  std::ofstream(path("big.exr"), std::ios::binary) << bytes;
+  try {
+    read_exr(path("big.exr"));
+    FAIL() << "no exception";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(path("big.exr").string() +
+                                         ": attribute \"channels\" declares 2147483647 bytes"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 // Blender's studio-light environment maps are DWAB-compressed (ARCHITECTURE §5).

@@ -127,6 +127,36 @@ TEST(EnvironmentMapIo, TruncatedRadianceHdrIsRefusedBeforeDecoding) {
       << error_of(rle);
 }
 
+// Debian's stb loops forever on a run of length 0 in a run-length .hdr (make fuzz found a
+// 93-byte file hanging relight); relight refuses such runs, naming the scanline, and a file
+// that ends inside its runs.
+TEST(EnvironmentMapIo, ARunOfZeroOrTheFileEndingInsideTheRunsIsRefused) {
+  testing::TempDir dir;
+  const std::string header = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 4 +X 8\n";
+  // A scanline of width 8: each component one run of 8 (0x88) of one byte value.
+  const std::string row("\x02\x02\x00\x08\x88\x80\x88\x40\x88\x20\x88\x82", 12);
+  EXPECT_EQ(error_of(dir.write("good.hdr", header + row + row + row + row)), "");
+  std::string zero = row;
+  zero[8] = 0;  // the third component's run: a literal of length 0
+  const fs::path bad = dir.write("zero.hdr", header + row + zero + row + row);
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_NE(error_of(bad).find(bad.string() +
+                               ": bad run-length data in scanline 1: a run of 0 where 8 values "
+                               "are left"),
+            std::string::npos)
+      << error_of(bad);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1.0);
+  std::string longer = row;
+  longer[4] = '\x89';  // a run of 9 in a scanline of 8
+  EXPECT_NE(error_of(dir.write("long.hdr", header + longer + row + row + row))
+                .find("scanline 0: a run of 9 where 8 values are left"),
+            std::string::npos);
+  const fs::path cut =
+      dir.write("cut.hdr", header + row + row.substr(0, 9) + std::string(40, '\0'));
+  EXPECT_NE(error_of(cut).find("bad run-length data in scanline 1"), std::string::npos)
+      << error_of(cut);
+}
+
 TEST(EnvironmentMapIo, LoadEnvironmentFromSpec) {
   testing::TempDir dir;
   write_exr(dir.path() / "env.exr", make_image(16, 8, {10, 10, 10}));
