@@ -96,7 +96,8 @@ void check_hdr_holds_its_pixels(const fs::path& path) {
   const bool run_length =
       width >= 8 && width < 32768 && in.gcount() == 2 && first[0] == 2 && first[1] == 2;
   const auto w = static_cast<std::uintmax_t>(width), h = static_cast<std::uintmax_t>(height);
-  const std::uintmax_t needed = run_length ? h * (4 + 4 * 2 * ((w + 126) / 127)) : h * w * 4;
+  const std::uintmax_t needed =
+      run_length ? h * (4 + std::uintmax_t{8} * ((w + 126) / 127)) : h * w * 4;
   std::error_code error;
   const std::uintmax_t size = fs::file_size(path, error);
   if (error || start < 0) return;
