@@ -30,8 +30,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr std::size_t kHeaderBytes =
-    std::size_t{256} * 1024;  // EXIF and other APPn segments come first
+// What is read for the checks before decoding: EXIF and other APPn segments come first.
+constexpr std::size_t kHeaderBytes = std::size_t{256} * 1024;
 
 struct ExifDataUnref {
   void operator()(ExifData* data) const { exif_data_unref(data); }

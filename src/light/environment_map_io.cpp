@@ -34,13 +34,6 @@ std::string lower_extension(const fs::path& path) {
   return ext;
 }
 
-// A Radiance RGBE file (Ward, "Real Pixels", Graphics Gems II, 1991) is header lines up to an
-// empty one, the resolution "-Y H +X W", then H scanlines: flat, 4 bytes a pixel, or — when
-// 8 ≤ W < 32768 and a scanline starts with the bytes 2, 2 — run-length encoded: 4 bytes, then
-// each of the 4 components in runs of at most 127 bytes, each run at least 2 bytes. stb decodes
-// the bytes a flat file lacks as zeros: a truncated file would read as black, and a file of a
-// few bytes declaring 2²⁴ × 2⁴ pixels would fill gigabytes. So the pixel data must hold at
-// least those minima; refused before decoding otherwise. Pinned by EnvironmentMapIo.*Truncated*.
 // Walks the run-length scanlines from `start`: each is 2, 2, W (big-endian 16 bits), then per
 // component runs until W values: a byte c > 128 repeats the next byte c − 128 times, else c
 // literal bytes follow. Debian's stb (2022) loops forever on a run of length 0 and reads zeros
@@ -80,6 +73,13 @@ void check_hdr_runs(const fs::path& path, std::ifstream& in, std::streamoff star
   }
 }
 
+// A Radiance RGBE file (Ward, "Real Pixels", Graphics Gems II, 1991) is header lines up to an
+// empty one, the resolution "-Y H +X W", then H scanlines: flat, 4 bytes a pixel, or — when
+// 8 ≤ W < 32768 and a scanline starts with the bytes 2, 2 — run-length encoded: 4 bytes, then
+// each of the 4 components in runs of at most 127 bytes, each run at least 2 bytes. stb decodes
+// the bytes a flat file lacks as zeros: a truncated file would read as black, and a file of a
+// few bytes declaring 2²⁴ × 2²³ pixels would ask for gigabytes. So the pixel data must hold at
+// least those minima; refused before decoding otherwise. Pinned by EnvironmentMapIo.*Truncated*.
 void check_hdr_holds_its_pixels(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
   std::string line;
