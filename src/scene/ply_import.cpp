@@ -312,16 +312,19 @@ double srgb_to_linear(double c) {
   return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
 }
 
-// Which property of an element feeds which value we keep.
+// Which property of an element feeds which value we keep. Only the first element named
+// "vertex" and the first named "face" feed anything; later ones of the same name are read past
+// (make fuzz found a second face element adding faces without colours:
+// PlyImport.OnlyTheFirstVertexAndFaceElementsAreRead).
 enum class Role { kSkip, kX, kY, kZ, kFaceIndices, kRed, kGreen, kBlue };
 
-Role role_of(const PlyElement& element, const PlyProperty& property, bool face_colours) {
-  if (element.name == "vertex" && !property.is_list) {
+Role role_of(const PlyProperty& property, bool is_vertex, bool is_face, bool face_colours) {
+  if (is_vertex && !property.is_list) {
     if (property.name == "x") return Role::kX;
     if (property.name == "y") return Role::kY;
     if (property.name == "z") return Role::kZ;
   }
-  if (element.name == "face") {
+  if (is_face) {
     if (property.is_list &&
         (property.name == "vertex_indices" || property.name == "vertex_index")) {
       return Role::kFaceIndices;
@@ -412,7 +415,7 @@ ImportedMesh import_ply(const std::filesystem::path& file) {
     }
     std::vector<Role> roles;
     for (const PlyProperty& p : element.properties) {
-      roles.push_back(role_of(element, p, face_colours));
+      roles.push_back(role_of(p, is_vertex, is_face, face_colours));
     }
 
     for (std::uint64_t i = 0; i < element.count; ++i) {

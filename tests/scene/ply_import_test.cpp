@@ -146,6 +146,26 @@ TEST_F(PlyImport, AnElementWithoutPropertiesIsSkippedWhateverItsCount) {
   }
 }
 
+TEST_F(PlyImport, OnlyTheFirstVertexAndFaceElementsAreRead) {
+  // A second face element (without colours) and a second vertex element are read past: the
+  // mesh is the first vertex element's three points and the first face element's triangle.
+  const std::string header =
+      "ply\nformat ascii 1.0\n"
+      "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 1\nproperty list uchar int vertex_indices\n"
+      "property uchar red\nproperty uchar green\nproperty uchar blue\n"
+      "element face 2\nproperty list uchar int vertex_indices\n"
+      "element vertex 1\nproperty float x\nproperty float y\nproperty float z\n"
+      "end_header\n";
+  const std::string body = "0 0 0\n1 0 0\n0 1 0\n3 0 1 2 255 0 0\n3 2 1 0\n3 0 2 1\n9 9 9\n";
+  const ImportedMesh mesh = import_mesh(write("two_faces.ply", header + body));
+  ASSERT_EQ(mesh.positions.size(), 3u);
+  EXPECT_EQ(mesh.positions[1], (Vec3{1, 0, 0}));
+  ASSERT_EQ(mesh.triangles.size(), 1u);
+  ASSERT_EQ(mesh.materials.size(), 1u);
+  EXPECT_EQ(mesh.materials[0].name, "rgb(255,0,0)");
+}
+
 TEST_F(PlyImport, AsciiSquareWithFaceColours) {
   const std::string body =
       "0 0.25 0 0\n1 0.25 0 0\n1 0.25 1 0\n0 0.25 1 0\n0.5 0.25 -1 0\n"
