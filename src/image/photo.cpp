@@ -12,10 +12,12 @@
 #include <cstdlib>
 #include <fstream>
 #include <initializer_list>
+#include <iterator>
 #include <memory>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <span>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -124,13 +126,13 @@ std::vector<std::uint8_t> exif_block(const PhotoExposure& exposure) {
   return {bytes, bytes + size};
 }
 
-std::uint32_t big_endian(const std::vector<std::uint8_t>& b, std::size_t at, int bytes) {
+std::uint32_t big_endian(std::span<const std::uint8_t> b, std::size_t at, int bytes) {
   std::uint32_t v = 0;
   for (int k = 0; k < bytes; ++k) v = (v << 8) | b[at + static_cast<std::size_t>(k)];
   return v;
 }
 
-std::uint32_t in_order(const std::vector<std::uint8_t>& b, std::size_t at, int bytes, bool little) {
+std::uint32_t in_order(std::span<const std::uint8_t> b, std::size_t at, int bytes, bool little) {
   if (!little) return big_endian(b, at, bytes);
   std::uint32_t v = 0;
   for (int k = bytes - 1; k >= 0; --k) v = (v << 8) | b[at + static_cast<std::size_t>(k)];
@@ -141,7 +143,7 @@ std::uint32_t in_order(const std::vector<std::uint8_t>& b, std::size_t at, int b
 // `wanted`, walking the segments' lengths (ITU-T T.81 §B.1.1.4); nullopt when none starts within
 // these bytes (at least 10 of them from the marker on).
 template <typename Wanted>
-std::optional<std::size_t> find_jpeg_marker(const std::vector<std::uint8_t>& b, Wanted wanted) {
+std::optional<std::size_t> find_jpeg_marker(std::span<const std::uint8_t> b, Wanted wanted) {
   std::size_t at = 2;
   while (at + 9 < b.size() && b[at] == 0xFF) {
     const std::uint8_t marker = b[at + 1];
@@ -159,20 +161,12 @@ std::optional<std::size_t> find_jpeg_marker(const std::vector<std::uint8_t>& b, 
 // entropy-coded data a byte FF is always followed by 00 or a marker (T.81 §B.1.1.5), so FF D9 is
 // the end of the image, never data. A file cut inside its scans has none; libjpeg would decode
 // the rest of the declared picture from nothing (a grey lower part) with only a warning.
-bool jpeg_reaches_its_end(std::ifstream& in, const std::vector<std::uint8_t>& head) {
-  const auto scan = find_jpeg_marker(head, [](std::uint8_t marker) { return marker == 0xDA; });
-  if (!scan) return true;  // no scan within the header: imread says what is wrong
-  in.clear();
-  in.seekg(static_cast<std::streamoff>(*scan));
-  std::vector<char> chunk(std::size_t{1} << 16);
-  bool after_ff = false;
-  while (in.read(chunk.data(), static_cast<std::streamsize>(chunk.size())) || in.gcount() > 0) {
-    const auto count = static_cast<std::size_t>(in.gcount());
-    for (std::size_t k = 0; k < count; ++k) {
-      const auto byte = static_cast<unsigned char>(chunk[k]);
-      if (after_ff && byte == 0xD9) return true;
-      after_ff = byte == 0xFF;
-    }
+bool jpeg_reaches_its_end(std::span<const std::uint8_t> b) {
+  const auto scan = find_jpeg_marker(b.first(std::min(b.size(), kHeaderBytes)),
+                                     [](std::uint8_t marker) { return marker == 0xDA; });
+  if (!scan) return true;  // no scan within the header: imdecode says what is wrong
+  for (std::size_t k = *scan; k + 1 < b.size(); ++k) {
+    if (b[k] == 0xFF && b[k + 1] == 0xD9) return true;
   }
   return false;
 }
@@ -181,7 +175,7 @@ bool jpeg_reaches_its_end(std::ifstream& in, const std::vector<std::uint8_t>& he
 // PNG (IHDR, PNG §11.2.2) or TIFF (ImageWidth 256 and ImageLength 257 of the first IFD,
 // TIFF 6.0 §2); nullopt when the header does not say within these bytes.
 std::optional<std::pair<std::uint32_t, std::uint32_t>> declared_size(
-    const std::vector<std::uint8_t>& b) {
+    std::span<const std::uint8_t> b) {
   const std::size_t n = b.size();
   if (n >= 24 && b[0] == 0x89 && b[1] == 'P' && b[2] == 'N' && b[3] == 'G') {
     return std::pair{big_endian(b, 16, 4), big_endian(b, 20, 4)};
@@ -213,11 +207,11 @@ std::optional<std::pair<std::uint32_t, std::uint32_t>> declared_size(
 }
 
 // Whether the first bytes are a JPEG (SOI then a marker, ITU-T T.81 §B.1.1.3), PNG (its 8-byte
-// signature, PNG §5.2) or TIFF/BigTIFF (byte order then 42 or 43, TIFF 6.0 §2). imread picks its
+// signature, PNG §5.2) or TIFF/BigTIFF (byte order then 42 or 43, TIFF 6.0 §2). imdecode picks its
 // decoder by signature among all it has; a file that is none of these three could reach another
 // (libgdcm's DICOM reader aborts the process on some files:
 // tests/fuzz/corpus/photo/not-a-photo-dicom).
-bool is_jpeg_png_or_tiff(const std::vector<std::uint8_t>& b) {
+bool is_jpeg_png_or_tiff(std::span<const std::uint8_t> b) {
   const auto starts = [&](std::initializer_list<std::uint8_t> magic) {
     return b.size() >= magic.size() && std::equal(magic.begin(), magic.end(), b.begin());
   };
@@ -228,35 +222,27 @@ bool is_jpeg_png_or_tiff(const std::vector<std::uint8_t>& b) {
 
 }  // namespace
 
-Photo read_photo(const fs::path& path) {
-  std::error_code error;
-  if (!fs::is_regular_file(path, error)) fail_input(path.string(), "no such file");
-  {
-    // Refused before decoding: a header may declare a size whose pixels would not fit.
-    // As many bytes as the file has, up to kHeaderBytes: a small file allocates no more.
-    const std::uintmax_t file_bytes = fs::file_size(path, error);
-    std::ifstream in(path, std::ios::binary);
-    std::vector<std::uint8_t> head(
-        error ? kHeaderBytes
-              : static_cast<std::size_t>(std::min<std::uintmax_t>(file_bytes, kHeaderBytes)));
-    in.read(reinterpret_cast<char*>(head.data()), static_cast<std::streamsize>(head.size()));
-    head.resize(static_cast<std::size_t>(in.gcount()));
-    if (!is_jpeg_png_or_tiff(head)) fail_input(path.string(), "not a JPEG, PNG or TIFF file");
-    if (const auto size = declared_size(head);
-        size && static_cast<double>(size->first) * size->second > kMaxPhotoPixels) {
-      std::ostringstream reason;
-      reason << size->first << " × " << size->second << " px: more than relight reads ("
-             << kMaxPhotoPixels / 1e6 << " megapixels)";
-      fail_input(path.string(), reason.str());
-    }
-    if (head[0] == 0xFF && !jpeg_reaches_its_end(in, head)) {
-      fail_input(path.string(), "a JPEG without its end (EOI marker): truncated");
-    }
+Photo decode_photo(std::span<const std::uint8_t> bytes, const std::string& what) {
+  // Refused before decoding: a header may declare a size whose pixels would not fit.
+  const std::span<const std::uint8_t> head = bytes.first(std::min(bytes.size(), kHeaderBytes));
+  if (!is_jpeg_png_or_tiff(head)) fail_input(what, "not a JPEG, PNG or TIFF file");
+  if (const auto size = declared_size(head);
+      size && static_cast<double>(size->first) * size->second > kMaxPhotoPixels) {
+    std::ostringstream reason;
+    reason << size->first << " × " << size->second << " px: more than relight reads ("
+           << kMaxPhotoPixels / 1e6 << " megapixels)";
+    fail_input(what, reason.str());
   }
-  const cv::Mat decoded = cv::imread(path.string(), cv::IMREAD_ANYDEPTH | cv::IMREAD_COLOR);
-  if (decoded.empty()) fail_input(path.string(), "cannot decode as JPEG, PNG or TIFF");
+  if (head[0] == 0xFF && !jpeg_reaches_its_end(bytes)) {
+    fail_input(what, "a JPEG without its end (EOI marker): truncated");
+  }
+  // imdecode reads from a Mat header over the bytes; it does not write them.
+  const cv::Mat encoded(1, static_cast<int>(std::min<std::size_t>(bytes.size(), INT32_MAX)), CV_8U,
+                        const_cast<std::uint8_t*>(bytes.data()));
+  const cv::Mat decoded = cv::imdecode(encoded, cv::IMREAD_ANYDEPTH | cv::IMREAD_COLOR);
+  if (decoded.empty()) fail_input(what, "cannot decode as JPEG, PNG or TIFF");
   if (decoded.depth() != CV_8U && decoded.depth() != CV_16U) {
-    fail_input(path.string(), "not 8 or 16 bits per channel");
+    fail_input(what, "not 8 or 16 bits per channel");
   }
   cv::Mat rgb;
   cv::cvtColor(decoded, rgb, cv::COLOR_BGR2RGB);
@@ -268,6 +254,16 @@ Photo read_photo(const fs::path& path) {
   cv::Mat wide(rgb.rows, rgb.cols, CV_16UC3, photo.rgb.data());
   rgb.convertTo(wide, CV_16UC3);
   return photo;
+}
+
+Photo read_photo(const fs::path& path) {
+  std::error_code error;
+  if (!fs::is_regular_file(path, error)) fail_input(path.string(), "no such file");
+  std::ifstream in(path, std::ios::binary);
+  const std::vector<std::uint8_t> bytes{std::istreambuf_iterator<char>(in), {}};
+  if (!in.eof() && in.fail()) fail_input(path.string(), "cannot read the file");
+  if (bytes.empty()) fail_input(path.string(), "an empty file");
+  return decode_photo(bytes, path.string());
 }
 
 PhotoExposure read_photo_exposure(const fs::path& path) {

@@ -9,6 +9,8 @@
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <span>
+#include <string>
 #include <vector>
 
 namespace relight {
@@ -34,6 +36,10 @@ inline constexpr double kMaxPhotoPixels = 250e6;
 // be decoded, has another bit depth (a float TIFF), or its header declares more than
 // kMaxPhotoPixels (refused before decoding: JPEG, PNG and TIFF headers are read first).
 Photo read_photo(const std::filesystem::path& path);
+
+// The same from a file's bytes held in memory (a glTF texture, scene/gltf_import.cpp); `what`
+// names them in errors ("FILE: image 2").
+Photo decode_photo(std::span<const std::uint8_t> bytes, const std::string& what);
 
 // What EXIF says of one exposure; each field is absent when the file has no such tag.
 struct PhotoExposure {

@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+#include "math/srgb.h"
+
 namespace relight {
 
 namespace {
@@ -11,7 +13,7 @@ constexpr double kSaturationFactor = 1.2;  // 78 / (q · S) with q = 0.65, S = 1
 
 double display_value(double luminance, double scale) {
   if (!(luminance > 0)) return 0.0;  // negative, zero and NaN
-  return srgb_oetf(highlight_rolloff(luminance * scale));
+  return srgb_encode(highlight_rolloff(luminance * scale));
 }
 
 }  // namespace
@@ -49,11 +51,6 @@ double highlight_rolloff(double x) {
   const double u = (x - kShoulderStart) / (1.0 - kShoulderStart);
   if (std::isinf(u)) return 1.0;
   return kShoulderStart + (1.0 - kShoulderStart) * u / (1.0 + u);
-}
-
-double srgb_oetf(double linear) {
-  if (linear <= 0.0031308) return 12.92 * linear;
-  return 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
 }
 
 std::uint8_t quantize_8bit(double display) {

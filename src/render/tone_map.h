@@ -50,7 +50,6 @@ std::optional<double> log_average_luminance(const Image& hdr);
 double auto_exposure_ev100(const Image& hdr);
 
 double highlight_rolloff(double x);
-double srgb_oetf(double linear);
 // round(255 · clamp(v, 0, 1)); NaN → 0.
 std::uint8_t quantize_8bit(double display);
 

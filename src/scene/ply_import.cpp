@@ -20,6 +20,7 @@
 
 #include "common/input_error.h"
 #include "common/read_file.h"
+#include "math/srgb.h"
 #include "scene/mesh_import_bytes.h"
 #include "scene/mesh_import_polygon.h"
 
@@ -308,10 +309,6 @@ class BodyReader {
   int line_ = 0;
 };
 
-double srgb_to_linear(double c) {
-  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-}
-
 // Which property of an element feeds which value we keep. Only the first element named
 // "vertex" and the first named "face" feed anything; later ones of the same name are read past
 // (make fuzz found a second face element adding faces without colours:
@@ -500,7 +497,7 @@ ImportedMesh import_ply(const std::filesystem::path& file) {
         const std::uint32_t r = colour >> 16, g = (colour >> 8) & 0xff, b = colour & 0xff;
         mesh.materials.push_back(
             {"rgb(" + std::to_string(r) + "," + std::to_string(g) + "," + std::to_string(b) + ")",
-             Rgb{srgb_to_linear(r / 255.0), srgb_to_linear(g / 255.0), srgb_to_linear(b / 255.0)}});
+             Rgb{srgb_decode(r / 255.0), srgb_decode(g / 255.0), srgb_decode(b / 255.0)}});
       }
     }
     return it->second;
