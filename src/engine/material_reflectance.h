@@ -26,6 +26,24 @@ inline Rgb bounce_albedo(const Material& m) {
   return m.glossy ? hemispherical_albedo(metallic_roughness_of(m)) : m.albedo;
 }
 
+// What a vertex of material m reflects where its base colour texture's value is `texture`
+// (scene/surface_texture.h: glTF's baseColorFactor × texture; 1 where there is none).
+inline Rgb bounce_albedo(const Material& m, Rgb texture) {
+  Material textured = m;
+  textured.albedo = m.albedo * texture;
+  return bounce_albedo(textured);
+}
+
+// Per vertex v: the texture value (1 when `vertex_texture` is empty), from a prepared mesh's
+// values or from 3 floats a vertex as stored.
+inline Rgb vertex_texture_at(std::span<const Rgb> vertex_texture, std::size_t v) {
+  return vertex_texture.empty() ? Rgb{1, 1, 1} : vertex_texture[v];
+}
+inline Rgb vertex_texture_at(std::span<const float> vertex_texture, std::size_t v) {
+  if (vertex_texture.empty()) return {1, 1, 1};
+  return {vertex_texture[3 * v], vertex_texture[3 * v + 1], vertex_texture[3 * v + 2]};
+}
+
 // The glossy materials of a material list (window glass never is): per material its index
 // into `brdf`, or −1 when it is Lambertian or glass.
 struct GlossyMaterials {

@@ -14,8 +14,9 @@ Receivers make_receivers(const Scene& scene, const PreparedMesh& mesh) {
   r.positions = mesh.positions;
   r.normals = mesh.normals;
   r.albedo.reserve(r.vertex_count + r.sensor_count);
-  for (std::uint32_t m : mesh.vertex_material) {
-    r.albedo.push_back(bounce_albedo(scene.materials.at(m)));
+  for (std::size_t v = 0; v < mesh.vertex_material.size(); ++v) {
+    r.albedo.push_back(bounce_albedo(scene.materials.at(mesh.vertex_material[v]),
+                                     vertex_texture_at(mesh.vertex_texture, v)));
   }
   for (const SensorSet& s : scene.sensors) {
     for (const Vec3& p : s.points) {

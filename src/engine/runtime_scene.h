@@ -55,6 +55,9 @@ struct RuntimeSceneView {
   // Per vertex its material (scene order), for live material edits; empty when the file
   // predates MMAT; kNoMaterial for a vertex no triangle uses.
   std::vector<std::uint32_t> vertex_material;
+  // 3 per vertex: its base colour texture's value (scene/surface_texture.h), which multiplies
+  // an edited material's base colour; empty when no vertex has a texture.
+  std::vector<float> vertex_texture;
   // The gather operator in compressed rows (receivers × vertices), empty when the precompute
   // did not keep it: row r's entries are [rows[r], rows[r + 1]).
   std::span<const std::uint32_t> gather_rows, gather_columns;

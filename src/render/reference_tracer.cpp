@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <utility>
 
 #include <tbb/blocked_range.h>
@@ -82,7 +83,7 @@ struct SurfaceHit {
   Vec3 position;
   Vec3 normal;
   Rgb albedo;
-  const MetallicRoughness* glossy = nullptr;  // null: Lambertian
+  std::optional<MetallicRoughness> glossy;  // none: Lambertian
 };
 
 // The first front-facing opaque surface along the ray; false for misses and back faces.
@@ -95,9 +96,14 @@ bool trace_surface(PathContext& ctx, const Ray& ray, SurfaceHit& out) {
   if (dot(n, ray.direction) >= 0) return false;  // back sides absorb
   const std::int32_t glossy =
       hit.triangle < ref.triangle_glossy.size() ? ref.triangle_glossy[hit.triangle] : -1;
+  // The base colour times the texture at the point, at full resolution (scene/surface_texture.h).
+  const Rgb texture = texture_at(ref.mesh.triangle_textures, hit.triangle, hit.u, hit.v);
   out = {point_on_triangle(ref.mesh, hit.triangle, hit.u, hit.v), n,
-         ref.triangle_albedo[hit.triangle],
-         glossy >= 0 ? &ref.glossy[static_cast<std::size_t>(glossy)] : nullptr};
+         ref.triangle_albedo[hit.triangle] * texture, std::nullopt};
+  if (glossy >= 0) {
+    out.glossy = ref.glossy[static_cast<std::size_t>(glossy)];
+    out.glossy->albedo = out.glossy->albedo * texture;
+  }
   return true;
 }
 
@@ -118,7 +124,7 @@ Rgb emitters_illuminance(PathContext& ctx, Vec3 p, Vec3 n, const NextEventWeight
 // What a glossy surface reflects toward v from every light by next-event estimation, each
 // sample weighted against the BRDF sample that continues the path (render/reference_weight.h).
 Rgb glossy_next_events(PathContext& ctx, const SurfaceHit& s, Vec3 v) {
-  const NextEventWeight weight{s.glossy, s.normal, v};
+  const NextEventWeight weight{s.glossy ? &*s.glossy : nullptr, s.normal, v};
   return direct_illuminance(ctx, s.position, s.normal, Sources::kAll, weight) +
          daylight_illuminance(ctx, s.position, s.normal, weight) +
          emitters_illuminance(ctx, s.position, s.normal, weight);
@@ -165,7 +171,7 @@ Rgb incident_luminance(PathContext& ctx, Vec3 origin, Vec3 dir, double brdf_pdf 
       if (pdf > 0) result += throughput * escaped(ctx, ray, pdf);
       break;
     }
-    if (s.glossy != nullptr) {
+    if (s.glossy) {
       // L = Σ next events (weighted) + f cos / p · L_in(l'), l' by BRDF sampling.
       const Vec3 v = -ray.direction;
       result += throughput * glossy_next_events(ctx, s, v);
@@ -305,7 +311,7 @@ ReferenceImages reference_render(const PinholeCamera& camera, const ReferenceSce
                         emitters_illuminance(ctx, hit.position, hit.normal) +
                         indirect_sample(ctx, hit.position, hit.normal);
           e_sum += e;
-          if (hit.glossy != nullptr) {
+          if (hit.glossy) {
             // Toward the eye: next events and one BRDF-sampled continuation.
             const Vec3 v = -ray.direction;
             l_sum += glossy_next_events(ctx, hit, v);

@@ -160,10 +160,11 @@ void Relighter::set_materials(const std::vector<Material>& materials) {
   }
   // The vertices' albedo under the edited materials; a vertex no triangle uses keeps its own.
   const std::span<const float> stored = transfer_.scene.vertex_albedo;
+  const std::span<const float> texture = transfer_.scene.vertex_texture;
   for (std::size_t v = 0; v < material_of.size(); ++v) {
     const Rgb a = material_of[v] == kNoMaterial
                       ? Rgb{stored[3 * v], stored[3 * v + 1], stored[3 * v + 2]}
-                      : bounce_albedo(materials.at(material_of[v]));
+                      : bounce_albedo(materials.at(material_of[v]), vertex_texture_at(texture, v));
     vertex_albedo_[3 * v] = static_cast<float>(a.r);
     vertex_albedo_[3 * v + 1] = static_cast<float>(a.g);
     vertex_albedo_[3 * v + 2] = static_cast<float>(a.b);

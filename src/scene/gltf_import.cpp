@@ -1,6 +1,10 @@
 // glTF 2.0 import. tinygltf parses JSON and buffers but leaves indices and byte ranges
 // unchecked, so every index and every accessor range is validated here before it is read:
-// a broken file gives InputError "FILE: reason", never an out-of-bounds read.
+// a broken file gives InputError "FILE: reason", never an out-of-bounds read. Images are
+// kept encoded as tinygltf hands them over (data URI, GLB buffer view or file beside the
+// .gltf) and decoded only when a material's base colour texture uses them (image/photo.h:
+// PNG and JPEG, glTF 2.0 §3.9.2's two formats); the texture then rides on the triangles
+// (scene/surface_texture.h).
 #include "scene/gltf_import.h"
 
 #include <array>
@@ -13,6 +17,7 @@
 #include <tiny_gltf.h>
 
 #include "common/input_error.h"
+#include "image/photo.h"
 #include "scene/mesh_import_bytes.h"
 
 namespace relight {
@@ -47,10 +52,14 @@ double determinant(const Affine& a) {
          m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
 }
 
+// The images' encoded bytes by image index, as tinygltf's loader callback hands them over.
+using EncodedImages = std::unordered_map<int, std::vector<std::uint8_t>>;
+
 class GltfReader {
  public:
-  GltfReader(const std::filesystem::path& file, const tinygltf::Model& model)
-      : file_(file), model_(model) {}
+  GltfReader(const std::filesystem::path& file, const tinygltf::Model& model,
+             const EncodedImages& images)
+      : file_(file), model_(model), images_(images) {}
 
   ImportedMesh read() {
     check_extensions();
@@ -274,6 +283,98 @@ class GltfReader {
     return indices;
   }
 
+  TextureWrap wrap_mode(int mode, const std::string& where) const {
+    switch (mode) {
+      case TINYGLTF_TEXTURE_WRAP_REPEAT:
+        return TextureWrap::kRepeat;
+      case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE:
+        return TextureWrap::kClampToEdge;
+      case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT:
+        return TextureWrap::kMirroredRepeat;
+      default:
+        fail(where + ": unknown wrap mode " + std::to_string(mode));
+    }
+  }
+
+  // The index into mesh_.textures.textures of glTF texture `index`, decoded on first use.
+  std::int32_t texture_slot(int index, const std::string& where) {
+    if (index < 0 || index >= static_cast<int>(model_.textures.size())) {
+      fail(where + ": texture " + std::to_string(index) + " does not exist");
+    }
+    if (const auto it = texture_slots_.find(index); it != texture_slots_.end()) return it->second;
+    const tinygltf::Texture& texture = model_.textures[static_cast<std::size_t>(index)];
+    const std::string what = "texture " + std::to_string(index);
+    if (texture.source < 0 || texture.source >= static_cast<int>(model_.images.size())) {
+      fail(what + ": image " + std::to_string(texture.source) + " does not exist");
+    }
+    TextureWrap wrap_u = TextureWrap::kRepeat, wrap_v = TextureWrap::kRepeat;
+    if (texture.sampler >= 0) {
+      if (texture.sampler >= static_cast<int>(model_.samplers.size())) {
+        fail(what + ": sampler " + std::to_string(texture.sampler) + " does not exist");
+      }
+      const tinygltf::Sampler& sampler = model_.samplers[static_cast<std::size_t>(texture.sampler)];
+      wrap_u = wrap_mode(sampler.wrapS, what);
+      wrap_v = wrap_mode(sampler.wrapT, what);
+    }
+    const tinygltf::Image& image = model_.images[static_cast<std::size_t>(texture.source)];
+    const std::string image_what =
+        "image " + std::to_string(texture.source) +
+        (image.uri.empty() || image.uri.rfind("data:", 0) == 0 ? std::string()
+                                                               : " (" + image.uri + ")");
+    const auto bytes = images_.find(texture.source);
+    if (bytes == images_.end() || bytes->second.empty()) {
+      fail(image_what + ": cannot be read (a base colour texture needs it)");
+    }
+    const Photo photo = decode_photo(bytes->second, file_.string() + ": " + image_what);
+    const auto slot = static_cast<std::int32_t>(mesh_.textures.textures.size());
+    mesh_.textures.textures.push_back(
+        std::make_shared<const SurfaceTexture>(make_surface_texture(photo, wrap_u, wrap_v)));
+    texture_slots_.emplace(index, slot);
+    return slot;
+  }
+
+  // The texture coordinates TEXCOORD_<set> of a primitive: float, or normalised unsigned byte
+  // or short (glTF 2.0 §3.7.2.1).
+  std::vector<TextureCoord> read_texture_coords(const tinygltf::Primitive& primitive, int set,
+                                                std::size_t vertex_count,
+                                                const std::string& what) const {
+    const std::string name = "TEXCOORD_" + std::to_string(set);
+    const auto found = primitive.attributes.find(name);
+    if (found == primitive.attributes.end()) {
+      fail(what + ": its material's base colour texture needs " + name + ", which it lacks");
+    }
+    const AccessorView v = view(found->second, what + " " + name);
+    const tinygltf::Accessor& accessor = model_.accessors[static_cast<std::size_t>(found->second)];
+    const std::string where = what + ": " + name;
+    if (accessor.type != TINYGLTF_TYPE_VEC2) fail(where + " must be VEC2");
+    if (v.count != vertex_count) fail(where + " has another count than POSITION");
+    std::vector<TextureCoord> uv(v.count);
+    for (std::size_t i = 0; i < v.count; ++i) {
+      const unsigned char* p = v.data + i * v.stride;
+      for (std::size_t c = 0; c < 2; ++c) {
+        double x = 0;
+        switch (v.component_type) {
+          case TINYGLTF_COMPONENT_TYPE_FLOAT:
+            x = load_scalar<float>(p + 4 * c, true);
+            break;
+          case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+            x = p[c] / 255.0;
+            break;
+          case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+            x = load_scalar<std::uint16_t>(p + 2 * c, true) / 65535.0;
+            break;
+          default:
+            fail(where + " must be float, unsigned byte or unsigned short");
+        }
+        if (!std::isfinite(x)) {
+          fail(where + " " + std::to_string(i) + " is not finite");
+        }
+        uv[i][c] = static_cast<float>(x);
+      }
+    }
+    return uv;
+  }
+
   std::uint32_t material_slot(int material, const std::string& what) {
     if (material >= static_cast<int>(model_.materials.size())) {
       fail(what + ": material " + std::to_string(material) + " does not exist");
@@ -307,6 +408,12 @@ class GltfReader {
           imported.roughness = unit(pbr.roughnessFactor, "roughnessFactor");
         }
         mesh_.materials.push_back(imported);
+        const tinygltf::TextureInfo& base_colour = pbr.baseColorTexture;
+        if (base_colour.index >= 0) {
+          material_texture_[it->second] = {
+              texture_slot(base_colour.index, "material " + std::to_string(material)),
+              base_colour.texCoord};
+        }
       }
     }
     return it->second;
@@ -363,24 +470,60 @@ class GltfReader {
       const auto offset = static_cast<std::uint32_t>(mesh_.positions.size());
       mesh_.positions.insert(mesh_.positions.end(), positions.begin(), positions.end());
       const std::uint32_t slot = material_slot(primitive.material, what);
+      const auto textured = material_texture_.find(slot);
+      std::vector<TextureCoord> uv, corners;
+      if (textured != material_texture_.end()) {
+        uv = read_texture_coords(primitive, textured->second.set, positions.size(), what);
+      }
       for (Triangle t : triangles) {
         if (mirrored) std::swap(t[1], t[2]);
         mesh_.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
         mesh_.triangle_material.push_back(slot);
+        if (!uv.empty()) corners.insert(corners.end(), {uv[t[0]], uv[t[1]], uv[t[2]]});
       }
+      add_textures(uv.empty() ? -1 : textured->second.slot, corners, triangles.size());
     }
   }
 
+  // Texture `slot` (−1: none) on the last `count` triangles, `corners` their corners' UVs.
+  void add_textures(std::int32_t slot, const std::vector<TextureCoord>& corners,
+                    std::size_t count) {
+    TriangleTextures& all = mesh_.textures;
+    if (slot < 0 && all.empty()) return;
+    const std::size_t before = mesh_.triangles.size() - count;
+    all.triangle_texture.resize(before, -1);  // the triangles before, when these are the first
+    all.corner_uv.resize(3 * before, TextureCoord{0, 0});
+    all.triangle_texture.insert(all.triangle_texture.end(), count, slot);
+    if (slot < 0) {
+      all.corner_uv.resize(3 * (before + count), TextureCoord{0, 0});
+    } else {
+      all.corner_uv.insert(all.corner_uv.end(), corners.begin(), corners.end());
+    }
+  }
+
+  struct MaterialTexture {
+    std::int32_t slot = -1;  // into mesh_.textures.textures
+    int set = 0;             // TEXCOORD_<set>
+  };
+
   const std::filesystem::path& file_;
   const tinygltf::Model& model_;
+  const EncodedImages& images_;
   std::vector<bool> visited_;
   std::unordered_map<int, std::uint32_t> slots_;
+  std::unordered_map<int, std::int32_t> texture_slots_;                  // glTF texture → slot
+  std::unordered_map<std::uint32_t, MaterialTexture> material_texture_;  // material slot →
   ImportedMesh mesh_;
 };
 
-// Textures are ignored, so images are neither decoded nor required to exist.
-bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int,
-                const unsigned char*, int, void*) {
+// Keeps an image's encoded bytes; decoding waits until a base colour texture needs it, so
+// that the images of other textures (normal maps, occlusion) are neither decoded nor required
+// to be readable.
+bool keep_image(tinygltf::Image*, const int index, std::string*, std::string*, int, int,
+                const unsigned char* bytes, int size, void* images) {
+  if (bytes != nullptr && size > 0) {
+    (*static_cast<EncodedImages*>(images))[index].assign(bytes, bytes + size);
+  }
   return true;
 }
 
@@ -406,7 +549,8 @@ ImportedMesh import_gltf(const std::filesystem::path& file) {
   const bool binary = starts_with_glb_magic(file);
   tinygltf::Model model;
   tinygltf::TinyGLTF loader;
-  loader.SetImageLoader(&skip_image, nullptr);
+  EncodedImages images;
+  loader.SetImageLoader(&keep_image, &images);
   std::string error, warning;
   bool ok = false;
   try {
@@ -416,7 +560,7 @@ ImportedMesh import_gltf(const std::filesystem::path& file) {
     fail_input(file.string(), std::string("cannot parse glTF: ") + e.what());
   }
   if (!ok) fail_input(file.string(), "cannot parse glTF: " + first_line(error));
-  return GltfReader(file, model).read();
+  return GltfReader(file, model, images).read();
 }
 
 }  // namespace relight

@@ -28,6 +28,7 @@ struct ImportedMesh {
   std::vector<Triangle> triangles;               // counter-clockwise seen from the front
   std::vector<std::uint32_t> triangle_material;  // one per triangle, into `materials`
   std::vector<ImportedMaterial> materials;       // only those some triangle uses
+  TriangleTextures textures;  // glTF base colour textures; empty for OBJ, PLY and untextured
 };
 
 // Albedo of the material given to triangles whose file names none.

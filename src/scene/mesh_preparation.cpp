@@ -13,6 +13,16 @@ namespace relight {
 namespace {
 
 void check_soup(const TriangleSoup& soup) {
+  if (!soup.textures.empty() && (soup.textures.triangle_texture.size() != soup.triangles.size() ||
+                                 soup.textures.corner_uv.size() != 3 * soup.triangles.size())) {
+    throw std::invalid_argument("prepare_mesh: textures for another number of triangles");
+  }
+  for (const std::int32_t k : soup.textures.triangle_texture) {
+    if (k >= static_cast<std::int32_t>(soup.textures.textures.size()) ||
+        (k >= 0 && !soup.textures.textures[static_cast<std::size_t>(k)])) {
+      throw std::invalid_argument("prepare_mesh: texture index out of range");
+    }
+  }
   if (soup.triangle_material.size() != soup.triangles.size()) {
     throw std::invalid_argument("prepare_mesh: " + std::to_string(soup.triangles.size()) +
                                 " triangles but " + std::to_string(soup.triangle_material.size()) +
@@ -43,9 +53,20 @@ PreparedMesh prepare_mesh(const TriangleSoup& soup, const PreparationSettings& s
     mesh.triangles.push_back({welded.remap[t[0]], welded.remap[t[1]], welded.remap[t[2]]});
   }
   mesh.triangle_material = soup.triangle_material;
+  mesh.triangle_source.resize(soup.triangles.size());
+  for (std::size_t t = 0; t < soup.triangles.size(); ++t) {
+    mesh.triangle_source[t] = static_cast<std::uint32_t>(t);
+  }
   drop_degenerate_triangles(mesh);
   subdivide_long_edges(mesh, settings.max_edge);
-  return split_and_shade(mesh, settings.crease_deg);
+  PreparedMesh prepared = split_and_shade(mesh, settings.crease_deg);
+  // split_and_shade keeps the triangles in order, so mesh.triangle_source still applies.
+  prepared.triangle_textures =
+      prepared_triangle_textures(soup.textures, soup.positions, soup.triangles, prepared.positions,
+                                 prepared.triangles, mesh.triangle_source);
+  prepared.vertex_texture =
+      sample_vertex_textures(prepared.triangle_textures, prepared.positions, prepared.triangles);
+  return prepared;
 }
 
 }  // namespace relight

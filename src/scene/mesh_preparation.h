@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "math/rgb.h"
 #include "math/vec3.h"
 #include "scene/triangle_soup.h"
 
@@ -28,6 +29,11 @@ struct PreparedMesh {
   std::vector<std::uint32_t> vertex_material;    // per vertex, into the soup's materials
   std::vector<Triangle> triangles;               // input winding kept
   std::vector<std::uint32_t> triangle_material;  // per triangle, equal to its vertices'
+  // The base colour textures (scene/surface_texture.h): per triangle, the soup triangle's with
+  // its corners' UVs; per vertex, their mean over its footprint, which multiplies its
+  // material's base colour. Both empty when the soup has no textures.
+  TriangleTextures triangle_textures;
+  std::vector<Rgb> vertex_texture;
 };
 
 // Welds, drops degenerate triangles, subdivides and computes crease-aware smooth normals.

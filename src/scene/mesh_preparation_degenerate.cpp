@@ -27,10 +27,12 @@ void drop_degenerate_triangles(IndexedMesh& mesh) {
     if (degenerate(mesh.positions, mesh.triangles[i])) continue;
     mesh.triangles[kept] = mesh.triangles[i];
     mesh.triangle_material[kept] = mesh.triangle_material[i];
+    mesh.triangle_source[kept] = mesh.triangle_source[i];
     ++kept;
   }
   mesh.triangles.resize(kept);
   mesh.triangle_material.resize(kept);
+  mesh.triangle_source.resize(kept);
 }
 
 }  // namespace relight

@@ -12,11 +12,13 @@
 
 namespace relight {
 
-// Indexed triangles with one material each: the state passed from step to step.
+// Indexed triangles with one material each, and the soup triangle each lies in: the state
+// passed from step to step.
 struct IndexedMesh {
   std::vector<Vec3> positions;
   std::vector<Triangle> triangles;
   std::vector<std::uint32_t> triangle_material;
+  std::vector<std::uint32_t> triangle_source;
 };
 
 // One representative per cluster of positions within `epsilon` (grid hashing; epsilon <= 0

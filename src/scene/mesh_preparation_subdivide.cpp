@@ -65,9 +65,10 @@ void subdivide_long_edges(IndexedMesh& mesh, double max_edge) {
   };
 
   std::vector<Triangle> out_triangles;
-  std::vector<std::uint32_t> out_material;
+  std::vector<std::uint32_t> out_material, out_source;
   out_triangles.reserve(mesh.triangles.size());
   out_material.reserve(mesh.triangles.size());
+  out_source.reserve(mesh.triangles.size());
   std::vector<Triangle> stack;
   for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
     const std::uint32_t material = mesh.triangle_material[i];
@@ -89,6 +90,7 @@ void subdivide_long_edges(IndexedMesh& mesh, double max_edge) {
       if (edge < 0) {
         out_triangles.push_back(t);
         out_material.push_back(material);
+        out_source.push_back(mesh.triangle_source[i]);
         if (out_triangles.size() > kMaxPreparedTriangles) {
           fail_input("mesh preparation", "max_edge " + std::to_string(max_edge) +
                                              " m would create more than " +
@@ -105,6 +107,7 @@ void subdivide_long_edges(IndexedMesh& mesh, double max_edge) {
   }
   mesh.triangles = std::move(out_triangles);
   mesh.triangle_material = std::move(out_material);
+  mesh.triangle_source = std::move(out_source);
 }
 
 }  // namespace relight

@@ -121,6 +121,7 @@ struct Loader {
       }
       soup.triangle_material.reserve(mesh.triangle_material.size());
       for (std::uint32_t m : mesh.triangle_material) soup.triangle_material.push_back(remap.at(m));
+      soup.textures = mesh.textures;  // a scene material given instead has no texture
     }
     return soup;
   }
@@ -531,7 +532,7 @@ DistributionSpec parse_distribution(const JsonNode& node, const fs::path& base_d
 }
 
 Scene scene_from_json(const nlohmann::json& document, const fs::path& file,
-                      const EmbeddedFiles* embedded) {
+                      const EmbeddedFiles* embedded, const std::vector<Material>* materials) {
   const JsonNode root(document, file.string(), "/");
   root.expect_keys({"description", "materials", "geometry", "luminaires", "sensors", "cameras",
                     "portals", "exterior", "emitters", "objects", "precompute",
@@ -541,7 +542,11 @@ Scene scene_from_json(const nlohmann::json& document, const fs::path& file,
   loader.base_dir = file.has_parent_path() ? file.parent_path() : fs::path(".");
   loader.embedded = embedded;
   if (const auto n = root.find("description")) n->string();
-  if (const auto n = root.find("materials")) loader.load_materials(*n);
+  if (materials != nullptr) {
+    for (const Material& m : *materials) loader.add_material(m);
+  } else if (const auto n = root.find("materials")) {
+    loader.load_materials(*n);
+  }
   if (const auto n = root.find("geometry")) loader.load_geometry(*n);
   if (const auto n = root.find("luminaires")) loader.load_luminaires(*n);
   if (const auto n = root.find("sensors")) loader.load_sensors(*n);

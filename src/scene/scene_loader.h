@@ -19,9 +19,13 @@ using EmbeddedFiles = std::map<std::string, std::shared_ptr<const std::string>>;
 
 Scene load_scene(const std::filesystem::path& file);
 // The same from an already parsed document; `file` names it in messages and gives the
-// folder for relative paths.
+// folder for relative paths. `materials`, when given, are the scene's materials in order as
+// a precompute loaded them, used instead of the document's: a .rlt keeps them because it
+// does not keep the geometry, whose mesh files added theirs ("FILE/NAME"), and the stored
+// triangles refer to them by index.
 Scene scene_from_json(const nlohmann::json& document, const std::filesystem::path& file,
-                      const EmbeddedFiles* embedded = nullptr);
+                      const EmbeddedFiles* embedded = nullptr,
+                      const std::vector<Material>* materials = nullptr);
 
 // Parses a distribution object D (shared with run-time lighting states).
 DistributionSpec parse_distribution(const JsonNode& node, const std::filesystem::path& base_dir,

@@ -3,6 +3,7 @@
 namespace relight {
 
 void TriangleSoup::append(const TriangleSoup& other) {
+  textures.append(other.textures, triangles.size(), other.triangles.size());
   const auto offset = static_cast<std::uint32_t>(positions.size());
   positions.insert(positions.end(), other.positions.begin(), other.positions.end());
   for (const Triangle& t : other.triangles) {

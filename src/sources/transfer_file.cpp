@@ -27,6 +27,7 @@ constexpr std::uint32_t kMetadata = rlt_fourcc("META");
 constexpr std::uint32_t kMeshPositions = rlt_fourcc("MPOS");
 constexpr std::uint32_t kMeshNormals = rlt_fourcc("MNRM");
 constexpr std::uint32_t kVertexAlbedo = rlt_fourcc("MALB");
+constexpr std::uint32_t kVertexTexture = rlt_fourcc("MTEX");
 constexpr std::uint32_t kTriangles = rlt_fourcc("MTRI");
 constexpr std::uint32_t kPortalTriangles = rlt_fourcc("MPRT");
 constexpr std::uint32_t kTriangleMaterials = rlt_fourcc("MMAT");
@@ -72,6 +73,36 @@ void add_sensor_receivers(const Scene& scene, RuntimeSceneView& view) {
   }
 }
 
+// The scene's materials in order (scene_from_json's `materials`).
+nlohmann::json materials_json(const std::vector<Material>& materials) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const Material& m : materials) {
+    out.push_back({{"name", m.name},
+                   {"albedo", {m.albedo.r, m.albedo.g, m.albedo.b}},
+                   {"portal", m.portal},
+                   {"glossy", m.glossy},
+                   {"metallic", m.metallic},
+                   {"roughness", m.roughness}});
+  }
+  return out;
+}
+
+std::vector<Material> materials_from_json(const nlohmann::json& array, const std::string& where) {
+  std::vector<Material> out;
+  try {
+    for (const nlohmann::json& j : array) {
+      const auto albedo = j.at("albedo").get<std::vector<double>>();
+      if (albedo.size() != 3) fail_input(where, "scene_materials: an albedo needs 3 numbers");
+      out.push_back({j.at("name").get<std::string>(), Rgb{albedo[0], albedo[1], albedo[2]},
+                     j.at("portal").get<bool>(), j.at("glossy").get<bool>(),
+                     j.at("metallic").get<double>(), j.at("roughness").get<double>()});
+    }
+  } catch (const nlohmann::json::exception& e) {
+    fail_input(where, std::string("scene_materials: ") + e.what());
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string scene_digest(const nlohmann::json& scene_document) {
@@ -111,6 +142,7 @@ void write_transfer_file(const fs::path& file, const Precomputed& p, const Scene
       {"scene_file", fs::absolute(scene_file).lexically_normal().string()},
       {"scene_digest", scene_digest(scene_document)},
       {"scene", scene},
+      {"scene_materials", materials_json(source.materials)},
       {"sh_order", p.sh_order},
       {"direct", p.direct_mode},
       {"bounces", p.bounces},
@@ -139,6 +171,12 @@ void write_transfer_file(const fs::path& file, const Precomputed& p, const Scene
   w.add_f32(kMeshPositions, "mesh positions", positions);
   w.add_f32(kMeshNormals, "mesh normals", normals);
   w.add_f32(kVertexAlbedo, "vertex albedo", albedo);
+  std::vector<float> texture;
+  for (const Rgb& t : p.mesh.vertex_texture) {
+    texture.insert(texture.end(),
+                   {static_cast<float>(t.r), static_cast<float>(t.g), static_cast<float>(t.b)});
+  }
+  if (!texture.empty()) w.add_f32(kVertexTexture, "vertex texture", texture);
   w.add_u32(kTriangles, "triangles", triangles);
   w.add_u32(kPortalTriangles, "portal triangles", p.triangle_portal);
   w.add_u32(kTriangleMaterials, "triangle materials", p.mesh.triangle_material);
@@ -189,6 +227,11 @@ TransferView in_memory_view(const Precomputed& p) {
   }
   s.vertex_count = p.receivers.vertex_count;
   s.vertex_material = p.mesh.vertex_material;
+  for (const Rgb& t : p.mesh.vertex_texture) {
+    s.vertex_texture.insert(
+        s.vertex_texture.end(),
+        {static_cast<float>(t.r), static_cast<float>(t.g), static_cast<float>(t.b)});
+  }
   s.receiver_positions = p.receivers.positions;
   s.receiver_normals = p.receivers.normals;
   s.mesh_positions = p.mesh.positions;
@@ -232,7 +275,12 @@ TransferFile open_transfer_file(const fs::path& file) {
     embedded[f.at("file").get<std::string>()] =
         std::make_shared<const std::string>(luminaire_photometry(t.file, j));
   }
-  t.scene = scene_from_json(m.at("scene"), scene_file, &embedded);
+  if (m.contains("scene_materials")) {
+    const std::vector<Material> materials = materials_from_json(m.at("scene_materials"), where);
+    t.scene = scene_from_json(m.at("scene"), scene_file, &embedded, &materials);
+  } else {  // files from before scene_materials: scenes without mesh files' own materials
+    t.scene = scene_from_json(m.at("scene"), scene_file, &embedded);
+  }
   t.vertex_count = m.at("vertices").get<std::size_t>();
   t.sensor_count = m.at("sensors").get<std::size_t>();
   const std::size_t receivers = t.vertex_count + t.sensor_count;
@@ -303,6 +351,11 @@ TransferFile open_transfer_file(const fs::path& file) {
   read_gather_sections(t.file, receivers, t.vertex_count, s, where);
   s.vertex_albedo.assign(t.vertex_albedo.begin(), t.vertex_albedo.end());
   s.vertex_count = t.vertex_count;
+  if (t.file.find_info(kVertexTexture)) {
+    const auto texture = t.file.view<float>(kVertexTexture);
+    if (texture.size() != 3 * t.vertex_count) fail_input(where, "vertex texture: wrong count");
+    s.vertex_texture.assign(texture.begin(), texture.end());
+  }
   if (!t.triangle_material.empty()) {
     // Every triangle's material is its vertices' (scene/mesh_preparation.h).
     s.vertex_material.assign(t.vertex_count, kNoMaterial);

@@ -18,6 +18,8 @@
 #include <nlohmann/json.hpp>
 
 #include "common/input_error.h"
+#include "image/image_png.h"
+#include "math/srgb.h"
 #include "scene/mesh_import.h"
 #include "support/mesh_import_error.h"
 
@@ -282,6 +284,68 @@ TEST_F(GltfImport, BrokenJsonMissingBufferAndBadReferencesAreInputErrors) {
 
   const fs::path truncated = write("cut.glb", "glTF\x02\0\0\0");
   EXPECT_THROW(import_mesh(truncated), InputError);
+}
+
+// issue 13: a base colour texture (a 2 × 1 PNG: red, then blue) on the quad, through
+// TEXCOORD_0 (accessor 2), as a file beside the .gltf and as a data URI: the triangles carry
+// the texture and their corners' UVs, the texture holds the decoded (linear) texels.
+TEST_F(GltfImport, BaseColourTextureRidesOnTheTrianglesWithTheirUvs) {
+  Image8 image;
+  image.width = 2;
+  image.height = 1;
+  image.rgb = {255, 0, 0, 0, 0, 128};
+  write_png(dir_.path() / "paint.png", image);
+  std::ifstream png(dir_.path() / "paint.png", std::ios::binary);
+  const std::vector<unsigned char> png_bytes{std::istreambuf_iterator<char>(png), {}};
+
+  std::vector<unsigned char> bytes = quad_buffer();
+  const float uv[8] = {0, 0, 1, 0, 1, 1, 0, 1};
+  bytes.resize(60 + sizeof uv);
+  std::memcpy(bytes.data() + 60, uv, sizeof uv);
+  json doc = quad_document(
+      {{"byteLength", bytes.size()},
+       {"uri", "data:application/octet-stream;base64," + base64(bytes)}},
+      {{{"mesh", 0}}},
+      {{{"attributes", {{"POSITION", 0}, {"TEXCOORD_0", 2}}}, {"indices", 1}, {"material", 0}}});
+  doc["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 60}, {"byteLength", sizeof uv}});
+  doc["accessors"].push_back(
+      {{"bufferView", 2}, {"componentType", 5126}, {"count", 4}, {"type", "VEC2"}});
+  doc["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", 0}};
+  doc["textures"] = {{{"source", 0}, {"sampler", 0}}};
+  doc["samplers"] = {{{"wrapS", 33071}, {"wrapT", 33648}}};
+  for (const std::string& uri :
+       {std::string("paint.png"), "data:image/png;base64," + base64(png_bytes)}) {
+    doc["images"] = {{{"uri", uri}}};
+    const ImportedMesh mesh = import_mesh(write("textured.gltf", doc.dump()));
+    ASSERT_EQ(mesh.textures.triangle_texture, (std::vector<std::int32_t>{0, 0}));
+    ASSERT_EQ(mesh.textures.corner_uv.size(), 6u);
+    EXPECT_EQ(mesh.textures.corner_uv[1], (TextureCoord{1, 0}));  // triangle 0 1 2
+    EXPECT_EQ(mesh.textures.corner_uv[5], (TextureCoord{0, 1}));  // triangle 0 2 3
+    const SurfaceTexture& texture = *mesh.textures.textures.at(0);
+    EXPECT_EQ(texture.wrap_u, TextureWrap::kClampToEdge);
+    EXPECT_EQ(texture.wrap_v, TextureWrap::kMirroredRepeat);
+    ASSERT_EQ(texture.levels.at(0).width, 2);
+    EXPECT_NEAR(texture.levels[0].rgb[0], 1.0, 1e-6);
+    EXPECT_NEAR(texture.levels[0].rgb[5], srgb_decode(128 / 255.0), 1e-6);
+    EXPECT_DOUBLE_EQ(mesh.materials.at(0).albedo.g, 0.4);  // the factor stays the material's
+  }
+
+  // Without TEXCOORD_0, with the image missing or not an image: clear errors.
+  doc["images"] = {{{"uri", "absent.png"}}};
+  const fs::path absent = write("absent.gltf", doc.dump());
+  EXPECT_NE(error_of(absent).find("image 0 (absent.png): cannot be read"), std::string::npos)
+      << error_of(absent);
+  dir_.write("garbage.png", "not a png at all");
+  doc["images"] = {{{"uri", "garbage.png"}}};
+  const fs::path garbage = write("garbage.gltf", doc.dump());
+  EXPECT_NE(error_of(garbage).find("image 0 (garbage.png): not a JPEG, PNG or TIFF"),
+            std::string::npos)
+      << error_of(garbage);
+  doc["images"] = {{{"uri", "paint.png"}}};
+  doc["meshes"][0]["primitives"][0]["attributes"].erase("TEXCOORD_0");
+  const fs::path no_uv = write("no_uv.gltf", doc.dump());
+  EXPECT_NE(error_of(no_uv).find("needs TEXCOORD_0, which it lacks"), std::string::npos)
+      << error_of(no_uv);
 }
 
 }  // namespace

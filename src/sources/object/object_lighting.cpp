@@ -66,7 +66,8 @@ void ObjectLighting::set_albedo(std::span<const float> room_albedo,
   std::copy(room_albedo.begin(), room_albedo.end(), albedo_.begin());
   for (ObjectMesh& mesh : meshes_) {
     for (std::size_t v = 0; v < mesh.vertex_material.size(); ++v) {
-      const Rgb a = bounce_albedo(materials[mesh.vertex_material[v]]);  // validated on read
+      const Rgb a = bounce_albedo(materials[mesh.vertex_material[v]],  // validated on read
+                                  vertex_texture_at(std::span<const float>(mesh.texture), v));
       mesh.albedo[3 * v] = static_cast<float>(a.r);
       mesh.albedo[3 * v + 1] = static_cast<float>(a.g);
       mesh.albedo[3 * v + 2] = static_cast<float>(a.b);

@@ -26,11 +26,17 @@ ObjectMesh prepare_object(const Scene& scene, const MovableObject& object) {
                receiver_ray_points(receivers, mesh),
                mesh.triangles,
                {},
-               mesh.vertex_material};
-  for (const std::uint32_t material : mesh.vertex_material) {
-    const Rgb a = bounce_albedo(scene.materials.at(material));
+               mesh.vertex_material,
+               {}};
+  for (std::size_t v = 0; v < mesh.vertex_material.size(); ++v) {
+    const Rgb a = bounce_albedo(scene.materials.at(mesh.vertex_material[v]),
+                                vertex_texture_at(mesh.vertex_texture, v));
     m.albedo.insert(m.albedo.end(),
                     {static_cast<float>(a.r), static_cast<float>(a.g), static_cast<float>(a.b)});
+  }
+  for (const Rgb& t : mesh.vertex_texture) {
+    m.texture.insert(m.texture.end(),
+                     {static_cast<float>(t.r), static_cast<float>(t.g), static_cast<float>(t.b)});
   }
   return m;
 }

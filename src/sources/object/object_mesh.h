@@ -29,6 +29,8 @@ struct ObjectMesh {
   std::vector<float> albedo;  // 3 per vertex: what it bounces (engine/material_reflectance.h)
   // Per vertex, its material (index into the scene's); empty for files from before OMAT.
   std::vector<std::uint32_t> vertex_material;
+  // 3 per vertex: its base colour texture's value (scene/surface_texture.h); empty: none.
+  std::vector<float> texture;
 };
 
 // `object` is one of scene.objects (its materials are the scene's).

@@ -1,5 +1,7 @@
 #include "sources/object/object_sections.h"
 
+#include <algorithm>
+
 #include "common/input_error.h"
 
 namespace relight {
@@ -14,6 +16,7 @@ constexpr std::uint32_t kObjectPivots = rlt_fourcc("OPIV");
 constexpr std::uint32_t kObjectAlbedo = rlt_fourcc("OALB");
 constexpr std::uint32_t kObjectTriangles = rlt_fourcc("OTRI");
 constexpr std::uint32_t kObjectMaterials = rlt_fourcc("OMAT");
+constexpr std::uint32_t kObjectTexture = rlt_fourcc("OTEX");
 
 void append(std::vector<float>& out, const std::vector<Vec3>& points) {
   for (const Vec3& p : points) {
@@ -31,7 +34,12 @@ Vec3 at(std::span<const float> v, std::size_t i) {
 void write_object_sections(RltWriter& w, std::span<const ObjectMesh> objects,
                            ObjectSectionData& d) {
   if (objects.empty()) return;
+  const bool textured = std::any_of(objects.begin(), objects.end(),
+                                    [](const ObjectMesh& o) { return !o.texture.empty(); });
   for (const ObjectMesh& o : objects) {
+    if (textured && o.texture.empty())
+      d.texture.insert(d.texture.end(), 3 * o.positions.size(), 1.0f);
+    d.texture.insert(d.texture.end(), o.texture.begin(), o.texture.end());
     d.counts.push_back(static_cast<std::uint32_t>(o.positions.size()));
     d.counts.push_back(static_cast<std::uint32_t>(o.triangles.size()));
     append(d.positions, o.positions);
@@ -52,6 +60,7 @@ void write_object_sections(RltWriter& w, std::span<const ObjectMesh> objects,
   if (d.materials.size() == d.albedo.size() / 3) {
     w.add_u32(kObjectMaterials, "object materials", d.materials);
   }
+  if (textured) w.add_f32(kObjectTexture, "object texture", d.texture);
 }
 
 std::vector<ObjectMesh> read_object_sections(const RltFile& file, const Scene& scene,
@@ -74,6 +83,8 @@ std::vector<ObjectMesh> read_object_sections(const RltFile& file, const Scene& s
   const auto materials = file.find_info(kObjectMaterials)
                              ? file.view<std::uint32_t>(kObjectMaterials)
                              : std::span<const std::uint32_t>{};
+  const auto texture =
+      file.find_info(kObjectTexture) ? file.view<float>(kObjectTexture) : std::span<const float>{};
   if (counts.size() != 2 * scene.objects.size() || pivots.size() != 3 * scene.objects.size()) {
     fail_input(where, "object sections disagree with the scene's objects");
   }
@@ -84,7 +95,8 @@ std::vector<ObjectMesh> read_object_sections(const RltFile& file, const Scene& s
   }
   if (positions.size() != 3 * vertices || normals.size() != 3 * vertices ||
       rays.size() != 3 * vertices || albedo.size() != 3 * vertices ||
-      triangles.size() != 3 * tris || (!materials.empty() && materials.size() != vertices)) {
+      triangles.size() != 3 * tris || (!materials.empty() && materials.size() != vertices) ||
+      (!texture.empty() && texture.size() != 3 * vertices)) {
     fail_input(where, "object sections have inconsistent sizes");
   }
   std::size_t v0 = 0, t0 = 0;
@@ -100,6 +112,10 @@ std::vector<ObjectMesh> read_object_sections(const RltFile& file, const Scene& s
     }
     o.albedo.assign(albedo.begin() + static_cast<std::ptrdiff_t>(3 * v0),
                     albedo.begin() + static_cast<std::ptrdiff_t>(3 * (v0 + nv)));
+    if (!texture.empty()) {
+      o.texture.assign(texture.begin() + static_cast<std::ptrdiff_t>(3 * v0),
+                       texture.begin() + static_cast<std::ptrdiff_t>(3 * (v0 + nv)));
+    }
     if (!materials.empty()) {
       for (std::size_t v = v0; v < v0 + nv; ++v) {
         if (materials[v] >= scene.materials.size()) {

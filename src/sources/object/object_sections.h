@@ -21,6 +21,7 @@ struct ObjectSectionData {
   std::vector<float> positions, normals, ray_points, pivots, albedo;
   std::vector<std::uint32_t> triangles;  // per object, indices local to it
   std::vector<std::uint32_t> materials;  // per vertex, into the scene's materials
+  std::vector<float> texture;            // 3 per vertex when some object has a texture
 };
 
 // Adds the sections of `objects` (none for a scene without objects) to `writer`, which keeps
