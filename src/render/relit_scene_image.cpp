@@ -209,15 +209,24 @@ ShadedImages render_relit_scene(RelitScene& scene, const Camera& camera, int wid
         }
         return l;
       }};
-  const auto glossy_radiance = [&](std::uint32_t triangle, Vec3 p, Vec3 n,
-                                   Vec3 v) -> std::optional<Rgb> {
+  const std::span<const float> texture = t.view.scene.vertex_texture;
+  const auto glossy_radiance = [&](std::uint32_t triangle, const std::array<double, 3>& bary,
+                                   Vec3 p, Vec3 n, Vec3 v) -> std::optional<Rgb> {
     if (glossy.empty() || triangle >= t.triangle_material.size()) return std::nullopt;
     const std::int32_t g = glossy.index.at(t.triangle_material[triangle]);
     if (g < 0) return std::nullopt;
+    // The base colour times the vertices' texture values (scene/surface_texture.h).
+    MetallicRoughness brdf = glossy.brdf[static_cast<std::size_t>(g)];
+    if (!texture.empty()) {
+      Rgb at;
+      for (std::size_t k = 0; k < 3; ++k) {
+        at += vertex_texture_at(texture, t.triangles[triangle][k]) * bary[k];
+      }
+      brdf.albedo = brdf.albedo * at;
+    }
     // A stream per hit point: images are deterministic whatever the threads do.
     const std::uint64_t seed = std::hash<double>{}(p.x * 7.0 + p.y * 131.0 + p.z * 1031.0);
-    return glossy_pixel_radiance(glossy_scene, glossy.brdf[static_cast<std::size_t>(g)], p, n, v,
-                                 kGlossySamples, seed);
+    return glossy_pixel_radiance(glossy_scene, brdf, p, n, v, kGlossySamples, seed);
   };
   return shade_vertices(
       pinhole, {visible, positions, triangles, albedo, indirect,

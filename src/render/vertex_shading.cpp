@@ -26,9 +26,9 @@ RaySample shade_ray(const VertexShadingInput& in, Vec3 origin, Vec3 dir) {
   const Vec3 a = in.positions[t[0]], b = in.positions[t[1]], c = in.positions[t[2]];
   const Vec3 face = cross(b - a, c - a);
   if (dot(face, dir) >= 0) return out;  // back faces absorb: black
-  const double bary[3] = {1 - hit.u - hit.v, hit.u, hit.v};
+  const std::array<double, 3> bary{1 - hit.u - hit.v, hit.u, hit.v};
   Rgb e, albedo;
-  for (int k = 0; k < 3; ++k) {
+  for (std::size_t k = 0; k < 3; ++k) {
     e += vertex_rgb(in.irradiance, t[k]) * bary[k];
     albedo += vertex_rgb(in.vertex_albedo, t[k]) * bary[k];
   }
@@ -38,7 +38,8 @@ RaySample shade_ray(const VertexShadingInput& in, Vec3 origin, Vec3 dir) {
   if (in.direct_at_hit) {
     const Vec3 p = a * bary[0] + b * bary[1] + c * bary[2], n = normalize(face);
     const std::optional<Rgb> glossy =
-        in.glossy_radiance ? in.glossy_radiance(hit.triangle, p, n, dir * -1.0) : std::nullopt;
+        in.glossy_radiance ? in.glossy_radiance(hit.triangle, bary, p, n, dir * -1.0)
+                           : std::nullopt;
     e += in.direct_at_hit(p, n);
     l = glossy ? *glossy : lambertian_radiance(albedo, e);
   } else {

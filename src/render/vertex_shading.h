@@ -5,6 +5,8 @@
 // Luminance of a vertex is albedo/π · E (diffuse); back faces show black.
 #pragma once
 
+#include <array>
+
 #include <functional>
 #include <optional>
 #include <span>
@@ -30,9 +32,11 @@ struct VertexShadingInput {
   // the portal's shell); its illuminance stays NaN.
   std::function<Rgb(Vec3 origin, Vec3 dir)> background;
   // With direct_at_hit, when set: the luminance a glossy surface sends toward the eye (issue
-  // 13; render/glossy_pixels.h) at a hit on `triangle` seen from direction v (unit, toward the
-  // eye) — the pixel's luminance instead of ρ/π E — or nothing for a Lambertian triangle.
-  std::function<std::optional<Rgb>(std::uint32_t triangle, Vec3 point, Vec3 normal, Vec3 v)>
+  // 13; render/glossy_pixels.h) at a hit on `triangle` (at barycentrics `bary` of its three
+  // vertices) seen from direction v (unit, toward the eye) — the pixel's luminance instead of
+  // ρ/π E — or nothing for a Lambertian triangle.
+  std::function<std::optional<Rgb>(std::uint32_t triangle, const std::array<double, 3>& bary,
+                                   Vec3 point, Vec3 normal, Vec3 v)>
       glossy_radiance;
 };
 

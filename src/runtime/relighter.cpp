@@ -101,8 +101,18 @@ void Relighter::make_glossy_bounce(std::span<const Material> materials,
     return;
   }
   std::vector<std::int32_t> glossy_of(material_of.size(), -1);
+  const std::span<const float> texture = transfer_.scene.vertex_texture;
   for (std::size_t v = 0; v < material_of.size(); ++v) {
-    if (material_of[v] != kNoMaterial) glossy_of[v] = glossy.index.at(material_of[v]);
+    if (material_of[v] == kNoMaterial) continue;
+    glossy_of[v] = glossy.index.at(material_of[v]);
+    // A textured glossy vertex reflects by its own BRDF: the base colour times its texture.
+    const Rgb t = vertex_texture_at(texture, v);
+    if (glossy_of[v] >= 0 && t != Rgb{1, 1, 1}) {
+      MetallicRoughness own = glossy.brdf[static_cast<std::size_t>(glossy_of[v])];
+      own.albedo = own.albedo * t;
+      glossy_of[v] = static_cast<std::int32_t>(glossy.brdf.size());
+      glossy.brdf.push_back(own);
+    }
   }
   // Made in place: the terms keep their pointer and relight once, with the new one (and
   // none, should making it fail).
