@@ -1,5 +1,5 @@
 // `relight bench SCENE.rlt [--frames N] [--sky | --emitters | --objects [--object NAME] |
-// --materials | --optimize TARGETS.json]`: times
+// --materials | --aim | --optimize TARGETS.json]`: times
 // the run-time weighted sum
 // and, in
 // the same run, a plain parallel streaming read of as many bytes, so the ratio
@@ -15,7 +15,9 @@
 // transfer_ms and bounce_ms), or with --materials a live material edit (the albedo of the
 // material on the most vertices changes 5 % a frame, a designer dragging a colour: the studio's
 // approximate frame, then its final one, engine/albedo_edit.h; approximate_ms, final_ms, and
-// first_final_ms for the first edit, solved from nothing); only the kind of source that changed
+// first_final_ms for the first edit, solved from nothing), or with --aim every luminaire turned
+// 1° about its C0 axis, back and forth (its exact direct light, its transfer rotated and, on
+// glossy surfaces, its first glossy bounce made again); only the kind of source that changed
 // is summed again (runtime/relighter.h). With --optimize TARGETS.json: `relight optimize` timed
 // against a relight of the whole scene (ratio_to_relight).
 #include <algorithm>
@@ -33,6 +35,7 @@
 #include "cli/commands.h"
 #include "common/input_error.h"
 #include "design/optimize.h"
+#include "math/mat3.h"
 #include "runtime/relit_scene.h"
 
 namespace relight {
@@ -47,6 +50,7 @@ struct BenchArgs {
   bool objects = false;
   std::string object;  // with objects: move only this one
   bool materials = false;
+  bool aim = false;
   std::string optimize;  // TARGETS.json: time `relight optimize` instead
 };
 
@@ -133,10 +137,10 @@ int run_bench_optimize(const BenchArgs& args) {
 
 int run_bench(const BenchArgs& args) {
   if (!args.optimize.empty()) {
-    if (args.sky || args.emitters || args.objects || args.materials) {
+    if (args.sky || args.emitters || args.objects || args.materials || args.aim) {
       fail_input(args.rlt,
                  "--optimize times inverse design alone: no --sky, --emitters, "
-                 "--objects or --materials with it");
+                 "--objects, --materials or --aim with it");
     }
     return run_bench_optimize(args);
   }
@@ -154,8 +158,9 @@ int run_bench(const BenchArgs& args) {
   if (args.objects && state.objects.empty()) {
     fail_input(args.rlt, "--objects needs a scene with movable objects");
   }
-  if (int(args.sky) + int(args.emitters) + int(args.objects) + int(args.materials) > 1) {
-    fail_input(args.rlt, "--sky, --emitters, --objects and --materials: one at a time");
+  if (int(args.sky) + int(args.emitters) + int(args.objects) + int(args.materials) + int(args.aim) >
+      1) {
+    fail_input(args.rlt, "--sky, --emitters, --objects, --materials and --aim: one at a time");
   }
   if (args.materials && relit.transfer().view.scene.vertex_material.empty()) {
     fail_input(args.rlt,
@@ -220,6 +225,13 @@ int run_bench(const BenchArgs& args) {
             start[k].translate + Vec3{0.3 * (std::cos(a) - 1), 0, 0.3 * std::sin(a)};
         state.objects[k].rotate_deg = start[k].rotate_deg + 2.0 * (i + 1);
       }
+    } else if (args.aim) {
+      // A designer turning every luminaire: 1° about its C0 axis a frame, back and forth
+      // (c0 stays perpendicular to the aim).
+      const double a = radians(i % 2 == 0 ? 1.0 : -1.0);
+      for (LuminaireState& l : state.luminaires) {
+        l.aim = normalize(mat3_rotation(normalize(l.c0), a) * l.aim);
+      }
     } else {
       for (LuminaireState& l : state.luminaires) l.dimmer = 0.5 + 0.5 * ((i % 2) == 0);
     }
@@ -270,7 +282,9 @@ int run_bench(const BenchArgs& args) {
       args.sky ? "sky"
                : (args.emitters
                       ? "emitters"
-                      : (args.objects ? "objects" : (args.materials ? "materials" : "luminaires")));
+                      : (args.objects
+                             ? "objects"
+                             : (args.materials ? "materials" : (args.aim ? "aim" : "luminaires"))));
   nlohmann::json line = {{"mode", mode},
                          {"receivers", relighter.receivers()},
                          {"luminaires", relit.scene().luminaires.size()},
@@ -334,6 +348,8 @@ void add_bench_command(CLI::App& app, Action& action) {
   cmd->add_option("--object", args->object, "with --objects: move only this object");
   cmd->add_flag("--materials", args->materials,
                 "edit the albedo of the most used material each frame (approximate and final)");
+  cmd->add_flag("--aim", args->aim,
+                "turn every luminaire 1 degree about its C0 axis each frame (direct, glossy)");
   cmd->add_option("--optimize", args->optimize,
                   "time relight optimize with these targets (TARGETS.json) against a relight");
   cmd->callback([args, &action] { action = [args] { return run_bench(*args); }; });

@@ -471,6 +471,19 @@ TEST_F(TransferCommands, BenchPrintsOneJsonLine) {
   EXPECT_EQ(run_relight("bench " + quoted(rlt_) + " --frames 0").exit_code, 2);
 }
 
+// --aim turns the luminaires (mode "aim"), and changes one kind of thing at a time.
+TEST_F(TransferCommands, BenchAimTimesALuminaireTurn) {
+  const auto r = run_relight("bench " + quoted(rlt_) + " --aim --frames 2");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j.at("mode"), "aim");
+  EXPECT_GT(j.at("median_ms").get<double>(), 0);
+  expect_input_error(run_relight("bench " + quoted(rlt_) + " --aim --materials --frames 1"),
+                     rlt_.string() +
+                         ": --sky, --emitters, --objects, --materials and --aim: one "
+                         "at a time");
+}
+
 TEST_F(TransferCommands, PrecomputeOntoUnwritablePathIsBadInput) {
   // Running as root, permissions do not stop a write: use paths no one can create.
   const auto missing = dir_->path() / "no-such-folder" / "out.rlt";
