@@ -27,9 +27,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "agreement.h"
 #include "image/image_exr.h"
 #include "image/image_png.h"
-#include "image_blocks.h"
 #include "math/srgb.h"
 #include "run_command.h"
 
@@ -163,12 +163,10 @@ class TexturedRoom : public ::testing::Test {
 
 std::unique_ptr<TempDir> TexturedRoom::dir_;
 
-// `probe` on `fast` against `relight reference` on NAME.json (32,768 samples per sensor):
-// mean and worst relative difference over the 32 sensors.
-struct Agreement {
-  double mean = 0, worst = 1;
-};
+using testing::Agreement;
 
+// `fast` (probe's 32 sensors) against `relight reference` on NAME.json (32,768 samples per
+// sensor).
 Agreement against_reference(const fs::path& dir, const std::string& name,
                             const std::vector<double>& fast) {
   const fs::path reference = dir / "reference.csv";
@@ -176,17 +174,8 @@ Agreement against_reference(const fs::path& dir, const std::string& name,
                                       "' --spp 32768 --seed 5 --sensors-out '" +
                                       reference.string() + "' --no-progress");
   EXPECT_EQ(r.exit_code, 0) << r.err;
-  const std::vector<double> truth = sensor_lux(reference);
   EXPECT_EQ(fast.size(), 32u);
-  if (truth.size() != fast.size() || fast.empty()) return {};
-  Agreement a{0, 0};
-  for (std::size_t i = 0; i < fast.size(); ++i) {
-    EXPECT_GT(truth[i], 0) << i;
-    const double e = std::abs(fast[i] - truth[i]) / truth[i];
-    a.mean += e / static_cast<double>(fast.size());
-    a.worst = std::max(a.worst, e);
-  }
-  return a;
+  return testing::relative_agreement(fast, sensor_lux(reference));
 }
 
 TEST_F(TexturedRoom, ProbeWithin3PercentMeanAnd8WorstOfTheReference) {

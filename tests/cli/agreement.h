@@ -1,14 +1,38 @@
-// Two images compared as the glossy acceptance asks (issue 13): the luminance of each
-// block × block square of pixels, relative to the second image's.
+// The fast path against `relight reference` as the accuracy tests measure it: sensor values
+// and images' block luminance, relative to the reference's.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
+
+#include <gtest/gtest.h>
 
 #include "image/image.h"
 
 namespace relight::testing {
 
+struct Agreement {
+  double mean = 0, worst = 1;  // relative differences; worst 1 when nothing was compared
+};
+
+// |fast − truth| / truth value by value; every truth must be positive, the sizes equal.
+inline Agreement relative_agreement(const std::vector<double>& fast,
+                                    const std::vector<double>& truth) {
+  EXPECT_EQ(fast.size(), truth.size());
+  if (truth.size() != fast.size() || fast.empty()) return {};
+  Agreement a{0, 0};
+  for (std::size_t i = 0; i < fast.size(); ++i) {
+    EXPECT_GT(truth[i], 0) << i;
+    const double e = std::abs(fast[i] - truth[i]) / truth[i];
+    a.mean += e / static_cast<double>(fast.size());
+    a.worst = std::max(a.worst, e);
+  }
+  return a;
+}
+
+// Two images compared as the glossy acceptance asks (issue 13): the luminance of each
+// block × block square of pixels, relative to the second image's.
 struct BlockAgreement {
   int blocks = 0;
   double mean = 0, worst = 0;  // relative differences of block luminance
