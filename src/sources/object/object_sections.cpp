@@ -139,9 +139,9 @@ std::vector<ObjectMesh> read_object_sections(const RltFile& file, const Scene& s
 }
 
 std::size_t object_section_bytes(const ObjectMesh& o) {
-  return o.positions.size() * (4 * 3 * sizeof(float) + sizeof(std::uint32_t)) +
-         o.triangles.size() * 3 * sizeof(std::uint32_t) + 2 * sizeof(std::uint32_t) +
-         3 * sizeof(float);
+  return o.positions.size() * (std::size_t{4 * 3} * sizeof(float) + sizeof(std::uint32_t)) +
+         o.texture.size() * sizeof(float) + o.triangles.size() * 3 * sizeof(std::uint32_t) +
+         2 * sizeof(std::uint32_t) + 3 * sizeof(float);
 }
 
 }  // namespace relight
