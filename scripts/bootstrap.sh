@@ -31,6 +31,8 @@ debian_packages=(
   blender-data
   # The studio server (relight serve): WebSocket and HTTP on standalone Asio.
   libwebsocketpp-dev libasio-dev
+  # Precompute over many processes (issue 19): `mpirun -n N relight precompute`.
+  libopenmpi-dev openmpi-bin
   # The studio's browser tests drive Debian's Chromium (never a downloaded browser).
   chromium
 )

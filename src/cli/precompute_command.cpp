@@ -1,14 +1,24 @@
 // `relight precompute SCENE.json -o SCENE.rlt`: the expensive step, once per static
-// scene; prints a summary of rays, rates, time per phase and bytes stored.
+// scene; prints a summary of rays, rates, time per phase and bytes stored. Under an MPI
+// launcher (`mpirun -n N relight precompute …`, issue 19) the ranks share the work and rank 0
+// writes the same file one process would (engine/ranks.h).
+#include <algorithm>
+#include <array>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
 
 #include <unistd.h>
 
+#include <tbb/global_control.h>
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.h"
+#include "cli/mpi_ranks.h"
 #include "cli/precompute_run.h"
 #include "common/input_error.h"
 #include "scene/scene_loader.h"
@@ -26,19 +36,72 @@ struct PrecomputeArgs {
   bool progress = true;
 };
 
-}  // namespace
-
-void run_precompute(const nlohmann::json& document, const std::filesystem::path& scene_file,
-                    const std::filesystem::path& output, const PrecomputeOptions& options) {
-  // Refuse an unwritable destination before the long computation, not after it.
+// Refuses an unwritable destination before the long computation, not after it.
+void check_output_folder(const std::filesystem::path& output) {
   const std::filesystem::path folder =
       output.has_parent_path() ? output.parent_path() : std::filesystem::path(".");
   if (!std::filesystem::is_directory(folder) || ::access(folder.c_str(), W_OK) != 0) {
     fail_input(output.string(),
                "cannot write: folder " + folder.string() + " does not exist or is not writable");
   }
-  const Scene scene = scene_from_json(document, scene_file);
+}
+
+// A phase as the summary prints it: its wall time (the slowest rank's), its rays over all
+// ranks, and over the ranks the least and most time in its own work and in exchanges (waiting
+// for the others included).
+struct PhaseLine {
+  std::string name;
+  double seconds = 0;
+  std::uint64_t rays = 0;
+  double work_min = 0, work_max = 0, exchange_min = 0, exchange_max = 0;
+};
+
+// Collective: every rank's phases (the same names in the same order on every rank).
+std::vector<PhaseLine> phase_lines(const std::vector<PhaseTiming>& phases, RankExchange* ranks) {
+  std::vector<PhaseLine> out;
+  for (const PhaseTiming& t : phases) {
+    const std::array<double, 2> mine{t.seconds, t.exchange_seconds};
+    const std::vector<std::array<double, 2>> all =
+        ranks != nullptr ? all_gather_values(*ranks, mine) : std::vector{mine};
+    PhaseLine line{t.name, 0, t.rays, 1e300, 0, 1e300, 0};
+    for (const auto& [seconds, exchange] : all) {
+      line.seconds = std::max(line.seconds, seconds);
+      line.work_min = std::min(line.work_min, seconds - exchange);
+      line.work_max = std::max(line.work_max, seconds - exchange);
+      line.exchange_min = std::min(line.exchange_min, exchange);
+      line.exchange_max = std::max(line.exchange_max, exchange);
+    }
+    out.push_back(line);
+  }
+  return out;
+}
+
+// Collective: over the ranks, the least and most share of their time spent in exchanges.
+std::array<double, 2> exchange_share(const std::vector<PhaseTiming>& phases, RankExchange& ranks) {
+  double seconds = 0, exchange = 0;
+  for (const PhaseTiming& t : phases) {
+    seconds += t.seconds;
+    exchange += t.exchange_seconds;
+  }
+  std::array<double, 2> share{1, 0};
+  for (const double s : all_gather_values(ranks, exchange / std::max(seconds, 1e-9))) {
+    share[0] = std::min(share[0], s);
+    share[1] = std::max(share[1], s);
+  }
+  return share;
+}
+
+// Precomputes, writes `output` (rank 0 of several) and prints the summary (rank 0).
+void precompute_and_write(const Scene& scene, const nlohmann::json& document,
+                          const std::filesystem::path& scene_file,
+                          const std::filesystem::path& output, const PrecomputeOptions& options) {
   const Precomputed p = precompute_transfer(scene, options);
+  const std::vector<PhaseLine> phases = phase_lines(p.phases, options.ranks);
+  const int rank = options.ranks != nullptr ? options.ranks->rank() : 0;
+  const int ranks = options.ranks != nullptr ? options.ranks->size() : 1;
+  const std::array<double, 2> exchange =
+      ranks > 1 ? exchange_share(p.phases, *options.ranks) : std::array<double, 2>{0, 0};
+  if (rank != 0) return;
   for (const std::string& w : p.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
   write_transfer_file(output, p, scene, document, scene_file);
 
@@ -47,15 +110,29 @@ void run_precompute(const nlohmann::json& document, const std::filesystem::path&
   std::printf("precompute %s: %zu vertices, %zu sensors, %zu luminaires, sh_order %d, direct %s\n",
               scene_file.string().c_str(), p.receivers.vertex_count, p.receivers.sensor_count,
               p.luminaires.size(), p.sh_order, p.direct_mode.c_str());
-  for (const PhaseTiming& t : p.phases) {
+  if (ranks > 1) {
+    std::printf(
+        "  %d ranks: each phase's time is its slowest rank's; [work: the ranks' least and "
+        "most time in the phase's own work, exchange: in exchanges, waiting included]\n",
+        ranks);
+  }
+  for (const PhaseLine& t : phases) {
     rays += t.rays;
     seconds += t.seconds;
+    std::printf("  %-18s %8.2f s", t.name.c_str(), t.seconds);
     if (t.rays > 0) {
-      std::printf("  %-18s %8.2f s  %10.3g rays  %6.2f Mrays/s\n", t.name.c_str(), t.seconds,
-                  double(t.rays), t.rays * 1e-6 / std::max(t.seconds, 1e-9));
-    } else {
-      std::printf("  %-18s %8.2f s\n", t.name.c_str(), t.seconds);
+      std::printf("  %10.3g rays  %6.2f Mrays/s", double(t.rays),
+                  t.rays * 1e-6 / std::max(t.seconds, 1e-9));
     }
+    if (ranks > 1) {
+      std::printf("  [work %.2f–%.2f s, exchange %.2f–%.2f s]", t.work_min, t.work_max,
+                  t.exchange_min, t.exchange_max);
+    }
+    std::printf("\n");
+  }
+  if (ranks > 1) {
+    std::printf("  exchanges between ranks: %.1f–%.1f %% of a rank's time\n", 100 * exchange[0],
+                100 * exchange[1]);
   }
   std::printf("  bounces: %d (tolerance %g)\n", p.bounces, scene.precompute.tolerance);
   for (const PortalTransfer& t : p.portals) {
@@ -85,6 +162,63 @@ void run_precompute(const nlohmann::json& document, const std::filesystem::path&
               std::filesystem::file_size(output) / 1e6);
 }
 
+}  // namespace
+
+void run_precompute(const nlohmann::json& document, const std::filesystem::path& scene_file,
+                    const std::filesystem::path& output, const PrecomputeOptions& options) {
+  check_output_folder(output);
+  precompute_and_write(scene_from_json(document, scene_file), document, scene_file, output,
+                       options);
+}
+
+namespace {
+
+// `mpirun -n N relight precompute` (issue 19). What can fail on some ranks and not others
+// before the ranks exchange anything (the scene read, the output folder checked on rank 0, which
+// writes) is agreed first: on a failure rank 0 reports the first failing rank's error once and
+// every rank exits 2. A failure after that (out of memory, a rank's internal error) ends every
+// rank through MPI_Abort, since the others may be waiting in an exchange; only rank 0 writes, so
+// no partial file is left at the output path.
+int run_precompute_on_ranks(const PrecomputeArgs& args, PrecomputeOptions options) {
+  MpiRanks mpi;
+  // The ranks on one machine share its cores (RELIGHT_THREADS, when set, caps it further).
+  const tbb::global_control threads(
+      tbb::global_control::max_allowed_parallelism,
+      std::max<std::size_t>(
+          1, std::thread::hardware_concurrency() / static_cast<unsigned>(mpi.ranks_here())));
+  options.ranks = &mpi;
+  options.progress = options.progress && mpi.rank() == 0;
+  std::string failure;
+  nlohmann::json document;
+  std::optional<Scene> scene;
+  try {
+    if (mpi.rank() == 0) check_output_folder(args.output);
+    document = read_json_file(args.scene);
+    scene.emplace(scene_from_json(document, args.scene));
+  } catch (const InputError& e) {
+    failure = e.what();
+  }
+  std::vector<std::uint8_t> mine(failure.begin(), failure.end());
+  for (const std::vector<std::uint8_t>& f : mpi.all_gather(mine)) {
+    if (f.empty()) continue;
+    if (mpi.rank() == 0)
+      std::fprintf(stderr, "error: %s\n", std::string(f.begin(), f.end()).c_str());
+    return 2;
+  }
+  try {
+    precompute_and_write(*scene, document, args.scene, args.output, options);
+  } catch (const std::exception& e) {
+    const bool input = dynamic_cast<const InputError*>(&e) != nullptr;
+    std::fprintf(stderr, "error: rank %d of %d: %s%s\n", mpi.rank(), mpi.size(),
+                 input ? "" : "internal: ", e.what());
+    std::fflush(stderr);
+    mpi.abort(input ? 2 : 1);
+  }
+  return 0;
+}
+
+}  // namespace
+
 void add_precompute_command(CLI::App& app, Action& action) {
   auto args = std::make_shared<PrecomputeArgs>();
   CLI::App* cmd = app.add_subcommand("precompute", "Precompute radiance transfer into a .rlt file");
@@ -97,6 +231,7 @@ void add_precompute_command(CLI::App& app, Action& action) {
       PrecomputeOptions options;
       options.seed = args->seed;
       options.progress = args->progress;
+      if (launched_by_mpi()) return run_precompute_on_ranks(*args, options);
       run_precompute(read_json_file(args->scene), args->scene, args->output, options);
       return 0;
     };

@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -92,27 +94,44 @@ void gather_columns(
 // gathered = G · reflected for every receiver row, where reflected = diag(ρ) · E(n) on
 // vertex rows. Since E(n+1) = E_d + gathered on vertex rows, the change of E is the change
 // of `gathered`, measured here before each row is overwritten.
+// With `ranks`, only this rank's blocks of rows (engine/ranks.h).
 ColumnChange gather_bounce(const Gather& g, const RowMatrix& reflected, const RowMatrix& direct,
-                           RowMatrix& gathered) {
+                           RowMatrix& gathered, const RankShares* ranks) {
   const Eigen::Index columns = reflected.cols(), vertices = direct.rows();
   const ColumnChange zero{std::vector<double>(columns, 0.0), std::vector<double>(columns, 0.0)};
+  const auto gather_rows = [&](Eigen::Index begin, Eigen::Index end, ColumnChange& change) {
+    Eigen::RowVectorXf sum(columns);
+    for (Eigen::Index i = begin; i != end; ++i) {
+      const Eigen::Index first = g.outerIndexPtr()[i], last = g.outerIndexPtr()[i + 1];
+      gather_columns(g.valuePtr() + first, g.innerIndexPtr() + first, last - first,
+                     reflected.data(), columns, sum.data());
+      if (i < vertices) {
+        for (Eigen::Index k = 0; k < columns; ++k) {
+          const double d = double{sum[k]} - gathered(i, k);
+          const double e = double{direct(i, k)} + sum[k];
+          change.difference[k] += d * d;
+          change.norm[k] += e * e;
+        }
+      }
+      gathered.row(i) = sum;
+    }
+  };
+  if (ranks == nullptr) {
+    return tbb::parallel_deterministic_reduce(
+        tbb::blocked_range<Eigen::Index>(0, g.rows(), kRowGrain), zero,
+        [&](const tbb::blocked_range<Eigen::Index>& rows, ColumnChange change) {
+          gather_rows(rows.begin(), rows.end(), change);
+          return change;
+        },
+        add);
+  }
+  const std::vector<std::size_t> blocks = ranks->my_blocks();
   return tbb::parallel_deterministic_reduce(
-      tbb::blocked_range<Eigen::Index>(0, g.rows(), kRowGrain), zero,
-      [&](const tbb::blocked_range<Eigen::Index>& rows, ColumnChange change) {
-        Eigen::RowVectorXf sum(columns);
-        for (Eigen::Index i = rows.begin(); i != rows.end(); ++i) {
-          const Eigen::Index begin = g.outerIndexPtr()[i], end = g.outerIndexPtr()[i + 1];
-          gather_columns(g.valuePtr() + begin, g.innerIndexPtr() + begin, end - begin,
-                         reflected.data(), columns, sum.data());
-          if (i < vertices) {
-            for (Eigen::Index k = 0; k < columns; ++k) {
-              const double d = double{sum[k]} - gathered(i, k);
-              const double e = double{direct(i, k)} + sum[k];
-              change.difference[k] += d * d;
-              change.norm[k] += e * e;
-            }
-          }
-          gathered.row(i) = sum;
+      tbb::blocked_range<std::size_t>(0, blocks.size(), 1), zero,
+      [&](const tbb::blocked_range<std::size_t>& range, ColumnChange change) {
+        for (std::size_t b = range.begin(); b != range.end(); ++b) {
+          gather_rows(static_cast<Eigen::Index>(ranks->first(blocks[b])),
+                      static_cast<Eigen::Index>(ranks->last(blocks[b])), change);
         }
         return change;
       },
@@ -156,9 +175,34 @@ struct ChannelSolution {
   int bounces = 0;
 };
 
+// The ranks' shares of `gathered`'s rows, and of the change, summed in rank order.
+void share_bounce(const RankShares& ranks, RowMatrix& gathered, ColumnChange& change) {
+  share_rows(ranks, static_cast<std::size_t>(gathered.cols()),
+             std::span<float>(gathered.data(), static_cast<std::size_t>(gathered.size())));
+  std::vector<double> mine = change.difference;
+  mine.insert(mine.end(), change.norm.begin(), change.norm.end());
+  const auto* bytes = reinterpret_cast<const std::uint8_t*>(mine.data());
+  const std::vector<std::vector<std::uint8_t>> all =
+      ranks.exchange->all_gather({bytes, mine.size() * sizeof(double)});
+  const std::size_t columns = change.norm.size();
+  std::fill(change.difference.begin(), change.difference.end(), 0.0);
+  std::fill(change.norm.begin(), change.norm.end(), 0.0);
+  for (const std::vector<std::uint8_t>& theirs : all) {
+    if (theirs.size() != mine.size() * sizeof(double)) {
+      throw std::runtime_error("bounce solver: a rank's change of another size");
+    }
+    std::vector<double> v(mine.size());
+    std::memcpy(v.data(), theirs.data(), theirs.size());
+    for (std::size_t k = 0; k < columns; ++k) {
+      change.difference[k] += v[k];
+      change.norm[k] += v[columns + k];
+    }
+  }
+}
+
 ChannelSolution solve_channel(const Gather& g, const Eigen::VectorXf& albedo,
                               const RowMatrix& direct, const BounceSettings& settings,
-                              Progress& bar) {
+                              Progress& bar, const RankShares* ranks) {
   const Eigen::Index receivers = g.rows(), columns = direct.cols();
   ChannelSolution solution;
   if (settings.max_bounces <= 0 || columns == 0 || albedo.isZero(0)) {
@@ -168,8 +212,16 @@ ChannelSolution solve_channel(const Gather& g, const Eigen::VectorXf& albedo,
   }
   RowMatrix reflected = albedo.asDiagonal() * direct;
   RowMatrix gathered = RowMatrix::Zero(receivers, columns);
+  // Several ranks: each gathers its blocks of rows (engine/ranks.h), then they exchange them.
+  const std::optional<RankShares> blocks =
+      ranks != nullptr && !ranks->alone()
+          ? std::optional(dealt_blocks(*ranks->exchange, static_cast<std::size_t>(receivers),
+                                       static_cast<std::size_t>(kRowGrain)))
+          : std::nullopt;
   while (solution.bounces < settings.max_bounces) {
-    const ColumnChange change = gather_bounce(g, reflected, direct, gathered);
+    ColumnChange change =
+        gather_bounce(g, reflected, direct, gathered, blocks ? &*blocks : nullptr);
+    if (blocks) share_bounce(*blocks, gathered, change);
     ++solution.bounces;
     bar.advance();
     if (max_relative_change(change) < settings.tolerance) break;
@@ -310,7 +362,7 @@ int solve_bounces_rgb(const RgbGather& op, std::span<const float> direct, std::s
 
 BounceResult solve_bounces(const GatherOperator& gather, const Receivers& receivers,
                            const Eigen::MatrixXf& direct, const BounceSettings& settings,
-                           bool progress) {
+                           bool progress, const RankShares* ranks) {
   const auto start = std::chrono::steady_clock::now();
   check_sizes(gather, receivers, direct);
   const RowMatrix direct_vertices =
@@ -333,7 +385,7 @@ BounceResult solve_bounces(const GatherOperator& gather, const Receivers& receiv
       continue;
     }
     ChannelSolution solution =
-        solve_channel(gather.matrix, albedo[c], direct_vertices, settings, bar);
+        solve_channel(gather.matrix, albedo[c], direct_vertices, settings, bar, ranks);
     result.indirect[c] = std::move(solution.indirect);
     result.bounces = std::max(result.bounces, solution.bounces);
   }

@@ -22,6 +22,7 @@
 #include <Eigen/Core>
 
 #include "engine/gather_operator.h"
+#include "engine/ranks.h"
 #include "engine/receivers.h"
 
 namespace relight {
@@ -40,10 +41,13 @@ struct BounceResult {
 // `direct` is receivers × K (sensor rows are accepted and not used: sensors do not
 // reflect). The albedo is receivers.albedo of the vertex rows. Channels whose albedo
 // equals an earlier channel's are copied, not solved again. Throws std::invalid_argument
-// when the sizes of gather, receivers and direct disagree.
+// when the sizes of gather, receivers and direct disagree. With `ranks` (engine/ranks.h,
+// issue 19), each rank computes its share's rows of every bounce and the ranks exchange them
+// (collective), so every rank returns the whole result; the bounces' values are those of one
+// process, and the convergence norms are summed over ranks in rank order.
 BounceResult solve_bounces(const GatherOperator& gather, const Receivers& receivers,
                            const Eigen::MatrixXf& direct, const BounceSettings& settings,
-                           bool progress);
+                           bool progress, const RankShares* ranks = nullptr);
 
 // A warm start stops once a bounce changes the light by less than this (or the settings'
 // tolerance, if larger): the error left is then below kWarmBounceTolerance / (1 − ρ) of the

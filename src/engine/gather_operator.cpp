@@ -116,11 +116,33 @@ void trace_row(const PreparedMesh& mesh, const TracedScene& traced, Vec3 origin,
   out.row_sizes.push_back(static_cast<std::uint32_t>(scratch.touched.size()));
 }
 
+// Every rank's chunks from theirs (engine/ranks.h: a chunk is one of the ranks' blocks).
+void share_chunks(const RankShares& ranks, std::vector<ChunkRows>& chunks) {
+  std::vector<std::uint8_t> bytes;
+  for (const std::size_t c : ranks.my_blocks()) {
+    put_values<std::uint32_t>(bytes, chunks[c].row_sizes);
+    put_values<std::uint32_t>(bytes, chunks[c].columns);
+    put_values<float>(bytes, chunks[c].values);
+  }
+  const std::vector<std::vector<std::uint8_t>> all = ranks.exchange->all_gather(bytes);
+  for (int k = 0; k < ranks.size(); ++k) {
+    if (k == ranks.rank()) continue;
+    const std::vector<std::uint8_t>& theirs = all[static_cast<std::size_t>(k)];
+    std::size_t at = 0;
+    for (const std::size_t c : ranks.blocks_of(k)) {
+      chunks[c].row_sizes = take_values<std::uint32_t>(theirs, at);
+      chunks[c].columns = take_values<std::uint32_t>(theirs, at);
+      chunks[c].values = take_values<float>(theirs, at);
+    }
+  }
+}
+
 }  // namespace
 
 GatherOperator build_gather_operator(const Receivers& receivers, const PreparedMesh& mesh,
                                      const TracedScene& traced, int rays_per_vertex,
-                                     int rays_per_sensor, std::uint64_t seed, bool progress) {
+                                     int rays_per_sensor, std::uint64_t seed, bool progress,
+                                     const RankShares* ranks) {
   if (rays_per_vertex < 1 || rays_per_sensor < 1) {
     throw std::invalid_argument("gather operator: rays per receiver must be at least 1");
   }
@@ -132,6 +154,10 @@ GatherOperator build_gather_operator(const Receivers& receivers, const PreparedM
   const std::size_t rows = receivers.size();
   const std::size_t chunk_count = (rows + kChunkRows - 1) / kChunkRows;
   std::vector<ChunkRows> chunks(chunk_count);
+  const RankShares own = ranks != nullptr ? *ranks : single_process_shares(rows, kChunkRows);
+  if (own.receivers != rows || own.block != kChunkRows) {
+    throw std::invalid_argument("gather operator: the ranks' blocks are not its chunks of rows");
+  }
   const std::vector<Vec3> points = receiver_ray_points(receivers, mesh);
   std::vector<Vec3> origins(points.size());
   for (std::size_t r = 0; r < points.size(); ++r) {
@@ -139,11 +165,13 @@ GatherOperator build_gather_operator(const Receivers& receivers, const PreparedM
   }
   const std::vector<Vec3> vertex_pattern = cosine_pattern(rays_per_vertex, seed);
   const std::vector<Vec3> sensor_pattern = cosine_pattern(rays_per_sensor, seed);
-  Progress bar("gather operator", rows, progress);
+  const std::vector<std::size_t> my_chunks = own.my_blocks();
+  Progress bar("gather operator", own.my_receivers(), progress);
   tbb::enumerable_thread_specific<RowScratch> scratches(receivers.vertex_count);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunk_count), [&](const auto& range) {
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, my_chunks.size()), [&](const auto& range) {
     RowScratch& scratch = scratches.local();
-    for (std::size_t c = range.begin(); c != range.end(); ++c) {
+    for (std::size_t i = range.begin(); i != range.end(); ++i) {
+      const std::size_t c = my_chunks[i];
       const std::size_t first = c * kChunkRows, last = std::min(rows, first + kChunkRows);
       ChunkRows& out = chunks[c];
       out.row_sizes.reserve(last - first);
@@ -156,6 +184,7 @@ GatherOperator build_gather_operator(const Receivers& receivers, const PreparedM
     }
   });
   bar.finish();
+  if (!own.alone()) share_chunks(own, chunks);
 
   // Assemble: row offsets by a prefix sum, then every chunk copies into its own span.
   using Index = Eigen::SparseMatrix<float, Eigen::RowMajor>::StorageIndex;

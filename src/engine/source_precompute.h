@@ -13,6 +13,7 @@
 #include "engine/bounce_solver.h"
 #include "engine/column_registry.h"
 #include "engine/gather_operator.h"
+#include "engine/ranks.h"
 #include "engine/receivers.h"
 #include "scene/mesh_preparation.h"
 #include "trace/traced_scene.h"
@@ -23,16 +24,21 @@ struct PhaseTiming {
   std::string name;
   double seconds = 0;
   std::uint64_t rays = 0;
+  // Of `seconds`, in exchanges with other ranks, waiting for them included (engine/ranks.h).
+  double exchange_seconds = 0;
 };
 
 // What every source's direct transfer sees: the receivers, where their rays start, the
-// prepared mesh and its Embree scenes.
+// prepared mesh and its Embree scenes, and the ranks of the precompute (engine/ranks.h): a
+// source traces its per-receiver work for its own share and has the ranks exchange the rest,
+// so that every rank leaves compute_direct with every receiver's data.
 struct SourceContext {
   const Receivers& receivers;
   const std::vector<Vec3>& ray_points;  // engine/receivers.h receiver_ray_points
   const PreparedMesh& mesh;
   const TracedScene& traced;
   bool progress = true;
+  const RankShares* ranks = nullptr;  // nullptr: this process alone
 };
 
 class SourcePrecompute {

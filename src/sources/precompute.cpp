@@ -4,6 +4,7 @@
 #include <chrono>
 
 #include "engine/gather_operator.h"
+#include "engine/transfer_blocks.h"
 #include "sources/object/object_mesh.h"
 #include "trace/traced_scene.h"
 
@@ -45,12 +46,18 @@ Precomputed precompute_transfer(const Scene& scene, const PrecomputeOptions& opt
   out.receivers = make_receivers(scene, out.mesh);
   out.triangle_portal = triangle_portals(scene, out.mesh);
   const TracedScene traced = build_traced_scene(out.mesh, scene.materials);
+  // The ranks' blocks of receivers (engine/ranks.h), the transfer's blocks.
+  const RankShares ranks = options.ranks != nullptr
+                               ? dealt_blocks(*options.ranks, out.receivers.size(), kBlock)
+                               : single_process_shares(out.receivers.size(), kBlock);
   out.phases.push_back({"prepare", seconds_since(start), 0});
 
-  GatherOperator gather =
-      build_gather_operator(out.receivers, out.mesh, traced, scene.precompute.gather_rays,
-                            scene.precompute.sensor_gather_rays, options.seed, options.progress);
-  out.phases.push_back({"gather operator", gather.seconds, gather.rays});
+  const double exchanged = ranks.exchange_seconds();
+  GatherOperator gather = build_gather_operator(
+      out.receivers, out.mesh, traced, scene.precompute.gather_rays,
+      scene.precompute.sensor_gather_rays, options.seed, options.progress, &ranks);
+  out.phases.push_back(
+      {"gather operator", gather.seconds, gather.rays, ranks.exchange_seconds() - exchanged});
 
   // The source kinds, in the order their columns are registered and their direct phases run.
   LuminairePrecompute luminaires(scene, options.opening_samples);
@@ -59,7 +66,8 @@ Precomputed precompute_transfer(const Scene& scene, const PrecomputeOptions& opt
   const std::array<SourcePrecompute*, 3> sources{&luminaires, &portals, &nearfield};
 
   const std::vector<Vec3> ray_points = receiver_ray_points(out.receivers, out.mesh);
-  const SourceContext context{out.receivers, ray_points, out.mesh, traced, options.progress};
+  const SourceContext context{out.receivers, ray_points,       out.mesh,
+                              traced,        options.progress, &ranks};
   BounceSettings bounce;
   bounce.tolerance = scene.precompute.tolerance;
   bounce.max_bounces = scene.precompute.max_bounces;

@@ -11,6 +11,7 @@
 
 #include <Eigen/SparseCore>
 
+#include "engine/ranks.h"
 #include "engine/receivers.h"
 #include "engine/source_precompute.h"
 #include "scene/mesh_preparation.h"
@@ -26,6 +27,10 @@ struct PrecomputeOptions {
   bool progress = true;
   std::uint64_t seed = 1;
   int opening_samples = 16;  // points on a luminous opening for fractional visibility
+  // The ranks of an MPI run (engine/ranks.h), each calling precompute_transfer with the same
+  // scene and options: each traces its share of the receivers, and every rank returns the same
+  // Precomputed (its phases' times are its own). nullptr: this process alone.
+  RankExchange* ranks = nullptr;
 };
 
 inline constexpr std::uint32_t kGlassOutsidePortals = 0xFFFFFFFFu;

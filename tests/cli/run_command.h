@@ -20,19 +20,23 @@ struct CommandResult {
   std::string out, err;
 };
 
-// `shell` runs before the command in the same shell (a ulimit, say).
-inline CommandResult run_relight(const std::string& arguments, const std::string& shell = "") {
+// Runs a shell command line with stdin empty; captures exit code, stdout and stderr.
+inline CommandResult run_shell(const std::string& command_line) {
   TempDir capture;
   const auto out = capture.path() / "stdout", err = capture.path() / "stderr";
-  const std::string command = (shell.empty() ? "" : shell + " && ") + "'" + RELIGHT_BINARY + "' " +
-                              arguments + " >'" + out.string() + "' 2>'" + err.string() +
-                              "' </dev/null";
+  const std::string command =
+      command_line + " >'" + out.string() + "' 2>'" + err.string() + "' </dev/null";
   const int status = std::system(command.c_str());
   CommandResult r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   r.out = read_text(out);
   r.err = read_text(err);
   return r;
+}
+
+// `shell` runs before the command in the same shell (a ulimit, say).
+inline CommandResult run_relight(const std::string& arguments, const std::string& shell = "") {
+  return run_shell((shell.empty() ? "" : shell + " && ") + "'" + RELIGHT_BINARY + "' " + arguments);
 }
 
 // Writes `scene_json` as NAME.json in `dir` and precomputes it to NAME.rlt (its path).

@@ -1,5 +1,7 @@
 #include "sources/luminaire/luminaire_direct.h"
 
+#include "engine/transfer_blocks.h"
+
 #include <atomic>
 #include <cmath>
 
@@ -100,30 +102,39 @@ Rgb luminaire_direct_irradiance(const Occluders& occluders, std::span<const Lumi
 DirectGeometry compute_direct_geometry(const Receivers& receivers,
                                        const std::vector<Vec3>& ray_points,
                                        const TracedScene& traced, Vec3 luminaire_position,
-                                       const std::vector<Vec3>& opening_offsets, bool progress) {
+                                       const std::vector<Vec3>& opening_offsets, bool progress,
+                                       const RankShares* ranks) {
   const std::size_t n = receivers.size();
+  const RankShares own = ranks != nullptr ? *ranks : single_process_shares(n, kBlock);
+  const std::vector<std::size_t> blocks = own.my_blocks();
   DirectGeometry g;
   g.dir_x.resize(n);
   g.dir_y.resize(n);
   g.dir_z.resize(n);
   g.factor.resize(n);
   std::atomic<std::uint64_t> rays{0};
-  Progress bar("direct visibility", n, progress);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n), [&](const auto& range) {
+  Progress bar("direct visibility", own.my_receivers(), progress);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, blocks.size()), [&](const auto& range) {
     std::uint64_t local_rays = 0;
-    for (std::size_t r = range.begin(); r != range.end(); ++r) {
-      bar.advance();
-      const DirectFactor f = direct_factor(traced.opaque, ray_points[r], receivers.normals[r],
-                                           luminaire_position, opening_offsets, local_rays);
-      g.dir_x[r] = static_cast<float>(f.direction.x);
-      g.dir_y[r] = static_cast<float>(f.direction.y);
-      g.dir_z[r] = static_cast<float>(f.direction.z);
-      g.factor[r] = static_cast<float>(f.factor);
+    for (std::size_t i = range.begin(); i != range.end(); ++i) {
+      for (std::size_t r = own.first(blocks[i]); r < own.last(blocks[i]); ++r) {
+        const DirectFactor f = direct_factor(traced.opaque, ray_points[r], receivers.normals[r],
+                                             luminaire_position, opening_offsets, local_rays);
+        g.dir_x[r] = static_cast<float>(f.direction.x);
+        g.dir_y[r] = static_cast<float>(f.direction.y);
+        g.dir_z[r] = static_cast<float>(f.direction.z);
+        g.factor[r] = static_cast<float>(f.factor);
+      }
+      bar.advance(own.last(blocks[i]) - own.first(blocks[i]));
     }
     rays += local_rays;
   });
   bar.finish();
   g.rays = rays.load();
+  if (!own.alone()) {
+    for (std::vector<float>* v : {&g.dir_x, &g.dir_y, &g.dir_z, &g.factor}) share_rows(own, 1, *v);
+    g.rays = sum_over_ranks(*own.exchange, g.rays);
+  }
   return g;
 }
 

@@ -11,6 +11,7 @@
 #include <span>
 #include <vector>
 
+#include "engine/ranks.h"
 #include "engine/receivers.h"
 #include "light/distribution.h"
 #include "light/luminaire_frame.h"
@@ -67,10 +68,13 @@ struct LuminaireLight {
 Rgb luminaire_direct_irradiance(const Occluders& occluders, std::span<const LuminaireLight> lights,
                                 Vec3 p, Vec3 n);
 
-// `ray_points` are receiver_ray_points(receivers, mesh): the shadow rays start there.
+// `ray_points` are receiver_ray_points(receivers, mesh): the shadow rays start there. With
+// `ranks` (engine/ranks.h), this process traces its share and the ranks exchange theirs
+// (collective); `rays` counts every rank's.
 DirectGeometry compute_direct_geometry(const Receivers& receivers,
                                        const std::vector<Vec3>& ray_points,
                                        const TracedScene& traced, Vec3 luminaire_position,
-                                       const std::vector<Vec3>& opening_offsets, bool progress);
+                                       const std::vector<Vec3>& opening_offsets, bool progress,
+                                       const RankShares* ranks = nullptr);
 
 }  // namespace relight

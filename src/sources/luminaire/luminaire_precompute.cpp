@@ -31,7 +31,7 @@ PhaseTiming LuminairePrecompute::compute_direct(const SourceContext& context,
         luminaire_opening(l, placed.distribution.opening()), placed.frame, opening_samples_);
     LuminaireTransfer t;
     t.direct = compute_direct_geometry(context.receivers, context.ray_points, context.traced,
-                                       l.position, offsets, context.progress);
+                                       l.position, offsets, context.progress, context.ranks);
     rays += t.direct.rays;
     columns.of(columns_[j]) = sh_basis_direct(t.direct, order);
     if (scene_->precompute.direct == "sh") {

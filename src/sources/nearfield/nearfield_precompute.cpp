@@ -27,7 +27,7 @@ PhaseTiming NearfieldPrecompute::compute_direct(const SourceContext& context, Di
                               : 0.25 * length(b.max - b.min);
   result.sh_order = settings.order;
   result.transfer = nearfield_transfer(context.traced.opaque, context.ray_points,
-                                       context.receivers.normals, settings);
+                                       context.receivers.normals, settings, context.ranks);
   const std::uint64_t rays = context.receivers.size() *
                              static_cast<std::uint64_t>(scene_->precompute.nearfield_directions);
   const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;

@@ -15,6 +15,7 @@
 #include <span>
 #include <vector>
 
+#include "engine/ranks.h"
 #include "math/vec3.h"
 #include "trace/ray_tracer.h"
 
@@ -29,9 +30,11 @@ struct NearfieldTransferSettings {
   std::uint64_t seed = 1;
 };
 
-// receivers × order² floats, receiver-major. `occluders` is the static scene.
+// receivers × order² floats, receiver-major. `occluders` is the static scene. With `ranks`
+// (engine/ranks.h), this process traces its share and the ranks exchange theirs (collective).
 std::vector<float> nearfield_transfer(const RayTracer& occluders, std::span<const Vec3> positions,
                                       std::span<const Vec3> normals,
-                                      const NearfieldTransferSettings& settings);
+                                      const NearfieldTransferSettings& settings,
+                                      const RankShares* ranks = nullptr);
 
 }  // namespace relight

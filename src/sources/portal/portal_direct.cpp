@@ -1,6 +1,7 @@
 #include "sources/portal/portal_direct.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <utility>
@@ -241,12 +242,42 @@ void sample_receiver(Vec3 point, Vec3 normal, std::size_t receiver, const Portal
   trace_cells(origin, normal, receiver, grid, in_portal, traced, s, scratch, out);
 }
 
+// Every rank's chunks from theirs (engine/ranks.h: a chunk is one of the ranks' blocks).
+void share_chunks(const RankShares& ranks, std::vector<ChunkOutput>& chunks) {
+  std::vector<std::uint8_t> bytes;
+  for (const std::size_t c : ranks.my_blocks()) {
+    const ChunkOutput& o = chunks[c];
+    put_values<std::uint8_t>(bytes, o.bytes);
+    put_values<std::uint32_t>(bytes, o.sizes);
+    put_values<EncodedReceiver>(bytes, o.encoded);
+    put_values<Vec3>(bytes, std::span(&o.flow, 1));
+    put_values<std::uint64_t>(bytes, std::array{o.rays, o.samples});
+  }
+  const std::vector<std::vector<std::uint8_t>> all = ranks.exchange->all_gather(bytes);
+  for (int k = 0; k < ranks.size(); ++k) {
+    if (k == ranks.rank()) continue;
+    const std::vector<std::uint8_t>& theirs = all[static_cast<std::size_t>(k)];
+    std::size_t at = 0;
+    for (const std::size_t c : ranks.blocks_of(k)) {
+      ChunkOutput& o = chunks[c];
+      o.bytes = take_values<std::uint8_t>(theirs, at);
+      o.sizes = take_values<std::uint32_t>(theirs, at);
+      o.encoded = take_values<EncodedReceiver>(theirs, at);
+      o.flow = take_values<Vec3>(theirs, at).at(0);
+      const std::vector<std::uint64_t> counts = take_values<std::uint64_t>(theirs, at);
+      o.rays = counts.at(0);
+      o.samples = counts.at(1);
+    }
+  }
+}
+
 }  // namespace
 
 PortalDirect compute_portal_direct(const Receivers& receivers, const std::vector<Vec3>& ray_points,
                                    const std::vector<std::uint8_t>& skip, const PreparedMesh& mesh,
                                    const TracedScene& traced, const PortalGeometry& portal,
-                                   const PortalDirectSettings& settings, bool progress) {
+                                   const PortalDirectSettings& settings, bool progress,
+                                   const RankShares* ranks) {
   const int n = settings.face_size;
   if (n < 1 || (n & (n - 1)) != 0 || settings.sh_order < 1 || settings.samples_per_cell < 1 ||
       settings.min_samples < 1) {
@@ -263,15 +294,21 @@ PortalDirect compute_portal_direct(const Receivers& receivers, const std::vector
   const int bases = sh_count(settings.sh_order);
   const std::size_t rows = receivers.size();
   const std::size_t chunk_count = (rows + kChunk - 1) / kChunk;
+  const RankShares own = ranks != nullptr ? *ranks : single_process_shares(rows, kChunk);
+  if (own.receivers != rows || own.block != kChunk) {
+    throw std::invalid_argument("portal direct: the ranks' blocks are not its chunks of receivers");
+  }
   PortalDirect result;
   result.face_size = n;
   result.sh_columns = Eigen::MatrixXf::Zero(static_cast<Eigen::Index>(rows), bases);
   std::vector<ChunkOutput> chunks(chunk_count);
   tbb::enumerable_thread_specific<Scratch> scratches(n, tris.a.size(), bases);
-  Progress bar("portal \"" + portal.name + "\" direct", rows, progress);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunk_count), [&](const auto& range) {
+  Progress bar("portal \"" + portal.name + "\" direct", own.my_receivers(), progress);
+  const std::vector<std::size_t> my_chunks = own.my_blocks();
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, my_chunks.size()), [&](const auto& range) {
     Scratch& scratch = scratches.local();
-    for (std::size_t c = range.begin(); c != range.end(); ++c) {
+    for (std::size_t i = range.begin(); i != range.end(); ++i) {
+      const std::size_t c = my_chunks[i];
       ChunkOutput& out = chunks[c];
       const std::size_t first = c * kChunk, last = std::min(rows, first + kChunk);
       for (std::size_t r = first; r < last; ++r) {
@@ -299,6 +336,10 @@ PortalDirect compute_portal_direct(const Receivers& receivers, const std::vector
     }
   });
   bar.finish();
+  if (!own.alone()) {
+    share_chunks(own, chunks);
+    share_rows(own, result.sh_columns);
+  }
 
   result.offsets.reserve(rows + 1);
   result.offsets.push_back(0);

@@ -27,6 +27,7 @@
 
 #include <Eigen/Core>
 
+#include "engine/ranks.h"
 #include "engine/receivers.h"
 #include "sources/portal/cubemap_encoding.h"
 #include "sources/portal/portal_geometry.h"
@@ -54,10 +55,13 @@ struct PortalDirect {
 };
 
 // `skip[r]` != 0 leaves receiver r empty (glass vertices). `ray_points` are
-// receiver_ray_points(receivers, mesh).
+// receiver_ray_points(receivers, mesh). With `ranks` (engine/ranks.h; shares on multiples of
+// kBlock), this process traces its share and the ranks exchange theirs (collective); `rays`
+// and `samples` count every rank's.
 PortalDirect compute_portal_direct(const Receivers& receivers, const std::vector<Vec3>& ray_points,
                                    const std::vector<std::uint8_t>& skip, const PreparedMesh& mesh,
                                    const TracedScene& traced, const PortalGeometry& portal,
-                                   const PortalDirectSettings& settings, bool progress);
+                                   const PortalDirectSettings& settings, bool progress,
+                                   const RankShares* ranks = nullptr);
 
 }  // namespace relight

@@ -31,7 +31,8 @@ PhaseTiming PortalPrecompute::compute_direct(const SourceContext& context, Direc
     t.geometry = std::move(geometry[p]);
     settings.seed = seed_ + 0x9e3779b97f4a7c15ULL * static_cast<std::uint64_t>(p + 1);
     t.direct = compute_portal_direct(context.receivers, context.ray_points, glass, context.mesh,
-                                     context.traced, t.geometry, settings, context.progress);
+                                     context.traced, t.geometry, settings, context.progress,
+                                     context.ranks);
     rays += t.direct.rays;
     columns.of(columns_[p]) = t.direct.sh_columns;
     t.direct.sh_columns.resize(0, 0);

@@ -1,0 +1,164 @@
+// The processes of one precompute (issue 19: `mpirun -n N relight precompute`). The receivers
+// are dealt to the N ranks in blocks (RankShares below; the transfer's blocks of kBlock
+// receivers, engine/transfer_blocks.h). Each rank traces its own blocks' rows of every
+// per-receiver phase — the gather operator's rays, each luminaire's direct visibility, each
+// portal's cubemaps, the near-field transfer — against the whole scene (every rank holds the
+// scene and its Embree BVH), then the ranks exchange their rows so that each holds every row,
+// and all go on with the same data; the bounce solver shares its rows the same way. Every
+// receiver's rays are seeded by its own index (engine/gather_operator.h), so the rows, and the
+// file, do not depend on how many ranks made them. Pinned by tests/engine/ranks_test.cpp (blocks,
+// exchange in one process) and tests/cli/mpi_precompute_test.cpp (`mpirun -n 2` against one
+// process, byte for byte).
+//
+// This stage knows nothing of MPI: the exchange is the interface below, which the command line
+// implements over MPI (cli/mpi_ranks.h); a process alone is SingleProcess.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <span>
+#include <stdexcept>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace relight {
+
+class RankExchange {
+ public:
+  virtual ~RankExchange() = default;
+  virtual int rank() const = 0;
+  virtual int size() const = 0;
+  // Collective: every rank passes its bytes and gets every rank's, in rank order.
+  virtual std::vector<std::vector<std::uint8_t>> all_gather(std::span<const std::uint8_t> mine) = 0;
+  // Seconds spent in all_gather so far, waiting for other ranks included.
+  virtual double exchange_seconds() const = 0;
+};
+
+// A process alone: rank 0 of 1.
+class SingleProcess final : public RankExchange {
+ public:
+  int rank() const override { return 0; }
+  int size() const override { return 1; }
+  std::vector<std::vector<std::uint8_t>> all_gather(std::span<const std::uint8_t> mine) override {
+    return {std::vector<std::uint8_t>(mine.begin(), mine.end())};
+  }
+  double exchange_seconds() const override { return 0; }
+};
+
+// The receivers dealt to the ranks in blocks, in turn: block b (receivers [b·block, (b+1)·block))
+// goes to rank b mod N. Dealt so, each rank gets blocks from every part of the room — near the
+// window and far from it, vertices and sensors — and the ranks' costs even out without a cost
+// model (contiguous shares left one rank 50 % more portal work than the other on the demo room).
+struct RankShares {
+  RankExchange* exchange = nullptr;
+  std::size_t receivers = 0;
+  std::size_t block = 64;
+
+  int rank() const { return exchange->rank(); }
+  int size() const { return exchange->size(); }
+  bool alone() const { return exchange->size() == 1; }
+  std::size_t block_count() const { return (receivers + block - 1) / block; }
+  std::size_t first(std::size_t b) const { return b * block; }
+  std::size_t last(std::size_t b) const { return std::min(receivers, (b + 1) * block); }
+  // Rank k's blocks, in order: k, k + N, k + 2N, …
+  std::vector<std::size_t> blocks_of(int k) const;
+  std::vector<std::size_t> my_blocks() const { return blocks_of(rank()); }
+  // Receivers in this rank's blocks.
+  std::size_t my_receivers() const;
+  double exchange_seconds() const { return exchange->exchange_seconds(); }
+};
+
+// `receivers` in blocks of `block` dealt to the ranks of `exchange`. Throws
+// std::invalid_argument for block < 1.
+RankShares dealt_blocks(RankExchange& exchange, std::size_t receivers, std::size_t block);
+
+// This process alone: every block its own.
+RankShares single_process_shares(std::size_t receivers, std::size_t block);
+
+// Every rank's `mine`, in rank order (collective).
+template <typename T>
+std::vector<T> all_gather_values(RankExchange& exchange, const T& mine) {
+  static_assert(std::is_trivially_copyable_v<T>);
+  std::vector<std::uint8_t> bytes(sizeof(T));
+  std::memcpy(bytes.data(), &mine, sizeof(T));
+  std::vector<T> out;
+  for (const std::vector<std::uint8_t>& b : exchange.all_gather(bytes)) {
+    if (b.size() != sizeof(T)) throw std::runtime_error("rank exchange: a value of another size");
+    T v;
+    std::memcpy(&v, b.data(), sizeof(T));
+    out.push_back(v);
+  }
+  return out;
+}
+
+// Σ over ranks of `mine` (collective).
+std::uint64_t sum_over_ranks(RankExchange& exchange, std::uint64_t mine);
+
+// `data` holds `stride` values per receiver (row-major rows); this rank's blocks' values are
+// filled in. On return (collective) every block's values are, from its rank.
+template <typename T>
+void share_rows(const RankShares& ranks, std::size_t stride, std::span<T> data) {
+  static_assert(std::is_trivially_copyable_v<T>);
+  if (ranks.alone()) return;
+  if (data.size() != ranks.receivers * stride) {
+    throw std::invalid_argument("rank exchange: rows of another size");
+  }
+  std::vector<std::uint8_t> mine;
+  for (const std::size_t b : ranks.my_blocks()) {
+    const auto* p = reinterpret_cast<const std::uint8_t*>(data.data() + ranks.first(b) * stride);
+    mine.insert(mine.end(), p, p + (ranks.last(b) - ranks.first(b)) * stride * sizeof(T));
+  }
+  const std::vector<std::vector<std::uint8_t>> all = ranks.exchange->all_gather(mine);
+  for (int k = 0; k < ranks.size(); ++k) {
+    const std::vector<std::uint8_t>& theirs = all[static_cast<std::size_t>(k)];
+    std::size_t at = 0;
+    for (const std::size_t b : ranks.blocks_of(k)) {
+      const std::size_t bytes = (ranks.last(b) - ranks.first(b)) * stride * sizeof(T);
+      if (theirs.size() - at < bytes) throw std::runtime_error("rank exchange: a share cut short");
+      std::memcpy(data.data() + ranks.first(b) * stride, theirs.data() + at, bytes);
+      at += bytes;
+    }
+    if (at != theirs.size()) throw std::runtime_error("rank exchange: a share of another size");
+  }
+}
+template <typename T>
+void share_rows(const RankShares& ranks, std::size_t stride, std::vector<T>& data) {
+  share_rows(ranks, stride, std::span<T>(data));
+}
+
+// The same for the rows of a receivers × columns matrix.
+void share_rows(const RankShares& ranks, Eigen::MatrixXf& matrix);
+
+// Appends the bytes of `values` to `out`, and reads them back from `in` at `at` (advanced);
+// for the exchanges of records whose length varies per receiver.
+template <typename T>
+void put_values(std::vector<std::uint8_t>& out, std::span<const T> values) {
+  static_assert(std::is_trivially_copyable_v<T>);
+  const std::uint64_t n = values.size();
+  const auto* p = reinterpret_cast<const std::uint8_t*>(&n);
+  out.insert(out.end(), p, p + sizeof n);
+  const auto* v = reinterpret_cast<const std::uint8_t*>(values.data());
+  out.insert(out.end(), v, v + values.size() * sizeof(T));
+}
+
+template <typename T>
+std::vector<T> take_values(std::span<const std::uint8_t> in, std::size_t& at) {
+  static_assert(std::is_trivially_copyable_v<T>);
+  std::uint64_t n = 0;
+  if (in.size() - at < sizeof n) throw std::runtime_error("rank exchange: a record cut short");
+  std::memcpy(&n, in.data() + at, sizeof n);
+  at += sizeof n;
+  if ((in.size() - at) / sizeof(T) < n)
+    throw std::runtime_error("rank exchange: a record cut short");
+  std::vector<T> out(static_cast<std::size_t>(n));
+  if (n > 0) std::memcpy(out.data(), in.data() + at, out.size() * sizeof(T));
+  at += out.size() * sizeof(T);
+  return out;
+}
+
+}  // namespace relight

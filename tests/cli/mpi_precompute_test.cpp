@@ -1,0 +1,126 @@
+// `mpirun -n 2 relight precompute` (issue 19) writes the file one process writes, byte for byte,
+// and probe reads the same light from it: on the demo room (luminaires and a window) and on a
+// room with two windows, a luminaire, a near-field emitter and a movable object (every
+// per-receiver phase the ranks split: gather rays, direct visibility, portal cubemaps, near-field
+// transfer). Two ranks on this machine's cores, oversubscribed on loopback (as root where CI runs
+// as root). A failure before the ranks exchange anything is reported once, exit 2.
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <span>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "cli/demo_room.h"
+#include "run_command.h"
+#include "store/rlt_file.h"
+#include "support/daylight_room.h"
+
+namespace relight {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::read_text;
+using testing::run_relight;
+using testing::TempDir;
+
+// The launcher for two ranks; the shell command runs relight under it.
+std::string mpirun_two() {
+  std::string launcher = "mpirun -n 2 --oversubscribe";
+  if (::geteuid() == 0) launcher += " --allow-run-as-root";
+  return launcher;
+}
+
+constexpr std::uint32_t kMetadata = rlt_fourcc("META");
+
+// The same sections in the same order, every one byte for byte but the metadata, which differs
+// only in the phases' times.
+void expect_same_transfer(const fs::path& one, const fs::path& two) {
+  const RltFile a = RltFile::open(one), b = RltFile::open(two);
+  ASSERT_EQ(a.sections().size(), b.sections().size());
+  for (std::size_t i = 0; i < a.sections().size(); ++i) {
+    const RltSectionInfo &x = a.sections()[i], &y = b.sections()[i];
+    ASSERT_EQ(x.type, y.type) << i;
+    ASSERT_EQ(x.name, y.name) << i;
+    if (x.type == kMetadata) continue;
+    ASSERT_EQ(x.size, y.size) << x.name;
+    const std::span<const std::byte> p = a.section(x.type), q = b.section(y.type);
+    EXPECT_TRUE(std::equal(p.begin(), p.end(), q.begin())) << x.name << " differs";
+  }
+  nlohmann::json m = nlohmann::json::parse(a.text(kMetadata));
+  nlohmann::json n = nlohmann::json::parse(b.text(kMetadata));
+  ASSERT_TRUE(m.contains("phases"));
+  m.erase("phases");
+  n.erase("phases");
+  EXPECT_EQ(m, n);
+}
+
+// Precomputes `scene` alone and on two ranks; expects equal files and equal probes.
+void expect_two_ranks_write_what_one_writes(const TempDir& dir, const std::string& name,
+                                            const nlohmann::json& scene) {
+  const fs::path file = dir.write(name + ".json", scene.dump(2));
+  const fs::path one = dir.path() / (name + "-one.rlt"), two = dir.path() / (name + "-two.rlt");
+  const testing::CommandResult alone =
+      run_relight("precompute '" + file.string() + "' -o '" + one.string() + "' --no-progress");
+  ASSERT_EQ(alone.exit_code, 0) << alone.err;
+  const std::string command = mpirun_two() + " '" + RELIGHT_BINARY + "' precompute '" +
+                              file.string() + "' -o '" + two.string() + "' --no-progress";
+  const testing::CommandResult ranks = testing::run_shell(command);
+  ASSERT_EQ(ranks.exit_code, 0) << ranks.err;
+  EXPECT_NE(ranks.out.find("2 ranks"), std::string::npos) << ranks.out;
+  EXPECT_EQ(ranks.out.find("precompute "), ranks.out.rfind("precompute ")) << "printed twice";
+  expect_same_transfer(one, two);
+  const fs::path csv_one = dir.path() / (name + "-one.csv"),
+                 csv_two = dir.path() / (name + "-two.csv");
+  ASSERT_EQ(run_relight("probe '" + one.string() + "' -o '" + csv_one.string() + "'").exit_code, 0);
+  ASSERT_EQ(run_relight("probe '" + two.string() + "' -o '" + csv_two.string() + "'").exit_code, 0);
+  EXPECT_EQ(read_text(csv_two), read_text(csv_one));
+  EXPECT_GT(read_text(csv_one).size(), 100u);
+}
+
+TEST(MpiPrecompute, TwoRanksWriteTheDemoRoomByteForByteAsOneProcess) {
+  const TempDir dir;
+  expect_two_ranks_write_what_one_writes(dir, "demo", demo_room_scene());
+}
+
+TEST(MpiPrecompute, TwoRanksWriteAWindowRoomWithEverySourceByteForByteAsOneProcess) {
+  testing::WindowRoom room;
+  room.south_window = testing::kWindow;
+  room.skylight = testing::kSkylight;
+  room.albedo = 0.5;
+  nlohmann::json scene = testing::window_room_json(room);
+  scene["sensors"] = {
+      {{"name", "floor"},
+       {"grid",
+        {{"corner", {0.5, 0.8, 0.5}}, {"u", {3, 0, 0}}, {"v", {0, 0, 4}}, {"nu", 6}, {"nv", 8}}}}};
+  scene["luminaires"] = {testing::panel_luminaire("panel")};
+  scene["emitters"] = {{{"name", "strip"},
+                        {"geometry", testing::quad({1.5, 2.5, 1}, {1, 0, 0}, {0, 0, 0.3}, "")},
+                        {"luminance", 2000}}};
+  scene["emitters"][0]["geometry"].erase("material");
+  scene["materials"]["oak"] = {{"albedo", {0.6, 0.4, 0.2}}};
+  scene["objects"] = {
+      {{"name", "cabinet"}, {"geometry", {testing::box({0.3, 0, 0.3}, {0.9, 1.6, 0.8}, "oak")}}}};
+  scene["precompute"] = {{"max_edge", 0.5}, {"gather_rays", 64}, {"sensor_gather_rays", 256}};
+  const TempDir dir;
+  expect_two_ranks_write_what_one_writes(dir, "window", scene);
+}
+
+TEST(MpiPrecompute, AMissingSceneIsReportedOnceWithExitTwo) {
+  const TempDir dir;
+  const testing::CommandResult r = testing::run_shell(
+      mpirun_two() + " '" + RELIGHT_BINARY + "' precompute '" + (dir.path() / "no.json").string() +
+      "' -o '" + (dir.path() / "no.rlt").string() + "' --no-progress");
+  EXPECT_NE(r.exit_code, 0);
+  const std::string first = r.err.substr(0, r.err.find('\n'));
+  EXPECT_EQ(first.rfind("error: ", 0), 0u) << r.err;
+  EXPECT_NE(first.find("no.json"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("no.json", r.err.find('\n')), std::string::npos)
+      << "reported twice: " << r.err;
+  EXPECT_FALSE(fs::exists(dir.path() / "no.rlt"));
+}
+
+}  // namespace
+}  // namespace relight
