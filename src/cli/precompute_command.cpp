@@ -21,6 +21,7 @@
 #include "cli/mpi_ranks.h"
 #include "cli/precompute_run.h"
 #include "common/input_error.h"
+#include "common/memory.h"
 #include "scene/scene_loader.h"
 #include "sources/object/object_sections.h"
 #include "sources/precompute.h"
@@ -167,18 +168,20 @@ void precompute_and_write(const Scene& scene, const nlohmann::json& document,
 void run_precompute(const nlohmann::json& document, const std::filesystem::path& scene_file,
                     const std::filesystem::path& output, const PrecomputeOptions& options) {
   check_output_folder(output);
+  PrecomputeOptions checked = options;
+  if (!checked.memory_bytes) checked.memory_bytes = available_memory_bytes();
   precompute_and_write(scene_from_json(document, scene_file), document, scene_file, output,
-                       options);
+                       checked);
 }
 
 namespace {
 
 // `mpirun -n N relight precompute` (issue 19). What can fail on some ranks and not others
 // before the ranks exchange anything (the scene read, the output folder checked on rank 0, which
-// writes) is agreed first: on a failure rank 0 reports the first failing rank's error once and
-// every rank exits 2. A failure after that (out of memory, a rank's internal error) ends every
-// rank through MPI_Abort, since the others may be waiting in an exchange; only rank 0 writes, so
-// no partial file is left at the output path.
+// writes, each rank's share of memory) is agreed (engine/ranks.h agree_on_failure): on a failure
+// rank 0 reports the first failing rank's error once and every rank exits 2. A failure after that
+// (out of memory, a rank's internal error) ends every rank through MPI_Abort, since the others may
+// be waiting in an exchange; only rank 0 writes, so no partial file is left at the output path.
 int run_precompute_on_ranks(const PrecomputeArgs& args, PrecomputeOptions options) {
   MpiRanks mpi;
   // The ranks on one machine share its cores (RELIGHT_THREADS, when set, caps it further).
@@ -198,15 +201,17 @@ int run_precompute_on_ranks(const PrecomputeArgs& args, PrecomputeOptions option
   } catch (const InputError& e) {
     failure = e.what();
   }
-  std::vector<std::uint8_t> mine(failure.begin(), failure.end());
-  for (const std::vector<std::uint8_t>& f : mpi.all_gather(mine)) {
-    if (f.empty()) continue;
-    if (mpi.rank() == 0)
-      std::fprintf(stderr, "error: %s\n", std::string(f.begin(), f.end()).c_str());
-    return 2;
+  if (const std::optional<std::uint64_t> available = available_memory_bytes()) {
+    options.memory_bytes = *available / static_cast<unsigned>(mpi.ranks_here());
+    options.ranks_here = mpi.ranks_here();
   }
   try {
+    agree_on_failure(mpi, failure);
     precompute_and_write(*scene, document, args.scene, args.output, options);
+  } catch (const AgreedInputError& e) {
+    // Every rank knows it and none waits for another: rank 0 reports it, all end with 2.
+    if (mpi.rank() == 0) std::fprintf(stderr, "error: %s\n", e.what());
+    return 2;
   } catch (const std::exception& e) {
     const bool input = dynamic_cast<const InputError*>(&e) != nullptr;
     std::fprintf(stderr, "error: rank %d of %d: %s%s\n", mpi.rank(), mpi.size(),

@@ -27,6 +27,13 @@ RankShares single_process_shares(std::size_t receivers, std::size_t block) {
   return dealt_blocks(alone, receivers, block);
 }
 
+void agree_on_failure(RankExchange& exchange, const std::string& failure) {
+  const std::vector<std::uint8_t> mine(failure.begin(), failure.end());
+  for (const std::vector<std::uint8_t>& theirs : exchange.all_gather(mine)) {
+    if (!theirs.empty()) throw AgreedInputError(std::string(theirs.begin(), theirs.end()));
+  }
+}
+
 std::uint64_t sum_over_ranks(RankExchange& exchange, std::uint64_t mine) {
   std::uint64_t sum = 0;
   for (const std::uint64_t v : all_gather_values(exchange, mine)) sum += v;

@@ -20,11 +20,14 @@
 #include <cstring>
 #include <span>
 #include <stdexcept>
+#include <string>
 #include <type_traits>
 #include <utility>
 #include <vector>
 
 #include <Eigen/Core>
+
+#include "common/input_error.h"
 
 namespace relight {
 
@@ -79,6 +82,18 @@ RankShares dealt_blocks(RankExchange& exchange, std::size_t receivers, std::size
 
 // This process alone: every block its own.
 RankShares single_process_shares(std::size_t receivers, std::size_t block);
+
+// Bad input that every rank knows of (agree_on_failure): each rank ends without waiting for the
+// others, and only rank 0 reports it.
+struct AgreedInputError : InputError {
+  using InputError::InputError;
+};
+
+// Collective: `failure` is this rank's error ("WHERE: reason"), empty for none. When any rank
+// failed, every rank throws AgreedInputError with the first failing rank's message. For checks
+// that may fail on some ranks and not others (a file one machine lacks, its memory), made before
+// an exchange that a failed rank would leave the others waiting in.
+void agree_on_failure(RankExchange& exchange, const std::string& failure);
 
 // Every rank's `mine`, in rank order (collective).
 template <typename T>

@@ -6,6 +6,7 @@
 #include "engine/gather_operator.h"
 #include "engine/transfer_blocks.h"
 #include "sources/object/object_mesh.h"
+#include "sources/precompute_memory.h"
 #include "trace/traced_scene.h"
 
 namespace relight {
@@ -45,11 +46,16 @@ Precomputed precompute_transfer(const Scene& scene, const PrecomputeOptions& opt
   out.mesh = prepare_scene_mesh(scene);
   out.receivers = make_receivers(scene, out.mesh);
   out.triangle_portal = triangle_portals(scene, out.mesh);
-  const TracedScene traced = build_traced_scene(out.mesh, scene.materials);
   // The ranks' blocks of receivers (engine/ranks.h), the transfer's blocks.
   const RankShares ranks = options.ranks != nullptr
                                ? dealt_blocks(*options.ranks, out.receivers.size(), kBlock)
                                : single_process_shares(out.receivers.size(), kBlock);
+  if (options.memory_bytes) {
+    agree_on_failure(*ranks.exchange,
+                     memory_refusal(scene, least_precompute_memory(scene, out.receivers),
+                                    *options.memory_bytes, options.ranks_here));
+  }
+  const TracedScene traced = build_traced_scene(out.mesh, scene.materials);
   out.phases.push_back({"prepare", seconds_since(start), 0});
 
   const double exchanged = ranks.exchange_seconds();

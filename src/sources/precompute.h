@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,11 @@ struct PrecomputeOptions {
   // scene and options: each traces its share of the receivers, and every rank returns the same
   // Precomputed (its phases' times are its own). nullptr: this process alone.
   RankExchange* ranks = nullptr;
+  // Memory this process (rank) may use, bytes: a scene whose least need
+  // (sources/precompute_memory.h) is more is refused before any ray is traced, on every rank
+  // (AgreedInputError). nullopt: no check. `ranks_here`: ranks sharing this machine's memory.
+  std::optional<std::uint64_t> memory_bytes;
+  int ranks_here = 1;
 };
 
 inline constexpr std::uint32_t kGlassOutsidePortals = 0xFFFFFFFFu;

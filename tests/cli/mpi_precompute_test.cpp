@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <span>
 #include <string>
@@ -120,6 +121,86 @@ TEST(MpiPrecompute, AMissingSceneIsReportedOnceWithExitTwo) {
   EXPECT_EQ(r.err.find("no.json", r.err.find('\n')), std::string::npos)
       << "reported twice: " << r.err;
   EXPECT_FALSE(fs::exists(dir.path() / "no.rlt"));
+}
+
+// 300 × 300 work-plane sensors under 400 luminaires of sh_order 32: 90,000 receivers × 409,600
+// bounced columns, over a terabyte at the precompute's peak — more than any machine this runs
+// on has.
+nlohmann::json too_large_scene() {
+  testing::WindowRoom room;
+  room.albedo = 0.5;
+  nlohmann::json scene = testing::window_room_json(room);
+  scene["portals"] = nlohmann::json::array();
+  scene["sensors"] = {{{"name", "work plane"},
+                       {"grid",
+                        {{"corner", {0.1, 0.8, 0.1}},
+                         {"u", {3.8, 0, 0}},
+                         {"v", {0, 0, 4.8}},
+                         {"nu", 300},
+                         {"nv", 300}}}}};
+  scene["luminaires"] = nlohmann::json::array();
+  for (int i = 0; i < 400; ++i) {
+    nlohmann::json l = testing::panel_luminaire(std::to_string(i));
+    l["position"] = {0.5 + 0.15 * (i % 20), 2.9, 0.5 + 0.2 * (i / 20)};
+    scene["luminaires"].push_back(l);
+  }
+  scene["precompute"] = {{"sh_order", 32}};
+  return scene;
+}
+
+TEST(MpiPrecompute, ASceneTooLargeForARanksShareOfMemoryIsRefusedBeforeTracingWithTheNumbers) {
+  const TempDir dir;
+  const fs::path file = dir.write("huge.json", too_large_scene().dump());
+  const fs::path out = dir.path() / "huge.rlt";
+  for (const bool ranks : {false, true}) {
+    const auto start = std::chrono::steady_clock::now();
+    const std::string command = (ranks ? mpirun_two() + " " : std::string()) + "'" +
+                                RELIGHT_BINARY + "' precompute '" + file.string() + "' -o '" +
+                                out.string() + "' --no-progress";
+    const testing::CommandResult r = testing::run_shell(command);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    const std::string first = r.err.substr(0, r.err.find('\n'));
+    EXPECT_EQ(first.rfind("error: " + file.string() + ": too large to precompute here", 0), 0u)
+        << r.err;
+    EXPECT_NE(first.find(" receivers × 409600 bounced basis columns"), std::string::npos) << first;
+    if (ranks) {
+      EXPECT_NE(first.find("for each of the 2 ranks on this machine"), std::string::npos) << first;
+      EXPECT_EQ(r.err.find("too large", first.size()), std::string::npos) << "twice: " << r.err;
+    } else {
+      EXPECT_EQ(r.err, first + "\n");
+    }
+    EXPECT_TRUE(r.out.empty()) << r.out;
+    EXPECT_FALSE(fs::exists(out));
+    // Refused once the receivers are counted, before the Embree scene and any ray.
+    EXPECT_LT(seconds, 20) << (ranks ? "two ranks" : "one process");
+  }
+}
+
+// A rank killed outright (SIGKILL) ends the run through the launcher: a non-zero exit, and the
+// earlier file at the output path kept as it was.
+TEST(MpiPrecompute, ARankKilledEndsTheRunAndLeavesTheEarlierFile) {
+  const TempDir dir;
+  nlohmann::json scene = demo_room_scene();
+  scene["precompute"]["gather_rays"] = 1024;  // long enough to be killed in the middle
+  const fs::path file = dir.write("killed.json", scene.dump());
+  const fs::path out = dir.write("killed.rlt", "an earlier file");
+  const std::string binary = RELIGHT_BINARY;
+  // The ranks' command lines start with the binary; mpirun's with "mpirun".
+  const std::string command =
+      "( " + mpirun_two() + " '" + binary + "' precompute '" + file.string() + "' -o '" +
+      out.string() + "' --no-progress & launcher=$!; " + "for i in $(seq 100); do " +
+      "[ $(pgrep -f '^" + binary +
+      " precompute .*killed' | wc -l) -ge 2 ] && break; sleep 0.1; done; " +
+      "sleep 1; pkill -KILL -n -f '^" + binary + " precompute .*killed'; wait $launcher )";
+  const testing::CommandResult r = testing::run_shell(command);
+  EXPECT_NE(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.err.find("signal 9"), std::string::npos) << r.err;
+  EXPECT_EQ(read_text(out), "an earlier file");
+  for (const auto& entry : fs::directory_iterator(dir.path())) {
+    EXPECT_EQ(entry.path().string().find(".tmp"), std::string::npos) << entry.path();
+  }
 }
 
 }  // namespace

@@ -1,0 +1,15 @@
+// The memory this machine can still give a process: for refusing work that cannot fit before
+// starting it (issue 19: a scene too large for a rank's share of memory is refused before
+// tracing, with the numbers).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+
+namespace relight {
+
+// MemAvailable plus SwapFree from /proc/meminfo, in bytes — what the kernel estimates it can
+// give without swapping out others, and the swap beyond it; nullopt where it cannot be read.
+std::optional<std::uint64_t> available_memory_bytes();
+
+}  // namespace relight
