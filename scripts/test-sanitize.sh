@@ -22,6 +22,8 @@ if [[ ,$stages, == *,asan,* ]]; then
   # Leaks are checked (LeakSanitizer, part of ASan); a UB report aborts the test that made it.
   export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1:strict_string_checks=1}
   export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
+  # Open MPI's own allocations at MPI_Init are not relight's leaks (the file says which).
+  export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$PWD/tests/sanitize/lsan-suppressions.txt}
   # The studio's node tests report, not assert, bounds on the server's memory (ASan's shadow).
   (cd "$asan" && RELIGHT_SANITIZER=address ctest --output-on-failure -j "$jobs" --timeout 1800)
   echo "test-sanitize: ASan + UBSan suite clean ($asan)"

@@ -58,6 +58,7 @@ std::vector<std::vector<std::uint8_t>> MpiRanks::all_gather(std::span<const std:
       bytes.assign(mine.begin(), mine.end());
     } else {
       bytes.resize(static_cast<std::size_t>(sizes[static_cast<std::size_t>(k)]));
+      exchange_bytes_ += bytes.size();
     }
     for (std::size_t at = 0; at < bytes.size(); at += kPiece) {
       const int count = static_cast<int>(std::min(kPiece, bytes.size() - at));

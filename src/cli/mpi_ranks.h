@@ -30,6 +30,7 @@ class MpiRanks final : public RankExchange {
   // counts are int).
   std::vector<std::vector<std::uint8_t>> all_gather(std::span<const std::uint8_t> mine) override;
   double exchange_seconds() const override { return exchange_seconds_; }
+  std::uint64_t exchange_bytes() const override { return exchange_bytes_; }
   // Ranks on this machine (MPI_COMM_TYPE_SHARED): they share its cores.
   int ranks_here() const { return ranks_here_; }
   // Ends every rank's process (MPI_Abort): for a failure of some ranks while the others may
@@ -39,6 +40,7 @@ class MpiRanks final : public RankExchange {
  private:
   int rank_ = 0, size_ = 1, ranks_here_ = 1;
   double exchange_seconds_ = 0;
+  std::uint64_t exchange_bytes_ = 0;
 };
 
 }  // namespace relight

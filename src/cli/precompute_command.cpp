@@ -77,19 +77,28 @@ std::vector<PhaseLine> phase_lines(const std::vector<PhaseTiming>& phases, RankE
   return out;
 }
 
-// Collective: over the ranks, the least and most share of their time spent in exchanges.
-std::array<double, 2> exchange_share(const std::vector<PhaseTiming>& phases, RankExchange& ranks) {
+// Collective: over the ranks, the least and most share of their time spent in exchanges, and
+// the most bytes a rank received.
+struct ExchangeSummary {
+  double least_share = 1, most_share = 0;
+  std::uint64_t most_bytes = 0;
+};
+
+ExchangeSummary exchange_summary(const std::vector<PhaseTiming>& phases, RankExchange& ranks) {
   double seconds = 0, exchange = 0;
   for (const PhaseTiming& t : phases) {
     seconds += t.seconds;
     exchange += t.exchange_seconds;
   }
-  std::array<double, 2> share{1, 0};
-  for (const double s : all_gather_values(ranks, exchange / std::max(seconds, 1e-9))) {
-    share[0] = std::min(share[0], s);
-    share[1] = std::max(share[1], s);
+  const std::array<double, 2> mine{exchange / std::max(seconds, 1e-9),
+                                   static_cast<double>(ranks.exchange_bytes())};
+  ExchangeSummary out;
+  for (const auto& [share, bytes] : all_gather_values(ranks, mine)) {
+    out.least_share = std::min(out.least_share, share);
+    out.most_share = std::max(out.most_share, share);
+    out.most_bytes = std::max(out.most_bytes, static_cast<std::uint64_t>(bytes));
   }
-  return share;
+  return out;
 }
 
 // Precomputes, writes `output` (rank 0 of several) and prints the summary (rank 0).
@@ -100,8 +109,8 @@ void precompute_and_write(const Scene& scene, const nlohmann::json& document,
   const std::vector<PhaseLine> phases = phase_lines(p.phases, options.ranks);
   const int rank = options.ranks != nullptr ? options.ranks->rank() : 0;
   const int ranks = options.ranks != nullptr ? options.ranks->size() : 1;
-  const std::array<double, 2> exchange =
-      ranks > 1 ? exchange_share(p.phases, *options.ranks) : std::array<double, 2>{0, 0};
+  const ExchangeSummary exchange =
+      ranks > 1 ? exchange_summary(p.phases, *options.ranks) : ExchangeSummary{};
   if (rank != 0) return;
   for (const std::string& w : p.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
   write_transfer_file(output, p, scene, document, scene_file);
@@ -132,8 +141,9 @@ void precompute_and_write(const Scene& scene, const nlohmann::json& document,
     std::printf("\n");
   }
   if (ranks > 1) {
-    std::printf("  exchanges between ranks: %.1f–%.1f %% of a rank's time\n", 100 * exchange[0],
-                100 * exchange[1]);
+    std::printf("  exchanges between ranks: %.1f–%.1f %% of a rank's time, at most %.1f MB "
+                "received by a rank\n",
+                100 * exchange.least_share, 100 * exchange.most_share, exchange.most_bytes * 1e-6);
   }
   std::printf("  bounces: %d (tolerance %g)\n", p.bounces, scene.precompute.tolerance);
   for (const PortalTransfer& t : p.portals) {

@@ -40,6 +40,8 @@ class RankExchange {
   virtual std::vector<std::vector<std::uint8_t>> all_gather(std::span<const std::uint8_t> mine) = 0;
   // Seconds spent in all_gather so far, waiting for other ranks included.
   virtual double exchange_seconds() const = 0;
+  // Bytes all_gather has received from other ranks so far.
+  virtual std::uint64_t exchange_bytes() const = 0;
 };
 
 // A process alone: rank 0 of 1.
@@ -51,6 +53,7 @@ class SingleProcess final : public RankExchange {
     return {std::vector<std::uint8_t>(mine.begin(), mine.end())};
   }
   double exchange_seconds() const override { return 0; }
+  std::uint64_t exchange_bytes() const override { return 0; }
 };
 
 // The receivers dealt to the ranks in blocks, in turn: block b (receivers [b·block, (b+1)·block))

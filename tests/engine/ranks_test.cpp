@@ -38,6 +38,7 @@ class ThreadRanks {
       return out;
     }
     double exchange_seconds() const override { return 0; }
+    std::uint64_t exchange_bytes() const override { return 0; }
 
    private:
     ThreadRanks* all_;
