@@ -12,6 +12,7 @@
 #include <thread>
 #include <vector>
 
+#include <sched.h>
 #include <unistd.h>
 
 #include <tbb/global_control.h>
@@ -55,17 +56,20 @@ struct PhaseLine {
   double seconds = 0;
   std::uint64_t rays = 0;
   double work_min = 0, work_max = 0, exchange_min = 0, exchange_max = 0;
+  std::uint64_t bytes_max = 0;  // received by a rank
 };
 
 // Collective: every rank's phases (the same names in the same order on every rank).
 std::vector<PhaseLine> phase_lines(const std::vector<PhaseTiming>& phases, RankExchange* ranks) {
   std::vector<PhaseLine> out;
   for (const PhaseTiming& t : phases) {
-    const std::array<double, 2> mine{t.seconds, t.exchange_seconds};
-    const std::vector<std::array<double, 2>> all =
+    const std::array<double, 3> mine{t.seconds, t.exchange_seconds,
+                                     static_cast<double>(t.exchange_bytes)};
+    const std::vector<std::array<double, 3>> all =
         ranks != nullptr ? all_gather_values(*ranks, mine) : std::vector{mine};
-    PhaseLine line{t.name, 0, t.rays, 1e300, 0, 1e300, 0};
-    for (const auto& [seconds, exchange] : all) {
+    PhaseLine line{t.name, 0, t.rays, 1e300, 0, 1e300, 0, 0};
+    for (const auto& [seconds, exchange, bytes] : all) {
+      line.bytes_max = std::max(line.bytes_max, static_cast<std::uint64_t>(bytes));
       line.seconds = std::max(line.seconds, seconds);
       line.work_min = std::min(line.work_min, seconds - exchange);
       line.work_max = std::max(line.work_max, seconds - exchange);
@@ -123,7 +127,8 @@ void precompute_and_write(const Scene& scene, const nlohmann::json& document,
   if (ranks > 1) {
     std::printf(
         "  %d ranks: each phase's time is its slowest rank's; [work: the ranks' least and "
-        "most time in the phase's own work, exchange: in exchanges, waiting included]\n",
+        "most time in the phase's own work, exchange: in exchanges, waiting included, and the most "
+                "bytes a rank received]\n",
         ranks);
   }
   for (const PhaseLine& t : phases) {
@@ -135,8 +140,8 @@ void precompute_and_write(const Scene& scene, const nlohmann::json& document,
                   t.rays * 1e-6 / std::max(t.seconds, 1e-9));
     }
     if (ranks > 1) {
-      std::printf("  [work %.2f–%.2f s, exchange %.2f–%.2f s]", t.work_min, t.work_max,
-                  t.exchange_min, t.exchange_max);
+      std::printf("  [work %.2f–%.2f s, exchange %.2f–%.2f s, %.1f MB]", t.work_min, t.work_max,
+                  t.exchange_min, t.exchange_max, t.bytes_max * 1e-6);
     }
     std::printf("\n");
   }
@@ -201,6 +206,19 @@ int run_precompute_on_ranks(const PrecomputeArgs& args, PrecomputeOptions option
           1, std::thread::hardware_concurrency() / static_cast<unsigned>(mpi.ranks_here())));
   options.ranks = &mpi;
   options.progress = options.progress && mpi.rank() == 0;
+  // Open MPI binds each of one or two ranks to a core by default: one rank a machine would then
+  // leave the machine's other cores idle.
+  cpu_set_t cpus;
+  const unsigned share =
+      std::max(1u, std::thread::hardware_concurrency() / static_cast<unsigned>(mpi.ranks_here()));
+  if (mpi.rank() == 0 && ::sched_getaffinity(0, sizeof cpus, &cpus) == 0 &&
+      static_cast<unsigned>(CPU_COUNT(&cpus)) < share) {
+    std::fprintf(stderr,
+                 "warning: rank 0 may run on %d of the %u cores its machine has for each of its "
+                 "%d ranks (the launcher bound it); mpirun --bind-to none lets the ranks use "
+                 "them all\n",
+                 CPU_COUNT(&cpus), share, mpi.ranks_here());
+  }
   std::string failure;
   nlohmann::json document;
   std::optional<Scene> scene;

@@ -11,20 +11,18 @@ SourcesResult precompute_sources(const SourceContext& context, const GatherOpera
   for (SourcePrecompute* s : sources) s->register_columns(registry);
   DirectColumns columns(static_cast<Eigen::Index>(context.receivers.size()), registry);
   SourcesResult out;
-  const auto exchanged = [&context] {
-    return context.ranks != nullptr ? context.ranks->exchange_seconds() : 0.0;
-  };
   for (SourcePrecompute* s : sources) {
-    const double before = exchanged();
+    const ExchangeMeter meter(context.ranks);
     PhaseTiming t = s->compute_direct(context, columns);
-    t.exchange_seconds = exchanged() - before;
+    meter.take(t);
     if (!t.name.empty()) out.phases.push_back(std::move(t));
   }
-  const double before = exchanged();
+  const ExchangeMeter meter(context.ranks);
   const BounceResult result = solve_bounces(gather, context.receivers, columns.matrix(), bounce,
                                             context.progress, context.ranks);
   out.bounces = result.bounces;
-  out.phases.push_back({"bounces", result.seconds, 0, exchanged() - before});
+  out.phases.push_back({"bounces", result.seconds, 0});
+  meter.take(out.phases.back());
   const auto start = std::chrono::steady_clock::now();
   for (SourcePrecompute* s : sources) s->take_indirect(result);
   const std::chrono::duration<double> pack = std::chrono::steady_clock::now() - start;

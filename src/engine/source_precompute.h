@@ -24,8 +24,30 @@ struct PhaseTiming {
   std::string name;
   double seconds = 0;
   std::uint64_t rays = 0;
-  // Of `seconds`, in exchanges with other ranks, waiting for them included (engine/ranks.h).
+  // Of `seconds`, in exchanges with other ranks, waiting for them included (engine/ranks.h),
+  // and the bytes received from them.
   double exchange_seconds = 0;
+  std::uint64_t exchange_bytes = 0;
+};
+
+// What the ranks' exchanges cost between its making and take(): seconds and bytes received.
+class ExchangeMeter {
+ public:
+  explicit ExchangeMeter(const RankShares* ranks)
+      : exchange_(ranks != nullptr ? ranks->exchange : nullptr),
+        seconds_(exchange_ != nullptr ? exchange_->exchange_seconds() : 0),
+        bytes_(exchange_ != nullptr ? exchange_->exchange_bytes() : 0) {}
+  // Sets the phase's exchange_seconds and exchange_bytes.
+  void take(PhaseTiming& phase) const {
+    if (exchange_ == nullptr) return;
+    phase.exchange_seconds = exchange_->exchange_seconds() - seconds_;
+    phase.exchange_bytes = exchange_->exchange_bytes() - bytes_;
+  }
+
+ private:
+  const RankExchange* exchange_;
+  double seconds_;
+  std::uint64_t bytes_;
 };
 
 // What every source's direct transfer sees: the receivers, where their rays start, the

@@ -58,12 +58,12 @@ Precomputed precompute_transfer(const Scene& scene, const PrecomputeOptions& opt
   const TracedScene traced = build_traced_scene(out.mesh, scene.materials);
   out.phases.push_back({"prepare", seconds_since(start), 0});
 
-  const double exchanged = ranks.exchange_seconds();
+  const ExchangeMeter meter(&ranks);
   GatherOperator gather = build_gather_operator(
       out.receivers, out.mesh, traced, scene.precompute.gather_rays,
       scene.precompute.sensor_gather_rays, options.seed, options.progress, &ranks);
-  out.phases.push_back(
-      {"gather operator", gather.seconds, gather.rays, ranks.exchange_seconds() - exchanged});
+  out.phases.push_back({"gather operator", gather.seconds, gather.rays});
+  meter.take(out.phases.back());
 
   // The source kinds, in the order their columns are registered and their direct phases run.
   LuminairePrecompute luminaires(scene, options.opening_samples);
