@@ -118,23 +118,18 @@ void trace_row(const PreparedMesh& mesh, const TracedScene& traced, Vec3 origin,
 
 // Every rank's chunks from theirs (engine/ranks.h: a chunk is one of the ranks' blocks).
 void share_chunks(const RankShares& ranks, std::vector<ChunkRows>& chunks) {
-  std::vector<std::uint8_t> bytes;
-  for (const std::size_t c : ranks.my_blocks()) {
-    put_values<std::uint32_t>(bytes, chunks[c].row_sizes);
-    put_values<std::uint32_t>(bytes, chunks[c].columns);
-    put_values<float>(bytes, chunks[c].values);
-  }
-  const std::vector<std::vector<std::uint8_t>> all = ranks.exchange->all_gather(bytes);
-  for (int k = 0; k < ranks.size(); ++k) {
-    if (k == ranks.rank()) continue;
-    const std::vector<std::uint8_t>& theirs = all[static_cast<std::size_t>(k)];
-    std::size_t at = 0;
-    for (const std::size_t c : ranks.blocks_of(k)) {
-      chunks[c].row_sizes = take_values<std::uint32_t>(theirs, at);
-      chunks[c].columns = take_values<std::uint32_t>(theirs, at);
-      chunks[c].values = take_values<float>(theirs, at);
-    }
-  }
+  share_block_records(
+      ranks,
+      [&](std::size_t c, std::vector<std::uint8_t>& bytes) {
+        put_values<std::uint32_t>(bytes, chunks[c].row_sizes);
+        put_values<std::uint32_t>(bytes, chunks[c].columns);
+        put_values<float>(bytes, chunks[c].values);
+      },
+      [&](std::size_t c, std::span<const std::uint8_t> theirs, std::size_t& at) {
+        chunks[c].row_sizes = take_values<std::uint32_t>(theirs, at);
+        chunks[c].columns = take_values<std::uint32_t>(theirs, at);
+        chunks[c].values = take_values<float>(theirs, at);
+      });
 }
 
 }  // namespace

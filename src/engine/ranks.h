@@ -149,6 +149,24 @@ void share_rows(const RankShares& ranks, std::size_t stride, std::vector<T>& dat
   share_rows(ranks, stride, std::span<T>(data));
 }
 
+// Records of varying length per block (a chunk of a gather operator's rows, of encoded
+// cubemaps): `put(b, bytes)` appends this rank's block b's record (put_values below), each of
+// its blocks in order; on return (collective) `take(b, record, at)` has read every other rank's
+// block b from its ranks' bytes, advancing `at`.
+template <typename Put, typename Take>
+void share_block_records(const RankShares& ranks, Put put, Take take) {
+  std::vector<std::uint8_t> bytes;
+  for (const std::size_t b : ranks.my_blocks()) put(b, bytes);
+  const std::vector<std::vector<std::uint8_t>> all = ranks.exchange->all_gather(bytes);
+  for (int k = 0; k < ranks.size(); ++k) {
+    if (k == ranks.rank()) continue;
+    const std::vector<std::uint8_t>& theirs = all[static_cast<std::size_t>(k)];
+    std::size_t at = 0;
+    for (const std::size_t b : ranks.blocks_of(k)) take(b, std::span(theirs), at);
+    if (at != theirs.size()) throw std::runtime_error("rank exchange: a share of another size");
+  }
+}
+
 // The same for the rows of a receivers × columns matrix.
 void share_rows(const RankShares& ranks, Eigen::MatrixXf& matrix);
 

@@ -244,31 +244,26 @@ void sample_receiver(Vec3 point, Vec3 normal, std::size_t receiver, const Portal
 
 // Every rank's chunks from theirs (engine/ranks.h: a chunk is one of the ranks' blocks).
 void share_chunks(const RankShares& ranks, std::vector<ChunkOutput>& chunks) {
-  std::vector<std::uint8_t> bytes;
-  for (const std::size_t c : ranks.my_blocks()) {
-    const ChunkOutput& o = chunks[c];
-    put_values<std::uint8_t>(bytes, o.bytes);
-    put_values<std::uint32_t>(bytes, o.sizes);
-    put_values<EncodedReceiver>(bytes, o.encoded);
-    put_values<Vec3>(bytes, std::span(&o.flow, 1));
-    put_values<std::uint64_t>(bytes, std::array{o.rays, o.samples});
-  }
-  const std::vector<std::vector<std::uint8_t>> all = ranks.exchange->all_gather(bytes);
-  for (int k = 0; k < ranks.size(); ++k) {
-    if (k == ranks.rank()) continue;
-    const std::vector<std::uint8_t>& theirs = all[static_cast<std::size_t>(k)];
-    std::size_t at = 0;
-    for (const std::size_t c : ranks.blocks_of(k)) {
-      ChunkOutput& o = chunks[c];
-      o.bytes = take_values<std::uint8_t>(theirs, at);
-      o.sizes = take_values<std::uint32_t>(theirs, at);
-      o.encoded = take_values<EncodedReceiver>(theirs, at);
-      o.flow = take_values<Vec3>(theirs, at).at(0);
-      const std::vector<std::uint64_t> counts = take_values<std::uint64_t>(theirs, at);
-      o.rays = counts.at(0);
-      o.samples = counts.at(1);
-    }
-  }
+  share_block_records(
+      ranks,
+      [&](std::size_t c, std::vector<std::uint8_t>& bytes) {
+        const ChunkOutput& o = chunks[c];
+        put_values<std::uint8_t>(bytes, o.bytes);
+        put_values<std::uint32_t>(bytes, o.sizes);
+        put_values<EncodedReceiver>(bytes, o.encoded);
+        put_values<Vec3>(bytes, std::span(&o.flow, 1));
+        put_values<std::uint64_t>(bytes, std::array{o.rays, o.samples});
+      },
+      [&](std::size_t c, std::span<const std::uint8_t> theirs, std::size_t& at) {
+        ChunkOutput& o = chunks[c];
+        o.bytes = take_values<std::uint8_t>(theirs, at);
+        o.sizes = take_values<std::uint32_t>(theirs, at);
+        o.encoded = take_values<EncodedReceiver>(theirs, at);
+        o.flow = take_values<Vec3>(theirs, at).at(0);
+        const std::vector<std::uint64_t> counts = take_values<std::uint64_t>(theirs, at);
+        o.rays = counts.at(0);
+        o.samples = counts.at(1);
+      });
 }
 
 }  // namespace
