@@ -133,6 +133,7 @@ void share_rows(const RankShares& ranks, std::size_t stride, std::span<T> data) 
   }
   const std::vector<std::vector<std::uint8_t>> all = ranks.exchange->all_gather(mine);
   for (int k = 0; k < ranks.size(); ++k) {
+    if (k == ranks.rank()) continue;
     const std::vector<std::uint8_t>& theirs = all[static_cast<std::size_t>(k)];
     std::size_t at = 0;
     for (const std::size_t b : ranks.blocks_of(k)) {
@@ -189,8 +190,9 @@ std::vector<T> take_values(std::span<const std::uint8_t> in, std::size_t& at) {
   if (in.size() - at < sizeof n) throw std::runtime_error("rank exchange: a record cut short");
   std::memcpy(&n, in.data() + at, sizeof n);
   at += sizeof n;
-  if ((in.size() - at) / sizeof(T) < n)
+  if ((in.size() - at) / sizeof(T) < n) {
     throw std::runtime_error("rank exchange: a record cut short");
+  }
   std::vector<T> out(static_cast<std::size_t>(n));
   if (n > 0) std::memcpy(out.data(), in.data() + at, out.size() * sizeof(T));
   at += out.size() * sizeof(T);
