@@ -516,14 +516,42 @@ class GltfReader {
   ImportedMesh mesh_;
 };
 
+// What keep_image reads and fills: the images' encoded bytes, and the model being loaded.
+struct ImageLoad {
+  EncodedImages* images = nullptr;
+  const tinygltf::Model* model = nullptr;
+};
+
 // Keeps an image's encoded bytes; decoding waits until a base colour texture needs it, so
 // that the images of other textures (normal maps, occlusion) are neither decoded nor required
-// to be readable.
-bool keep_image(tinygltf::Image*, const int index, std::string*, std::string*, int, int,
-                const unsigned char* bytes, int size, void* images) {
-  if (bytes != nullptr && size > 0) {
-    (*static_cast<EncodedImages*>(images))[index].assign(bytes, bytes + size);
+// to be readable. tinygltf hands over an image in a buffer view as the view's bytes without
+// checking that the view lies inside its buffer (the model's buffers and views are loaded by
+// then): such an image is refused here instead of read past the buffer (found by fuzz_gltf,
+// tests/fuzz/corpus/gltf/image-view-past-its-buffer.gltf).
+bool keep_image(tinygltf::Image* image, const int index, std::string* error, std::string*, int, int,
+                const unsigned char* bytes, int size, void* user) {
+  const ImageLoad& load = *static_cast<const ImageLoad*>(user);
+  if (image != nullptr && image->bufferView >= 0) {
+    const std::vector<tinygltf::BufferView>& views = load.model->bufferViews;
+    const auto v = static_cast<std::size_t>(image->bufferView);
+    const bool inside = [&] {
+      if (v >= views.size() || views[v].buffer < 0 ||
+          static_cast<std::size_t>(views[v].buffer) >= load.model->buffers.size()) {
+        return false;
+      }
+      const std::size_t held =
+          load.model->buffers[static_cast<std::size_t>(views[v].buffer)].data.size();
+      return views[v].byteOffset <= held && views[v].byteLength <= held - views[v].byteOffset &&
+             static_cast<std::size_t>(std::max(size, 0)) <= views[v].byteLength;
+    }();
+    if (!inside) {
+      if (error != nullptr) {
+        *error = "image " + std::to_string(index) + ": its buffer view lies outside its buffer";
+      }
+      return false;
+    }
   }
+  if (bytes != nullptr && size > 0) (*load.images)[index].assign(bytes, bytes + size);
   return true;
 }
 
@@ -550,7 +578,8 @@ ImportedMesh import_gltf(const std::filesystem::path& file) {
   tinygltf::Model model;
   tinygltf::TinyGLTF loader;
   EncodedImages images;
-  loader.SetImageLoader(&keep_image, &images);
+  ImageLoad load{&images, &model};
+  loader.SetImageLoader(&keep_image, &load);
   std::string error, warning;
   bool ok = false;
   try {

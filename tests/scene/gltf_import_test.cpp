@@ -286,6 +286,19 @@ TEST_F(GltfImport, BrokenJsonMissingBufferAndBadReferencesAreInputErrors) {
   EXPECT_THROW(import_mesh(truncated), InputError);
 }
 
+// Found by fuzz_gltf (issue 16): tinygltf hands an image in a buffer view to the image loader as
+// the view's bytes without checking that the view lies inside its buffer; the import refuses it
+// instead of reading past the buffer (under ASan: a heap-buffer-overflow before the fix).
+TEST_F(GltfImport, AnImageWhoseBufferViewRunsPastItsBufferIsAnInputError) {
+  json doc = quad_document(embedded_buffer(), {{{"mesh", 0}}}, indexed_quad());
+  doc["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 40}, {"byteLength", 400}});
+  doc["images"] = {{{"bufferView", doc["bufferViews"].size() - 1}, {"mimeType", "image/png"}}};
+  const fs::path path = write("view.gltf", doc.dump());
+  const std::string message = error_of(path);
+  EXPECT_EQ(message.rfind(path.string() + ": ", 0), 0u) << message;
+  EXPECT_NE(message.find("buffer view lies outside its buffer"), std::string::npos) << message;
+}
+
 // issue 13: a base colour texture (a 2 × 1 PNG: red, then blue) on the quad, through
 // TEXCOORD_0 (accessor 2), as a file beside the .gltf and as a data URI: the triangles carry
 // the texture and their corners' UVs, the texture holds the decoded (linear) texels.
