@@ -76,7 +76,6 @@ struct RankShares {
   std::vector<std::size_t> my_blocks() const { return blocks_of(rank()); }
   // Receivers in this rank's blocks.
   std::size_t my_receivers() const;
-  double exchange_seconds() const { return exchange->exchange_seconds(); }
 };
 
 // `receivers` in blocks of `block` dealt to the ranks of `exchange`. Throws

@@ -1,7 +1,5 @@
 #include "sources/luminaire/luminaire_direct.h"
 
-#include "engine/transfer_blocks.h"
-
 #include <atomic>
 #include <cmath>
 
@@ -9,6 +7,7 @@
 #include <tbb/parallel_for.h>
 
 #include "common/progress.h"
+#include "engine/transfer_blocks.h"
 
 namespace relight {
 
