@@ -31,7 +31,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr std::size_t kMaxPixels = std::size_t{1} << 30;
 constexpr std::size_t kPixelStride = 3 * sizeof(float);  // interleaved R, G, B floats
 
 class MemoryOStream final : public Imf::OStream {
@@ -144,12 +143,12 @@ Image read_luminance_chroma(const fs::path& path, const Imath::Box2i& window, in
   return image;
 }
 
-Image decode_exr(const fs::path& path) {
+Image decode_exr(const fs::path& path, std::size_t max_pixels) {
   Imf::InputFile file(path.c_str());
   const Imath::Box2i window = file.header().dataWindow();
   const long long w = static_cast<long long>(window.max.x) - window.min.x + 1;
   const long long h = static_cast<long long>(window.max.y) - window.min.y + 1;
-  if (w <= 0 || h <= 0 || static_cast<std::size_t>(w * h) > kMaxPixels) {
+  if (w <= 0 || h <= 0 || static_cast<std::size_t>(w * h) > max_pixels) {
     fail_input(path.string(),
                "unsupported data window " + std::to_string(w) + "x" + std::to_string(h));
   }
@@ -185,12 +184,35 @@ Image decode_exr(const fs::path& path) {
   fail_input(path.string(), "no R, G, B or Y channel");
 }
 
+std::int32_t little_endian_i32(const unsigned char* b) {
+  return static_cast<std::int32_t>(
+      static_cast<std::uint32_t>(b[0]) | static_cast<std::uint32_t>(b[1]) << 8 |
+      static_cast<std::uint32_t>(b[2]) << 16 | static_cast<std::uint32_t>(b[3]) << 24);
+}
+
+// Refuses a data window (box2i: xMin, yMin, xMax, yMax) that decode_exr would refuse, before
+// OpenEXR sizes its line buffers by it: a header declaring 10⁹ × 768 pixels made OpenEXR spend
+// seconds before decode_exr saw the window (fuzz_envmap).
+void check_data_window(const fs::path& path, const unsigned char (&box)[16],
+                       std::size_t max_pixels) {
+  const long long w =
+      static_cast<long long>(little_endian_i32(box + 8)) - little_endian_i32(box) + 1;
+  const long long h =
+      static_cast<long long>(little_endian_i32(box + 12)) - little_endian_i32(box + 4) + 1;
+  if (w <= 0 || h <= 0 ||
+      static_cast<unsigned long long>(w) * static_cast<unsigned long long>(h) > max_pixels) {
+    fail_input(path.string(),
+               "unsupported data window " + std::to_string(w) + "x" + std::to_string(h));
+  }
+}
+
 // Every attribute of an OpenEXR file's first header (OpenEXR file layout: magic, version, then
 // attributes of name, type name, a little-endian int32 size and the value, up to an empty name)
 // must fit in the file. OpenEXR allocates an attribute of a type it does not know by its
 // declared size before reading it, so a file of a few hundred bytes could ask for 2 GiB.
-// Refused here, naming the attribute; what this walk cannot follow is left to OpenEXR.
-void check_exr_attribute_sizes(const fs::path& path) {
+// Refused here, naming the attribute; what this walk cannot follow is left to OpenEXR. The data
+// window is checked here too (check_data_window).
+void check_exr_header(const fs::path& path, std::size_t max_pixels) {
   std::error_code error;
   const std::uintmax_t file_bytes = fs::file_size(path, error);
   if (error) return;
@@ -205,18 +227,21 @@ void check_exr_attribute_sizes(const fs::path& path) {
   while (in) {
     const std::string name = read_name();
     if (name.empty()) return;  // the end of the header
-    read_name();               // the attribute's type
+    const std::string type = read_name();
     unsigned char size_bytes[4] = {};
     if (!in.read(reinterpret_cast<char*>(size_bytes), 4)) return;
-    const std::int64_t size = static_cast<std::int32_t>(
-        static_cast<std::uint32_t>(size_bytes[0]) | static_cast<std::uint32_t>(size_bytes[1]) << 8 |
-        static_cast<std::uint32_t>(size_bytes[2]) << 16 |
-        static_cast<std::uint32_t>(size_bytes[3]) << 24);
+    const std::int64_t size = little_endian_i32(size_bytes);
     const auto at = static_cast<std::uintmax_t>(in.tellg());
     if (size < 0 || static_cast<std::uintmax_t>(size) > file_bytes - at) {
       fail_input(path.string(), "attribute \"" + name + "\" declares " + std::to_string(size) +
                                     " bytes but the file has " + std::to_string(file_bytes - at) +
                                     " after it: truncated or corrupt");
+    }
+    if (name == "dataWindow" && type == "box2i" && size == 16) {
+      unsigned char box[16] = {};
+      if (!in.read(reinterpret_cast<char*>(box), 16)) return;
+      check_data_window(path, box, max_pixels);
+      continue;
     }
     in.seekg(static_cast<std::streamoff>(size), std::ios::cur);
   }
@@ -235,13 +260,13 @@ void write_exr(const fs::path& path, const Image& image, ExrChannels channels) {
   write_bytes_atomically(path, bytes);
 }
 
-Image read_exr(const fs::path& path) {
+Image read_exr(const fs::path& path, std::size_t max_pixels) {
   std::error_code error;
   if (!fs::is_regular_file(path, error)) fail_input(path.string(), "no such file");
   if (!Imf::isOpenExrFile(path.c_str())) fail_input(path.string(), "not an OpenEXR file");
-  check_exr_attribute_sizes(path);
+  check_exr_header(path, max_pixels);
   try {
-    return decode_exr(path);
+    return decode_exr(path, max_pixels);
   } catch (const InputError&) {
     throw;
   } catch (const std::exception& e) {  // damaged or truncated file

@@ -4,6 +4,7 @@
 // read DWAB).
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 
 #include "image/image.h"
@@ -27,7 +28,10 @@ void write_exr(const std::filesystem::path& path, const Image& image,
 // or B (missing ones read as 0; alpha and other channels are ignored), or a luminance
 // (Y) / luminance-chroma (Y, RY, BY) file, in any compression including DWAA/DWAB. The
 // data window becomes the image; the display window is ignored. Throws InputError
-// "PATH: reason" when the file is missing, not OpenEXR, damaged or has no colour channel.
-Image read_exr(const std::filesystem::path& path);
+// "PATH: reason" when the file is missing, not OpenEXR, damaged or has no colour channel,
+// or when its data window holds more than `max_pixels` (refused from the header, before
+// decoding).
+inline constexpr std::size_t kExrMaxPixels = std::size_t{1} << 30;
+Image read_exr(const std::filesystem::path& path, std::size_t max_pixels = kExrMaxPixels);
 
 }  // namespace relight

@@ -171,6 +171,52 @@ bool jpeg_reaches_its_end(std::span<const std::uint8_t> b) {
   return false;
 }
 
+// Refuses a JPEG whose scans cannot hold the picture its frame header (SOF, ITU-T T.81 §B.2.2)
+// declares. Huffman coding spends at least one bit on every 8 × 8 block of every component (a
+// DC difference's category is a code of 1 to 16 bits, §F.1.2.1, Annex C; a progressive file
+// codes every DC first, §G.1.1.1.1), so the bytes from the first scan (SOS) on number at least
+// the blocks / 8. libjpeg decodes the blocks a file lacks as grey with only a warning: 859 bytes
+// declaring 12048 × 18956 px took 10 s to decode to nothing (fuzz_photo). Arithmetic coding
+// (SOF9–11, 13–15) has no such bound and no camera writes it: refused as unsupported.
+void check_jpeg_scans_hold_the_frame(std::span<const std::uint8_t> b, const std::string& what) {
+  const std::span<const std::uint8_t> head = b.first(std::min(b.size(), kHeaderBytes));
+  const auto frame = find_jpeg_marker(head, [](std::uint8_t marker) {
+    return marker >= 0xC0 && marker <= 0xCF && marker != 0xC4 && marker != 0xC8 && marker != 0xCC;
+  });
+  const auto scan = find_jpeg_marker(head, [](std::uint8_t marker) { return marker == 0xDA; });
+  if (!frame || !scan) return;  // imdecode says what is wrong
+  const std::uint8_t marker = head[*frame + 1];
+  if (marker >= 0xC9) {
+    std::ostringstream reason;
+    reason << "an arithmetic-coded JPEG (SOF" << (marker - 0xC0) << ") is not supported";
+    fail_input(what, reason.str());
+  }
+  const std::uint64_t height = big_endian(head, *frame + 5, 2),
+                      width = big_endian(head, *frame + 7, 2);
+  const std::size_t components = head[*frame + 9];
+  if (*frame + 10 + 3 * components > head.size()) return;
+  std::uint64_t h_max = 1, v_max = 1;
+  for (std::size_t c = 0; c < components; ++c) {
+    const std::uint8_t sampling = head[*frame + 11 + 3 * c];
+    h_max = std::max<std::uint64_t>(h_max, sampling >> 4);
+    v_max = std::max<std::uint64_t>(v_max, sampling & 15);
+  }
+  const auto up = [](std::uint64_t a, std::uint64_t d) { return (a + d - 1) / d; };
+  std::uint64_t blocks = 0;
+  for (std::size_t c = 0; c < components; ++c) {
+    const std::uint8_t sampling = head[*frame + 11 + 3 * c];
+    blocks +=
+        up(up(width * (sampling >> 4), h_max), 8) * up(up(height * (sampling & 15), v_max), 8);
+  }
+  const std::uint64_t needed = up(blocks, 8), held = b.size() - *scan;
+  if (held < needed) {
+    std::ostringstream reason;
+    reason << width << " × " << height << " px in " << held << " bytes of scans (at least "
+           << needed << " needed): truncated or corrupt";
+    fail_input(what, reason.str());
+  }
+}
+
 // Width × height from the first bytes of a JPEG (its start-of-frame marker, ITU-T T.81 §B.2.2),
 // PNG (IHDR, PNG §11.2.2) or TIFF (ImageWidth 256 and ImageLength 257 of the first IFD,
 // TIFF 6.0 §2); nullopt when the header does not say within these bytes.
@@ -236,6 +282,7 @@ Photo decode_photo(std::span<const std::uint8_t> bytes, const std::string& what)
   if (head[0] == 0xFF && !jpeg_reaches_its_end(bytes)) {
     fail_input(what, "a JPEG without its end (EOI marker): truncated");
   }
+  if (head[0] == 0xFF) check_jpeg_scans_hold_the_frame(bytes, what);
   // imdecode reads from a Mat header over the bytes; it does not write them.
   const cv::Mat encoded(1, static_cast<int>(std::min<std::size_t>(bytes.size(), INT32_MAX)), CV_8U,
                         const_cast<std::uint8_t*>(bytes.data()));

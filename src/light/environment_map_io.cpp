@@ -79,8 +79,9 @@ void check_hdr_runs(const fs::path& path, std::ifstream& in, std::streamoff star
 // each of the 4 components in runs of at most 127 bytes, each run at least 2 bytes. stb decodes
 // the bytes a flat file lacks as zeros: a truncated file would read as black, and a file of a
 // few bytes declaring 2²⁴ × 2²³ pixels would ask for gigabytes. So the pixel data must hold at
-// least those minima; refused before decoding otherwise. Pinned by EnvironmentMapIo.*Truncated*.
-void check_hdr_holds_its_pixels(const fs::path& path) {
+// least those minima, and declare at most `max_pixels`; refused before decoding otherwise. Pinned
+// by EnvironmentMapIo.*Truncated*.
+void check_hdr_holds_its_pixels(const fs::path& path, std::size_t max_pixels) {
   std::ifstream in(path, std::ios::binary);
   std::string line;
   while (std::getline(in, line) && !line.empty()) {
@@ -108,12 +109,16 @@ void check_hdr_holds_its_pixels(const fs::path& path) {
                                   " bytes of them (at least " + std::to_string(needed) +
                                   " needed): truncated");
   }
+  if (w * h > max_pixels) {
+    fail_input(path.string(), "declares " + std::to_string(width) + " × " + std::to_string(height) +
+                                  " pixels, more than " + std::to_string(max_pixels));
+  }
   if (run_length) check_hdr_runs(path, in, start, width, height);
 }
 
-EquirectMap read_hdr(const fs::path& path) {
+EquirectMap read_hdr(const fs::path& path, std::size_t max_pixels) {
   if (!stbi_is_hdr(path.c_str())) fail_input(path.string(), "not a Radiance HDR (RGBE) file");
-  check_hdr_holds_its_pixels(path);
+  check_hdr_holds_its_pixels(path, max_pixels);
   int width = 0, height = 0, channels = 0;
   const std::unique_ptr<float, StbFloatFree> pixels(
       stbi_loadf(path.c_str(), &width, &height, &channels, 3));
@@ -130,8 +135,8 @@ EquirectMap read_hdr(const fs::path& path) {
   return map;
 }
 
-EquirectMap read_exr_map(const fs::path& path) {
-  Image image = read_exr(path);
+EquirectMap read_exr_map(const fs::path& path, std::size_t max_pixels) {
+  Image image = read_exr(path, max_pixels);
   EquirectMap map;
   map.width = image.width;
   map.height = image.height;
@@ -141,15 +146,15 @@ EquirectMap read_exr_map(const fs::path& path) {
 
 }  // namespace
 
-EquirectMap read_environment_map(const fs::path& path) {
+EquirectMap read_environment_map(const fs::path& path, std::size_t max_pixels) {
   const std::string ext = lower_extension(path);
   std::error_code error;
   if (!fs::is_regular_file(path, error)) fail_input(path.string(), "no such file");
   EquirectMap map;
   if (ext == ".exr") {
-    map = read_exr_map(path);
+    map = read_exr_map(path, max_pixels);
   } else if (ext == ".hdr") {
-    map = read_hdr(path);
+    map = read_hdr(path, max_pixels);
   } else {
     fail_input(path.string(),
                "unsupported environment map type \"" + ext + "\" (expected .exr or .hdr)");

@@ -7,6 +7,7 @@
 
 #include <filesystem>
 
+#include "image/image_exr.h"
 #include "light/environment.h"
 #include "scene/environment_spec.h"
 
@@ -15,8 +16,10 @@ namespace relight {
 // Reads a .exr or .hdr file (chosen by extension, case-insensitive). The image must be twice
 // as wide as tall (a latitude–longitude panorama). Negative values (lossy DWA compression
 // leaves a few small ones) read as 0. Throws InputError "FILE: reason" when the file is
-// missing, of another type, damaged, not 2:1, or holds a non-finite value.
-EquirectMap read_environment_map(const std::filesystem::path& path);
+// missing, of another type, damaged, not 2:1, or holds a non-finite value, or when it declares
+// more than `max_pixels` (refused before decoding; a smaller bound keeps fuzz_envmap fast).
+EquirectMap read_environment_map(const std::filesystem::path& path,
+                                 std::size_t max_pixels = kExrMaxPixels);
 
 // make_environment with the map file of a map spec read by read_environment_map.
 Environment load_environment(const EnvironmentSpec& spec);

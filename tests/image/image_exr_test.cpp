@@ -10,6 +10,7 @@
 #include <half.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -227,6 +228,31 @@ TEST_F(ImageExr, AnAttributeLargerThanTheFileIsRefusedNamingIt) {
               std::string::npos)
         << e.what();
   }
+}
+
+// A header declaring ~10⁹ × 769 pixels (fuzz_envmap's input) is refused from the header, before
+// OpenEXR sizes its buffers by it (that took seconds), and names the window.
+TEST_F(ImageExr, AHugeDataWindowIsRefusedFromTheHeader) {
+  write_exr(path("whole.exr"), make_image(4, 2, {1, 2, 3}));
+  std::string bytes;
+  {
+    std::ifstream in(path("whole.exr"), std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  const std::string attribute("dataWindow\0box2i\0\x10\0\0\0", 21);
+  const std::size_t at = bytes.find(attribute);
+  ASSERT_NE(at, std::string::npos);
+  bytes.replace(at + attribute.size() + 8, 8, std::string("\x00\x07\x00\x3f\x00\x03\x00\x00", 8));
+  std::ofstream(path("huge.exr"), std::ios::binary) << bytes;
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    read_exr(path("huge.exr"));
+    FAIL() << "no exception";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              path("huge.exr").string() + ": unsupported data window 1056966401x769");
+  }
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1.0);
 }
 
 // Blender's studio-light environment maps are DWAB-compressed (ARCHITECTURE §5).

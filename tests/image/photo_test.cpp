@@ -119,6 +119,43 @@ TEST(Photo, AJpegCutBeforeItsEndIsRefusedAndTrailingBytesAreKept) {
   }
 }
 
+// Huffman coding spends at least a bit on every 8 × 8 block: a frame declaring 228 megapixels
+// over a few hundred bytes of scans (fuzz_photo's input decoded for 10 s) is refused before
+// decoding, and so is an arithmetic-coded frame. The photo as written still reads.
+TEST(Photo, AJpegWhoseScansCannotHoldItsFrameIsRefused) {
+  const testing::TempDir dir;
+  write_photo_jpeg(dir.path() / "a.jpg", gradient(64, 48), 90, {0.01, std::nullopt, std::nullopt});
+  const std::string jpeg = testing::read_text(dir.path() / "a.jpg");
+  EXPECT_EQ(read_photo(dir.path() / "a.jpg").height, 48);
+  const std::size_t sof = jpeg.find("\xFF\xC0");
+  ASSERT_NE(sof, std::string::npos);
+  std::string large = jpeg;
+  large.replace(sof + 5, 4, "\x4a\x0c\x2f\x10");  // 12048 × 18956
+  const auto file = dir.write("large.jpg", large);
+  const std::size_t scans = jpeg.size() - jpeg.find("\xFF\xDA");
+  try {
+    read_photo(file);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    // 4:2:0: 1506 × 2370 luma blocks and 753 × 1185 of each chroma: 5,353,830 blocks, 669,229
+    // bytes.
+    EXPECT_EQ(std::string(e.what()), file.string() + ": 12048 × 18956 px in " +
+                                         std::to_string(scans) +
+                                         " bytes of scans (at least 669229 needed): truncated or "
+                                         "corrupt");
+  }
+  std::string arithmetic = jpeg;
+  arithmetic[sof + 1] = '\xC9';
+  const auto coded = dir.write("arithmetic.jpg", arithmetic);
+  try {
+    read_photo(coded);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              coded.string() + ": an arithmetic-coded JPEG (SOF9) is not supported");
+  }
+}
+
 TEST(Photo, AHeaderDeclaringMoreThan250MegapixelsIsRefusedBeforeDecodingInUnderASecond) {
   const testing::TempDir dir;
   write_photo_jpeg(dir.path() / "a.jpg", gradient(64, 48), 90, {0.01, std::nullopt, std::nullopt});

@@ -69,6 +69,29 @@ TEST(EnvironmentMapIo, ReadsRadianceHdr) {
   EXPECT_LT(d.z, 0);
 }
 
+// A map declaring more pixels than the caller's bound is refused before decoding, EXR and .hdr.
+TEST(EnvironmentMapIo, AMapOfMorePixelsThanTheBoundIsRefused) {
+  testing::TempDir dir;
+  const int w = 32, h = 16;
+  write_exr(dir.path() / "env.exr", make_image(w, h, {1, 2, 3}));
+  const std::vector<float> rgb(3 * w * h, 0.25f);
+  const fs::path hdr = dir.path() / "env.hdr";
+  ASSERT_NE(stbi_write_hdr(hdr.c_str(), w, h, 3, rgb.data()), 0);
+  for (const fs::path& file : {dir.path() / "env.exr", hdr}) {
+    EXPECT_EQ(read_environment_map(file, w * h).width, w) << file;
+    try {
+      read_environment_map(file, w * h - 1);
+      ADD_FAILURE() << "no exception for " << file;
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      EXPECT_EQ(what.rfind(file.string() + ": ", 0), 0u) << what;
+      EXPECT_TRUE(what.find("32x16") != std::string::npos ||
+                  what.find("32 × 16 pixels, more than 511") != std::string::npos)
+          << what;
+    }
+  }
+}
+
 TEST(EnvironmentMapIo, Errors) {
   testing::TempDir dir;
   EXPECT_EQ(error_of(dir.path() / "missing.exr"),
