@@ -128,7 +128,7 @@ void precompute_and_write(const Scene& scene, const nlohmann::json& document,
     std::printf(
         "  %d ranks: each phase's time is its slowest rank's; [work: the ranks' least and "
         "most time in the phase's own work, exchange: in exchanges, waiting included, and the most "
-                "bytes a rank received]\n",
+        "bytes a rank received]\n",
         ranks);
   }
   for (const PhaseLine& t : phases) {
@@ -146,9 +146,10 @@ void precompute_and_write(const Scene& scene, const nlohmann::json& document,
     std::printf("\n");
   }
   if (ranks > 1) {
-    std::printf("  exchanges between ranks: %.1f–%.1f %% of a rank's time, at most %.1f MB "
-                "received by a rank\n",
-                100 * exchange.least_share, 100 * exchange.most_share, exchange.most_bytes * 1e-6);
+    std::printf(
+        "  exchanges between ranks: %.1f–%.1f %% of a rank's time, at most %.1f MB "
+        "received by a rank\n",
+        100 * exchange.least_share, 100 * exchange.most_share, exchange.most_bytes * 1e-6);
   }
   std::printf("  bounces: %d (tolerance %g)\n", p.bounces, scene.precompute.tolerance);
   for (const PortalTransfer& t : p.portals) {
@@ -163,7 +164,7 @@ void precompute_and_write(const Scene& scene, const nlohmann::json& document,
         s.pulse ? double(s.pulse_bytes) / double(s.pulse) : 0.0, s.haar,
         s.haar ? double(s.haar_bytes) / double(s.haar) : 0.0, double(s.all_pulse_bytes) / n,
         double(s.all_haar_bytes) / n, double(t.direct.samples) / n, p.portal_sh_order,
-        double(t.indirect_blocks.size() * sizeof(float)) / n);
+        double(t.indirect.size_bytes()) / n);
   }
   for (std::size_t i = 0; i < p.objects.size(); ++i) {
     const ObjectMesh& o = p.objects[i];

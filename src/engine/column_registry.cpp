@@ -14,11 +14,12 @@ ColumnRange ColumnRegistry::add(std::string owner, Eigen::Index count) {
   return r;
 }
 
-std::vector<float> pack_indirect_blocks(const BounceResult& result, ColumnRange r) {
+PackedTransfer pack_indirect_blocks(const BounceResult& result, ColumnRange r,
+                                    TransferStorage storage) {
   const Eigen::MatrixXf red = indirect_of(result, 0, r);
   const Eigen::MatrixXf green = indirect_of(result, 1, r);
   const Eigen::MatrixXf blue = indirect_of(result, 2, r);
-  return pack_blocks({&red, &green, &blue});
+  return store_blocks(pack_blocks({&red, &green, &blue}), storage);
 }
 
 }  // namespace relight

@@ -13,6 +13,7 @@
 #include <Eigen/Core>
 
 #include "engine/bounce_solver.h"
+#include "engine/transfer_blocks.h"
 
 namespace relight {
 
@@ -52,7 +53,9 @@ inline auto indirect_of(const BounceResult& result, int channel, ColumnRange r) 
   return result.indirect[static_cast<std::size_t>(channel)].middleCols(r.first, r.count);
 }
 
-// A range's interreflected columns packed in the blocked RGB layout (engine/transfer_blocks.h).
-std::vector<float> pack_indirect_blocks(const BounceResult& result, ColumnRange r);
+// A range's interreflected columns packed in the blocked RGB layout and stored as `storage`
+// (engine/transfer_blocks.h).
+PackedTransfer pack_indirect_blocks(const BounceResult& result, ColumnRange r,
+                                    TransferStorage storage);
 
 }  // namespace relight

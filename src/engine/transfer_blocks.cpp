@@ -1,6 +1,115 @@
 #include "engine/transfer_blocks.h"
 
+#include <Imath/half.h>
+#include <cpuid.h>
+#include <immintrin.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+
 namespace relight {
+
+namespace {
+
+float to_float(RltHalf h) {
+  Imath::half v;
+  v.setBits(h.bits);
+  return static_cast<float>(v);
+}
+
+// acc_c[i] += Σ_k w[3k + c] · scale · t[k][c][i] over one block of binary16 transfer.
+void add_weighted_half_block_table(const RltHalf* t, std::size_t k, const float* w, float scale,
+                                   float (&acc)[3][kBlock]) {
+  for (std::size_t basis = 0; basis < k; ++basis) {
+    for (std::size_t c = 0; c < 3; ++c) {
+      const float weight = w[3 * basis + c] * scale;
+      const RltHalf* tc = t + (3 * basis + c) * kBlock;
+      for (std::size_t i = 0; i < kBlock; ++i) acc[c][i] += weight * to_float(tc[i]);
+    }
+  }
+}
+
+// The same with F16C: eight values converted and multiplied-added a step.
+__attribute__((target("avx2,f16c,fma"))) void add_weighted_half_block_f16c(
+    const RltHalf* t, std::size_t k, const float* w, float scale, float (&acc)[3][kBlock]) {
+  for (std::size_t c = 0; c < 3; ++c) {
+    __m256 sum[kBlock / 8];
+    for (std::size_t j = 0; j < kBlock / 8; ++j) sum[j] = _mm256_loadu_ps(acc[c] + 8 * j);
+    for (std::size_t basis = 0; basis < k; ++basis) {
+      const __m256 weight = _mm256_set1_ps(w[3 * basis + c] * scale);
+      const RltHalf* tc = t + (3 * basis + c) * kBlock;
+      for (std::size_t j = 0; j < kBlock / 8; ++j) {
+        const __m128i packed = _mm_loadu_si128(reinterpret_cast<const __m128i*>(tc + 8 * j));
+        sum[j] = _mm256_fmadd_ps(weight, _mm256_cvtph_ps(packed), sum[j]);
+      }
+    }
+    for (std::size_t j = 0; j < kBlock / 8; ++j) _mm256_storeu_ps(acc[c] + 8 * j, sum[j]);
+  }
+}
+
+}  // namespace
+
+bool has_f16c() {
+  // F16C is CPUID leaf 1, ECX bit 29 (Intel SDM vol. 2A, CPUID); clang 14 has no
+  // __builtin_cpu_supports("f16c"). AVX2's check includes the OS saving the YMM registers.
+  static const bool has = [] {
+    unsigned eax = 0, ebx = 0, ecx = 0, edx = 0;
+    const bool f16c = __get_cpuid(1, &eax, &ebx, &ecx, &edx) != 0 && (ecx & (1u << 29)) != 0;
+    return f16c && __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  }();
+  return has;
+}
+
+void add_weighted_half_block(const RltHalf* t, std::size_t k, const float* w, float scale,
+                             float (&acc)[3][kBlock], bool f16c) {
+  if (f16c) {
+    add_weighted_half_block_f16c(t, k, w, scale, acc);
+  } else {
+    add_weighted_half_block_table(t, k, w, scale, acc);
+  }
+}
+
+void BlockedTransfer::copy_to(std::size_t first, std::span<float> out) const {
+  if (!half()) {
+    std::copy_n(f32.begin() + static_cast<std::ptrdiff_t>(first), out.size(), out.begin());
+    return;
+  }
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = scale * to_float(f16[first + i]);
+}
+
+float half_scale(float largest_magnitude) {
+  if (!(largest_magnitude > 0) || !std::isfinite(largest_magnitude)) return 1;
+  return std::ldexp(1.0f, std::ilogb(largest_magnitude) - 14);
+}
+
+PackedTransfer store_blocks(std::vector<float> blocked, TransferStorage storage) {
+  PackedTransfer out;
+  if (storage == TransferStorage::fp32) {
+    out.f32 = std::move(blocked);
+    return out;
+  }
+  float largest = 0;
+  for (const float v : blocked) largest = std::max(largest, std::abs(v));
+  out.scale = half_scale(largest);
+  out.f16.resize(blocked.size());
+  const float inverse = 1 / out.scale;  // a power of two: exact
+  for (std::size_t i = 0; i < blocked.size(); ++i) {
+    out.f16[i].bits = Imath::half(blocked[i] * inverse).bits();
+  }
+  return out;
+}
+
+void add_weighted_block(const BlockedTransfer& t, std::size_t b, std::size_t k, const float* w,
+                        float (&acc)[3][kBlock]) {
+  const std::size_t at = b * k * 3 * kBlock;
+  if (!t.half()) {
+    add_weighted_block(t.f32.data() + at, k, w, acc);
+  } else {
+    add_weighted_half_block(t.f16.data() + at, k, w, t.scale, acc, has_f16c());
+  }
+}
 
 std::vector<float> pack_blocks(const std::vector<const Eigen::MatrixXf*>& channels) {
   const std::size_t n = static_cast<std::size_t>(channels.front()->rows());

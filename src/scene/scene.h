@@ -142,6 +142,10 @@ struct PrecomputeSettings {
   double tolerance = 1e-4;  // relative change that ends the bounce iteration
   int max_bounces = 100;
   std::string direct = "exact";  // "exact" | "sh" (Dobashi et al. 1995's mode)
+  // How the luminaires' and portals' interreflected SH transfer is stored: "fp16" (binary16
+  // scaled by a power of two, half the bytes for the run-time sum) | "fp32" (issue 18;
+  // engine/transfer_blocks.h).
+  std::string storage = "fp16";
   // Portals (issue 4, Yue et al. 2009 §4.1): the direct component is a cubemap of
   // portal_face_size² cells a face per receiver, each cell the portal covers integrated over
   // portal_samples_per_cell directions (16× as many on the window's outline); the indirect

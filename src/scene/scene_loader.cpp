@@ -424,7 +424,7 @@ struct Loader {
     p.expect_keys({"max_edge", "sh_order", "crease_deg", "gather_rays", "sensor_gather_rays",
                    "tolerance", "max_bounces", "direct", "portal_face_size", "portal_sh_order",
                    "portal_samples_per_cell", "nearfield_sh_order", "nearfield_directions",
-                   "nearfield_interreflection", "nearfield_shadow_distance"});
+                   "nearfield_interreflection", "nearfield_shadow_distance", "storage"});
     PrecomputeSettings& s = scene.precompute;
     if (const auto n = p.find("max_edge")) s.max_edge = n->positive();
     if (const auto n = p.find("sh_order")) s.sh_order = n->integer_in(1, 32);
@@ -441,6 +441,10 @@ struct Loader {
     if (const auto n = p.find("direct")) {
       s.direct = n->string();
       if (s.direct != "exact" && s.direct != "sh") n->fail("expected \"exact\" or \"sh\"");
+    }
+    if (const auto n = p.find("storage")) {
+      s.storage = n->string();
+      if (s.storage != "fp16" && s.storage != "fp32") n->fail("expected \"fp16\" or \"fp32\"");
     }
     if (const auto n = p.find("nearfield_sh_order")) s.nearfield_sh_order = n->integer_in(1, 16);
     if (const auto n = p.find("nearfield_directions")) {

@@ -200,13 +200,13 @@ TransferView in_memory_view(const Precomputed& p) {
   v.direct_sh_mode = p.direct_mode == "sh";
   for (const LuminaireTransfer& l : p.luminaires) {
     v.luminaires.push_back({l.direct.dir_x, l.direct.dir_y, l.direct.dir_z, l.direct.factor,
-                            l.indirect_blocks, l.direct_sh_blocks});
+                            l.indirect.view(), l.direct_sh_blocks});
   }
   v.portal_sh_order = p.portal_sh_order;
   for (const PortalTransfer& t : p.portals) {
     v.portals.push_back({t.geometry.name, t.direct.face_size, t.geometry.centre, t.direct.outward,
                          t.geometry.diameter, t.direct.records, t.direct.offsets,
-                         t.indirect_blocks});
+                         t.indirect.view()});
   }
   v.objects = p.objects;
   v.nearfield.sh_order = p.nearfield.sh_order;

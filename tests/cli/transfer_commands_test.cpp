@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/transfer_blocks.h"
+#include "engine/transfer_sections.h"
 #include "math/sh.h"
 #include "run_command.h"
 #include "store/rlt_file.h"
@@ -199,7 +200,11 @@ TEST_F(TransferCommands, RltHoldsTheRegisteredSections) {
       EXPECT_NEAR(dx[r] * dx[r] + dy[r] * dy[r] + dz[r] * dz[r], 1.0, 1e-5) << r;  // unit
       EXPECT_GT(df[r], 0) << r;
     }
-    const auto ti = f.view<float>(type('T', 'I', j));
+    // Stored as binary16 (the default storage) with its scale; decoded here.
+    EXPECT_EQ(f.info(type('T', 'I', j)).element, RltElement::f16);
+    const BlockedTransfer stored = transfer_section(f, type('T', 'I', j));
+    std::vector<float> ti(stored.size());
+    stored.copy_to(0, ti);
     ASSERT_EQ(ti.size(), blocked_floats(receivers, k, 3));
     EXPECT_EQ(ti.size(), (receivers + 63) / 64 * k * 3 * 64);
     // The last block is zero-padded beyond the last receiver, for every basis and channel.
@@ -227,7 +232,10 @@ TEST_F(TransferCommands, RltLayoutReproducesProbe) {
   const RltFile f = RltFile::open(rlt_);
   const std::size_t j = 1, k = static_cast<std::size_t>(sh_count(kShOrder));
   const auto df = f.view<float>('D' | 'F' << 8 | static_cast<std::uint32_t>(j) << 16);
-  const auto ti = f.view<float>('T' | 'I' << 8 | static_cast<std::uint32_t>(j) << 16);
+  const BlockedTransfer stored =
+      transfer_section(f, 'T' | 'I' << 8 | static_cast<std::uint32_t>(j) << 16);
+  std::vector<float> ti(stored.size());
+  stored.copy_to(0, ti);
   const double candela = 40, w0 = candela * std::sqrt(4 * std::numbers::pi);
   const double y = 0.2126 * 1 + 0.7152 * 0.8 + 0.0722 * 0.6;
   const double colour[3] = {1 / y, 0.8 / y, 0.6 / y};
@@ -457,12 +465,12 @@ TEST_F(TransferCommands, BenchPrintsOneJsonLine) {
   EXPECT_EQ(j.at("receivers").get<std::size_t>(), receivers);
   EXPECT_EQ(j.at("luminaires").get<std::size_t>(), kLuminaires);
   EXPECT_EQ(j.at("frames").get<int>(), 3);
-  // Per luminaire in "exact" mode: the blocked RGB SH transfer plus one direct float per
-  // receiver. A dimmer frame sums the luminaires again and keeps the portals' partial sum:
-  // it reads that transfer and both partial sums and writes the luminaires' sum and the
-  // output (3 floats per receiver each).
+  // Per luminaire in "exact" mode: the blocked RGB SH transfer (binary16, the default
+  // storage) plus one direct float per receiver. A dimmer frame sums the luminaires again and
+  // keeps the portals' partial sum: it reads that transfer and both partial sums and writes
+  // the luminaires' sum and the output (3 floats per receiver each).
   const std::size_t k = static_cast<std::size_t>(sh_count(kShOrder));
-  const std::size_t stored = kLuminaires * 4 * (blocked_floats(receivers, k, 3) + receivers);
+  const std::size_t stored = kLuminaires * (2 * blocked_floats(receivers, k, 3) + 4 * receivers);
   EXPECT_EQ(j.at("stored_transfer_bytes").get<std::size_t>(), stored);
   EXPECT_EQ(j.at("transfer_bytes").get<std::size_t>(), stored + 4 * 3 * receivers * 4);
   EXPECT_NEAR(j.at("ratio").get<double>(),

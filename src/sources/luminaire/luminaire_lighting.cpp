@@ -186,7 +186,7 @@ void LuminaireLighting::add_block(std::size_t b, bool include_direct,
         for (std::size_t i = 0; i < count; ++i) acc[c][i] += l.rgb[c] * d[i];
       }
     }
-    add_weighted_block(v.indirect.data() + b * k * 3 * kBlock, k, l.weights.data(), acc);
+    add_weighted_block(v.indirect, b, k, l.weights.data(), acc);
   }
 }
 

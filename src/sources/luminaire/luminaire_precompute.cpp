@@ -46,7 +46,8 @@ PhaseTiming LuminairePrecompute::compute_direct(const SourceContext& context,
 
 void LuminairePrecompute::take_indirect(const BounceResult& result) {
   for (std::size_t j = 0; j < transfers.size(); ++j) {
-    transfers[j].indirect_blocks = pack_indirect_blocks(result, columns_[j]);
+    transfers[j].indirect = pack_indirect_blocks(
+        result, columns_[j], transfer_storage_named(scene_->precompute.storage));
   }
 }
 

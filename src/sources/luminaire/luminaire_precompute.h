@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "engine/source_precompute.h"
+#include "engine/transfer_blocks.h"
 #include "scene/scene.h"
 #include "sources/luminaire/luminaire_direct.h"
 
@@ -16,7 +17,7 @@ namespace relight {
 
 struct LuminaireTransfer {
   DirectGeometry direct;
-  std::vector<float> indirect_blocks;   // RGB, sh_order² bases, blocked (transfer_blocks.h)
+  PackedTransfer indirect;              // RGB, sh_order² bases, blocked (transfer_blocks.h)
   std::vector<float> direct_sh_blocks;  // 1 channel, same bases; only in "direct": "sh" mode
 };
 

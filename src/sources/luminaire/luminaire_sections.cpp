@@ -2,6 +2,7 @@
 
 #include "common/input_error.h"
 #include "engine/transfer_blocks.h"
+#include "engine/transfer_sections.h"
 #include "math/sh.h"
 #include "store/rlt_format.h"
 
@@ -15,7 +16,8 @@ void write_luminaire_sections(RltWriter& w, std::span<const LuminaireTransfer> l
     w.add_f32(rlt_indexed('D', 'Y', j), rlt_indexed_name("direct dir y", j), l.direct.dir_y);
     w.add_f32(rlt_indexed('D', 'Z', j), rlt_indexed_name("direct dir z", j), l.direct.dir_z);
     w.add_f32(rlt_indexed('D', 'F', j), rlt_indexed_name("direct factor", j), l.direct.factor);
-    w.add_f32(rlt_indexed('T', 'I', j), rlt_indexed_name("indirect sh", j), l.indirect_blocks);
+    add_transfer_section(w, rlt_indexed('T', 'I', j), rlt_indexed_name("indirect sh", j),
+                         l.indirect);
     if (!photometry[j].empty()) {
       w.add_text(rlt_indexed('P', 'H', j), rlt_indexed_name("photometry", j), photometry[j]);
     }
@@ -42,7 +44,7 @@ std::vector<LuminaireTransferView> read_luminaire_sections(const RltFile& file,
     v.dir_y = file.view<float>(rlt_indexed('D', 'Y', j));
     v.dir_z = file.view<float>(rlt_indexed('D', 'Z', j));
     v.factor = file.view<float>(rlt_indexed('D', 'F', j));
-    v.indirect = file.view<float>(rlt_indexed('T', 'I', j));
+    v.indirect = transfer_section(file, rlt_indexed('T', 'I', j));
     if (direct_sh_mode) v.direct_sh = file.view<float>(rlt_indexed('T', 'D', j));
     if (v.dir_x.size() != receivers || v.dir_y.size() != receivers || v.dir_z.size() != receivers ||
         v.factor.size() != receivers || v.indirect.size() != blocked_floats(receivers, k, 3) ||

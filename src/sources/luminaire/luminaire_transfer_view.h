@@ -5,11 +5,13 @@
 
 #include <span>
 
+#include "engine/transfer_blocks.h"
+
 namespace relight {
 
 struct LuminaireTransferView {
   std::span<const float> dir_x, dir_y, dir_z, factor;  // direct geometry, per receiver
-  std::span<const float> indirect;                     // blocked RGB × K
+  BlockedTransfer indirect;                            // blocked RGB × K
   std::span<const float> direct_sh;                    // blocked 1 × K ("sh" mode only)
 };
 

@@ -293,7 +293,7 @@ void PortalSetLighting::add_block(std::size_t b, bool include_direct,
       acc[1][i] += static_cast<float>(e.g);
       acc[2][i] += static_cast<float>(e.b);
     }
-    add_weighted_block(v.indirect.data() + b * kp * 3 * kBlock, kp, l.weights.data(), acc);
+    add_weighted_block(v.indirect, b, kp, l.weights.data(), acc);
   }
   if (sun_direct_.empty()) return;
   for (std::size_t i = 0; i < count; ++i) {

@@ -44,7 +44,8 @@ PhaseTiming PortalPrecompute::compute_direct(const SourceContext& context, Direc
 
 void PortalPrecompute::take_indirect(const BounceResult& result) {
   for (std::size_t p = 0; p < transfers.size(); ++p) {
-    transfers[p].indirect_blocks = pack_indirect_blocks(result, columns_[p]);
+    transfers[p].indirect = pack_indirect_blocks(
+        result, columns_[p], transfer_storage_named(scene_->precompute.storage));
   }
 }
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "engine/source_precompute.h"
+#include "engine/transfer_blocks.h"
 #include "scene/scene.h"
 #include "sources/portal/portal_direct.h"
 #include "sources/portal/portal_geometry.h"
@@ -17,8 +18,8 @@ namespace relight {
 
 struct PortalTransfer {
   PortalGeometry geometry;
-  PortalDirect direct;                 // direct.sh_columns is emptied once registered
-  std::vector<float> indirect_blocks;  // RGB, sh_order² bases, blocked (transfer_blocks.h)
+  PortalDirect direct;      // direct.sh_columns is emptied once registered
+  PackedTransfer indirect;  // RGB, sh_order² bases, blocked (transfer_blocks.h)
 };
 
 class PortalPrecompute : public SourcePrecompute {

@@ -2,6 +2,7 @@
 
 #include "common/input_error.h"
 #include "engine/transfer_blocks.h"
+#include "engine/transfer_sections.h"
 #include "math/sh.h"
 #include "store/rlt_format.h"
 
@@ -38,8 +39,8 @@ void write_portal_sections(RltWriter& w, std::span<const PortalTransfer> portals
                   std::as_bytes(std::span(t.direct.records)));
     w.add_u64(rlt_indexed('C', 'O', q), rlt_indexed_name("portal direct offsets", q),
               t.direct.offsets);
-    w.add_f32(rlt_indexed('P', 'I', q), rlt_indexed_name("portal indirect sh", q),
-              t.indirect_blocks);
+    add_transfer_section(w, rlt_indexed('P', 'I', q), rlt_indexed_name("portal indirect sh", q),
+                         t.indirect);
   }
 }
 
@@ -56,7 +57,7 @@ nlohmann::json portal_metadata(std::span<const PortalTransfer> portals) {
                    {"samples", t.direct.samples},
                    {"rays", t.direct.rays},
                    {"direct_encoding", encoding_stats_json(t.direct.stats)},
-                   {"indirect_bytes", t.indirect_blocks.size() * sizeof(float)}});
+                   {"indirect_bytes", t.indirect.size_bytes()}});
   }
   return out;
 }
@@ -82,7 +83,7 @@ std::vector<PortalTransferView> read_portal_sections(const RltFile& file,
     const std::span<const std::byte> records = file.section(rlt_indexed('C', 'R', q));
     v.records = {reinterpret_cast<const std::uint8_t*>(records.data()), records.size()};
     v.offsets = file.view<std::uint64_t>(rlt_indexed('C', 'O', q));
-    v.indirect = file.view<float>(rlt_indexed('P', 'I', q));
+    v.indirect = transfer_section(file, rlt_indexed('P', 'I', q));
     const int n = v.face_size;
     bool valid = v.name == portals[q].name && n >= 1 && n <= 256 && (n & (n - 1)) == 0 &&
                  v.offsets.size() == receivers + 1 && v.offsets.front() == 0 &&

@@ -8,6 +8,7 @@
 #include <span>
 #include <string>
 
+#include "engine/transfer_blocks.h"
 #include "math/vec3.h"
 
 namespace relight {
@@ -19,7 +20,7 @@ struct PortalTransferView {
   double diameter = 0;
   std::span<const std::uint8_t> records;
   std::span<const std::uint64_t> offsets;  // receivers + 1
-  std::span<const float> indirect;
+  BlockedTransfer indirect;
 };
 
 }  // namespace relight

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <span>
 #include <stdexcept>
+#include <vector>
 
 #include <Eigen/Dense>
 
@@ -19,15 +20,18 @@ using BlockColumns =
 
 // (1/N_v) T_lᵀ T_l of one order and channel, accumulated block by block: in a block the
 // 2l+1 bases of order l are columns of 64 vertices, kChannels · 64 floats apart.
-Eigen::MatrixXd order_gram(std::span<const float> blocks, std::size_t vertex_count,
+Eigen::MatrixXd order_gram(const BlockedTransfer& blocks, std::size_t vertex_count,
                            std::size_t k_count, int l, std::size_t channel) {
   const std::size_t first = static_cast<std::size_t>(l) * static_cast<std::size_t>(l);
   const Eigen::Index width = 2 * l + 1;
   Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(width, width);
+  // The order's span of a block (its bases' channels interleaved), as floats.
+  const std::size_t span = (static_cast<std::size_t>(width) - 1) * kChannels * kBlock + kBlock;
+  std::vector<float> floats(span);
   for (std::size_t b = 0; b < block_count(vertex_count); ++b) {
     const std::size_t rows = std::min(kBlock, vertex_count - b * kBlock);
-    const float* start = blocks.data() + ((b * k_count + first) * kChannels + channel) * kBlock;
-    const BlockColumns t(start, static_cast<Eigen::Index>(rows), width,
+    blocks.copy_to(((b * k_count + first) * kChannels + channel) * kBlock, floats);
+    const BlockColumns t(floats.data(), static_cast<Eigen::Index>(rows), width,
                          Eigen::OuterStride<Eigen::Dynamic>(kChannels * kBlock));
     gram.noalias() += (t.transpose() * t).cast<double>();
   }

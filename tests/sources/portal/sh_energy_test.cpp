@@ -27,7 +27,7 @@ struct Synthetic {
   PortalTransferView view() const {
     PortalTransferView v;
     v.name = "synthetic";
-    v.indirect = blocks;
+    v.indirect.f32 = blocks;
     return v;
   }
 };
