@@ -210,8 +210,12 @@ void check_data_window(const fs::path& path, const unsigned char (&box)[16],
 // attributes of name, type name, a little-endian int32 size and the value, up to an empty name)
 // must fit in the file. OpenEXR allocates an attribute of a type it does not know by its
 // declared size before reading it, so a file of a few hundred bytes could ask for 2 GiB.
-// Refused here, naming the attribute; what this walk cannot follow is left to OpenEXR. The data
-// window is checked here too (check_data_window).
+// Refused here, naming the attribute; what this walk cannot follow is left to OpenEXR. The walk
+// reads as OpenEXR 3.1 does: a channel list (chlist) is read channel by channel up to its empty
+// name, whatever its declared size (a chlist declaring more bytes than its channels hid, from a
+// walk by sizes, the next attribute's 1.7 GB, which OpenEXR then allocated: fuzz_envmap), and a
+// preview image's width × height × 4 bytes must lie within its declared size (OpenEXR allocates
+// them first). The data window is checked here too (check_data_window).
 void check_exr_header(const fs::path& path, std::size_t max_pixels) {
   std::error_code error;
   const std::uintmax_t file_bytes = fs::file_size(path, error);
@@ -241,6 +245,23 @@ void check_exr_header(const fs::path& path, std::size_t max_pixels) {
       unsigned char box[16] = {};
       if (!in.read(reinterpret_cast<char*>(box), 16)) return;
       check_data_window(path, box, max_pixels);
+      continue;
+    }
+    if (type == "chlist") {  // name, then pixel type, linearity, reserved, x and y sampling
+      while (in && !read_name().empty()) in.seekg(16, std::ios::cur);
+      continue;
+    }
+    if (type == "preview" && size >= 8) {
+      unsigned char dimensions[8] = {};
+      if (!in.read(reinterpret_cast<char*>(dimensions), 8)) return;
+      const auto width = static_cast<std::uint32_t>(little_endian_i32(dimensions));
+      const auto height = static_cast<std::uint32_t>(little_endian_i32(dimensions + 4));
+      if (std::uint64_t{4} * width * height > static_cast<std::uint64_t>(size) - 8) {
+        fail_input(path.string(), "preview image of " + std::to_string(width) + "x" +
+                                      std::to_string(height) + " pixels in a " +
+                                      std::to_string(size) + "-byte attribute: corrupt");
+      }
+      in.seekg(static_cast<std::streamoff>(size - 8), std::ios::cur);
       continue;
     }
     in.seekg(static_cast<std::streamoff>(size), std::ios::cur);

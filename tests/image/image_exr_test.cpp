@@ -255,6 +255,30 @@ TEST_F(ImageExr, AHugeDataWindowIsRefusedFromTheHeader) {
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1.0);
 }
 
+// OpenEXR reads a channel list channel by channel up to its empty name, whatever size it
+// declares; the header walk does the same, so a list declaring 12 bytes more than its channels
+// still reads (a walk by sizes landed inside the next attribute: fuzz_envmap's
+// chlist-hides-a-1.7-GB-attribute input).
+TEST_F(ImageExr, AChannelListIsWalkedChannelByChannelAsOpenExrReadsIt) {
+  write_exr(path("whole.exr"), make_image(4, 2, {1, 2, 3}));
+  std::string bytes;
+  {
+    std::ifstream in(path("whole.exr"), std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  const std::string attribute("channels\0chlist\0", 16);
+  const std::size_t at = bytes.find(attribute);
+  ASSERT_NE(at, std::string::npos);
+  const auto size_at = at + attribute.size();
+  const auto declared = static_cast<unsigned char>(bytes[size_at]);
+  ASSERT_LT(declared, 200);
+  bytes[size_at] = static_cast<char>(declared + 12);
+  std::ofstream(path("longer.exr"), std::ios::binary) << bytes;
+  const Image read = read_exr(path("longer.exr"));
+  EXPECT_EQ(read.width, 4);
+  EXPECT_FLOAT_EQ(static_cast<float>(read.at(3, 1).b), 3.0f);
+}
+
 // Blender's studio-light environment maps are DWAB-compressed (ARCHITECTURE §5).
 TEST(ImageExrBlenderData, ReadsStudioLightEnvironmentMaps) {
   const fs::path folder = "/usr/share/blender/datafiles/studiolights/world";
