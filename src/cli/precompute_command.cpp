@@ -121,9 +121,11 @@ void precompute_and_write(const Scene& scene, const nlohmann::json& document,
 
   std::uint64_t rays = 0;
   double seconds = 0;
-  std::printf("precompute %s: %zu vertices, %zu sensors, %zu luminaires, sh_order %d, direct %s\n",
-              scene_file.string().c_str(), p.receivers.vertex_count, p.receivers.sensor_count,
-              p.luminaires.size(), p.sh_order, p.direct_mode.c_str());
+  std::printf(
+      "precompute %s: %zu vertices, %zu sensors, %zu luminaires, sh_order %d, direct %s, "
+      "storage %s\n",
+      scene_file.string().c_str(), p.receivers.vertex_count, p.receivers.sensor_count,
+      p.luminaires.size(), p.sh_order, p.direct_mode.c_str(), scene.precompute.storage.c_str());
   if (ranks > 1) {
     std::printf(
         "  %d ranks: each phase's time is its slowest rank's; [work: the ranks' least and "
