@@ -3,6 +3,8 @@
 // cubemap_encoding.h.
 #include "sources/portal/cubemap_encoding.h"
 
+#include <immintrin.h>
+
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -138,19 +140,48 @@ void for_each_entry(const CubemapRecord& rec, int n, F&& visit) {
   }
 }
 
-// The hot loop: Σ table[k]·value(k, q) over the entries.
+// The hot loop: Σ table[k]·value(k, q) over the entries, in float: a texel is one 4-float
+// load, and four accumulators take the entries in turn (one accumulator waited four cycles per
+// entry on the previous add). A face average (k & face_mask == 0) is uint8 levels × scale, a
+// Haar detail int8 levels × detail scale; a pulse record has no details (face_mask 0).
 template <std::size_t W>
-Rgb sparse_dot(const CubemapRecord& rec, const std::vector<Rgb>& table, const EntryValue& value) {
+Rgb sparse_dot(const CubemapRecord& rec, const std::vector<ShellTexel>& table,
+               const EntryValue& value) {
   const std::uint8_t* idx = rec.indices.data();
   const std::uint8_t* val = rec.values.data();
-  const std::size_t limit = table.size();
-  Rgb acc;
-  for (std::size_t e = 0; e < rec.count; ++e) {
+  const std::size_t limit = table.size(), mask = value.face_mask;
+  const auto scale = static_cast<float>(value.scale);
+  const auto detail_scale = static_cast<float>(value.detail_scale);
+  __m128 acc[4] = {_mm_setzero_ps(), _mm_setzero_ps(), _mm_setzero_ps(), _mm_setzero_ps()};
+  const auto add = [&](std::size_t e, __m128& sum) {
     const std::size_t k = get_uint(idx + e * W, W);
     if (k >= limit) bad_record("index out of range");
-    acc += table[k] * value(k, val[e]);
+    const bool detail = (k & mask) != 0;
+    const float level = detail ? static_cast<float>(static_cast<std::int8_t>(val[e])) * detail_scale
+                               : static_cast<float>(val[e]) * scale;
+    sum = _mm_add_ps(sum, _mm_mul_ps(_mm_load_ps(table[k].rgb), _mm_set1_ps(level)));
+  };
+  std::size_t e = 0;
+  for (; e + 4 <= rec.count; e += 4) {
+    add(e, acc[0]);
+    add(e + 1, acc[1]);
+    add(e + 2, acc[2]);
+    add(e + 3, acc[3]);
   }
-  return acc;
+  for (; e < rec.count; ++e) add(e, acc[0]);
+  alignas(16) float sum[4];
+  _mm_store_ps(sum, _mm_add_ps(_mm_add_ps(acc[0], acc[1]), _mm_add_ps(acc[2], acc[3])));
+  return {sum[0], sum[1], sum[2]};
+}
+
+// `radiance` as floats into `out`, reusing its storage.
+void to_texels(const std::vector<Rgb>& radiance, std::vector<ShellTexel>& out) {
+  out.resize(radiance.size());
+  for (std::size_t k = 0; k < radiance.size(); ++k) {
+    out[k].rgb[0] = static_cast<float>(radiance[k].r);
+    out[k].rgb[1] = static_cast<float>(radiance[k].g);
+    out[k].rgb[2] = static_cast<float>(radiance[k].b);
+  }
 }
 
 }  // namespace
@@ -298,6 +329,8 @@ void prepare_shell_cubemap(int n, std::span<const Rgb> radiance, ShellCubemap& s
   for (std::size_t start = 0; start < shell.haar.size(); start += nn)
     for (int r = 0; r < n; ++r)
       for (int c = 0; c < n; ++c) shell.haar[start + r * n + c] *= haar2d_support(n, r, c);
+  to_texels(shell.cells, shell.cells_float);
+  to_texels(shell.haar, shell.haar_float);
 }
 
 ShellCubemap prepare_shell_cubemap(int n, std::span<const Rgb> radiance) {
@@ -310,7 +343,8 @@ Rgb dot_receiver_cubemap(std::span<const std::uint8_t> bytes, const ShellCubemap
   const CubemapRecord rec = parse_cubemap_record(shell.n, bytes);
   if (rec.kind == CubemapCodeKind::kEmpty) return {};
   const EntryValue value = entry_value(rec, shell.n);
-  const std::vector<Rgb>& table = rec.kind == CubemapCodeKind::kPulse ? shell.cells : shell.haar;
+  const std::vector<ShellTexel>& table =
+      rec.kind == CubemapCodeKind::kPulse ? shell.cells_float : shell.haar_float;
   return cubemap_code_index_bytes(shell.n) == 2 ? sparse_dot<2>(rec, table, value)
                                                 : sparse_dot<4>(rec, table, value);
 }

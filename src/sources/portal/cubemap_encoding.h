@@ -140,17 +140,24 @@ std::vector<double> decode_receiver_cubemap(int n, std::span<const std::uint8_t>
 
 // The shell's radiance cubemap in both bases, rebuilt once per state change (paper §5:
 // "cubemap representation and wavelet bases").
+// The hot loop reads them as floats, one 16-byte texel a cell (issue 18: the window sum at the
+// streaming rate; a double texel is 24 bytes and three separate multiply-adds).
+struct alignas(16) ShellTexel {
+  float rgb[4] = {0, 0, 0, 0};  // r, g, b, 0
+};
 struct ShellCubemap {
   int n = 0;
   std::vector<Rgb> cells;  // radiance per cell (pulse domain)
   std::vector<Rgb> haar;   // per face: orthonormal Haar coefficient k × S_k
+  std::vector<ShellTexel> cells_float, haar_float;  // the same as floats
 };
 // Fills `shell` from 6·N² radiance cells, reusing its storage.
 void prepare_shell_cubemap(int n, std::span<const Rgb> radiance, ShellCubemap& shell);
 ShellCubemap prepare_shell_cubemap(int n, std::span<const Rgb> radiance);
 
 // Σ_cells t̂·L for the record at bytes[0] (Eq. 7), as a sparse dot product in the record's
-// basis. InputError for an index out of range.
+// basis, summed in float (the entries are 8-bit: float's 2⁻²⁴ is far below their 1/510).
+// InputError for an index out of range.
 Rgb dot_receiver_cubemap(std::span<const std::uint8_t> bytes, const ShellCubemap& shell);
 
 // Bytes and basis split over a set of receivers.
