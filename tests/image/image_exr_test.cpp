@@ -37,6 +37,12 @@ class ImageExr : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(folder_); }
   fs::path path(const std::string& name) const { return folder_ / name; }
+  // The bytes of a 4 × 2 image as write_exr writes it, for tests that edit its header.
+  std::string small_exr_bytes() const {
+    write_exr(path("whole.exr"), make_image(4, 2, {1, 2, 3}));
+    std::ifstream in(path("whole.exr"), std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), {}};
+  }
 
   fs::path folder_;
 };
@@ -208,12 +214,7 @@ TEST_F(ImageExr, TruncatedFileIsInputError) {
 // OpenEXR allocates an attribute by its declared size before reading it; a header attribute
 // larger than the rest of the file is refused first, naming it.
 TEST_F(ImageExr, AnAttributeLargerThanTheFileIsRefusedNamingIt) {
-  write_exr(path("whole.exr"), make_image(4, 2, {1, 2, 3}));
-  std::string bytes;
-  {
-    std::ifstream in(path("whole.exr"), std::ios::binary);
-    bytes.assign(std::istreambuf_iterator<char>(in), {});
-  }
+  std::string bytes = small_exr_bytes();
   const std::string attribute("channels\0chlist\0", 16);
   const std::size_t at = bytes.find(attribute);
   ASSERT_NE(at, std::string::npos);
@@ -233,12 +234,7 @@ TEST_F(ImageExr, AnAttributeLargerThanTheFileIsRefusedNamingIt) {
 // A header declaring ~10⁹ × 769 pixels (fuzz_envmap's input) is refused from the header, before
 // OpenEXR sizes its buffers by it (that took seconds), and names the window.
 TEST_F(ImageExr, AHugeDataWindowIsRefusedFromTheHeader) {
-  write_exr(path("whole.exr"), make_image(4, 2, {1, 2, 3}));
-  std::string bytes;
-  {
-    std::ifstream in(path("whole.exr"), std::ios::binary);
-    bytes.assign(std::istreambuf_iterator<char>(in), {});
-  }
+  std::string bytes = small_exr_bytes();
   const std::string attribute("dataWindow\0box2i\0\x10\0\0\0", 21);
   const std::size_t at = bytes.find(attribute);
   ASSERT_NE(at, std::string::npos);
@@ -260,12 +256,7 @@ TEST_F(ImageExr, AHugeDataWindowIsRefusedFromTheHeader) {
 // still reads (a walk by sizes landed inside the next attribute: fuzz_envmap's
 // chlist-hides-a-1.7-GB-attribute input).
 TEST_F(ImageExr, AChannelListIsWalkedChannelByChannelAsOpenExrReadsIt) {
-  write_exr(path("whole.exr"), make_image(4, 2, {1, 2, 3}));
-  std::string bytes;
-  {
-    std::ifstream in(path("whole.exr"), std::ios::binary);
-    bytes.assign(std::istreambuf_iterator<char>(in), {});
-  }
+  std::string bytes = small_exr_bytes();
   const std::string attribute("channels\0chlist\0", 16);
   const std::size_t at = bytes.find(attribute);
   ASSERT_NE(at, std::string::npos);
