@@ -268,15 +268,16 @@ bool is_jpeg_png_or_tiff(std::span<const std::uint8_t> b) {
 
 }  // namespace
 
-Photo decode_photo(std::span<const std::uint8_t> bytes, const std::string& what) {
+Photo decode_photo(std::span<const std::uint8_t> bytes, const std::string& what,
+                   double max_pixels) {
   // Refused before decoding: a header may declare a size whose pixels would not fit.
   const std::span<const std::uint8_t> head = bytes.first(std::min(bytes.size(), kHeaderBytes));
   if (!is_jpeg_png_or_tiff(head)) fail_input(what, "not a JPEG, PNG or TIFF file");
   if (const auto size = declared_size(head);
-      size && static_cast<double>(size->first) * size->second > kMaxPhotoPixels) {
+      size && static_cast<double>(size->first) * size->second > max_pixels) {
     std::ostringstream reason;
     reason << size->first << " × " << size->second << " px: more than relight reads ("
-           << kMaxPhotoPixels / 1e6 << " megapixels)";
+           << max_pixels / 1e6 << " megapixels)";
     fail_input(what, reason.str());
   }
   if (head[0] == 0xFF && !jpeg_reaches_its_end(bytes)) {
@@ -303,14 +304,14 @@ Photo decode_photo(std::span<const std::uint8_t> bytes, const std::string& what)
   return photo;
 }
 
-Photo read_photo(const fs::path& path) {
+Photo read_photo(const fs::path& path, double max_pixels) {
   std::error_code error;
   if (!fs::is_regular_file(path, error)) fail_input(path.string(), "no such file");
   std::ifstream in(path, std::ios::binary);
   const std::vector<std::uint8_t> bytes{std::istreambuf_iterator<char>(in), {}};
   if (!in.eof() && in.fail()) fail_input(path.string(), "cannot read the file");
   if (bytes.empty()) fail_input(path.string(), "an empty file");
-  return decode_photo(bytes, path.string());
+  return decode_photo(bytes, path.string(), max_pixels);
 }
 
 PhotoExposure read_photo_exposure(const fs::path& path) {

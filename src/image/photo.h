@@ -34,12 +34,14 @@ inline constexpr double kMaxPhotoPixels = 250e6;
 // Reads a JPEG, PNG or TIFF (any format imgcodecs decodes) of 8 or 16 bits per channel; grey
 // images read as R = G = B. Throws InputError "FILE: reason" when the file is missing, cannot
 // be decoded, has another bit depth (a float TIFF), or its header declares more than
-// kMaxPhotoPixels (refused before decoding: JPEG, PNG and TIFF headers are read first).
-Photo read_photo(const std::filesystem::path& path);
+// `max_pixels` (refused before decoding: JPEG, PNG and TIFF headers are read first; a smaller
+// bound keeps fuzz_photo fast).
+Photo read_photo(const std::filesystem::path& path, double max_pixels = kMaxPhotoPixels);
 
 // The same from a file's bytes held in memory (a glTF texture, scene/gltf_import.cpp); `what`
 // names them in errors ("FILE: image 2").
-Photo decode_photo(std::span<const std::uint8_t> bytes, const std::string& what);
+Photo decode_photo(std::span<const std::uint8_t> bytes, const std::string& what,
+                   double max_pixels = kMaxPhotoPixels);
 
 // What EXIF says of one exposure; each field is absent when the file has no such tag.
 struct PhotoExposure {

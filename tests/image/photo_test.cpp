@@ -156,6 +156,20 @@ TEST(Photo, AJpegWhoseScansCannotHoldItsFrameIsRefused) {
   }
 }
 
+// The caller's bound on pixels (fuzz_photo's is 2¹⁶) refuses a picture above it from its header.
+TEST(Photo, APictureAboveTheCallersBoundIsRefused) {
+  const testing::TempDir dir;
+  write_photo_jpeg(dir.path() / "a.jpg", gradient(64, 48), 90, {0.01, std::nullopt, std::nullopt});
+  EXPECT_EQ(read_photo(dir.path() / "a.jpg", 64 * 48).width, 64);
+  try {
+    read_photo(dir.path() / "a.jpg", 64 * 48 - 1);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("64 × 48 px: more than relight reads"), std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(Photo, AHeaderDeclaringMoreThan250MegapixelsIsRefusedBeforeDecodingInUnderASecond) {
   const testing::TempDir dir;
   write_photo_jpeg(dir.path() / "a.jpg", gradient(64, 48), 90, {0.01, std::nullopt, std::nullopt});
