@@ -37,6 +37,8 @@ struct RowScratch {
   std::vector<double> weight;
   std::vector<std::uint64_t> row_of;
   std::vector<std::uint32_t> touched;
+  std::vector<Ray> rays;  // one receiver's, traced together
+  std::vector<RayHit> hits;
 
   void add(std::uint64_t row, std::uint32_t vertex, double w) {
     if (row_of[vertex] != row) {
@@ -55,9 +57,10 @@ struct ChunkRows {
   std::vector<float> values;
 };
 
-// True when the ray reaches the front side of an opaque triangle before any portal.
-bool front_hit(const PreparedMesh& mesh, const TracedScene& traced, const Ray& ray, RayHit& hit) {
-  hit = traced.opaque.intersect(ray);
+// True when the ray, whose closest opaque hit is `hit`, reaches the front side of that
+// triangle before any portal.
+bool front_hit(const PreparedMesh& mesh, const TracedScene& traced, const Ray& ray,
+               const RayHit& hit) {
   if (!hit.hit()) return false;
   const Triangle& t = mesh.triangles[hit.triangle];
   const Vec3 a = mesh.positions[t[0]];
@@ -99,10 +102,13 @@ void trace_row(const PreparedMesh& mesh, const TracedScene& traced, Vec3 origin,
   const Frame frame{base.t * c + base.b * s, base.b * c - base.t * s, base.n};
   const double weight = 1.0 / static_cast<double>(pattern.size());
   scratch.touched.clear();
-  for (const Vec3& local : pattern) {
-    const Ray ray{origin, frame.to_world(local)};
-    RayHit hit;
-    if (!front_hit(mesh, traced, ray, hit)) continue;
+  scratch.rays.clear();
+  for (const Vec3& local : pattern) scratch.rays.push_back({origin, frame.to_world(local)});
+  scratch.hits.resize(scratch.rays.size());
+  traced.opaque.intersect(scratch.rays, scratch.hits);
+  for (std::size_t i = 0; i < scratch.rays.size(); ++i) {
+    const RayHit& hit = scratch.hits[i];
+    if (!front_hit(mesh, traced, scratch.rays[i], hit)) continue;
     const Triangle& t = mesh.triangles[hit.triangle];
     scratch.add(receiver, t[0], (1 - hit.u - hit.v) * weight);
     scratch.add(receiver, t[1], hit.u * weight);

@@ -104,6 +104,36 @@ RayHit RayTracer::intersect(const Ray& r) const {
   return hit;
 }
 
+void RayTracer::intersect(std::span<const Ray> rays, std::span<RayHit> hits) const {
+  if (rays.size() != hits.size()) throw std::invalid_argument("RayTracer: rays and hits differ");
+  constexpr std::size_t kStream = 64;
+  RTCRayHit stream[kStream];
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  context.flags = RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+  for (std::size_t first = 0; first < rays.size(); first += kStream) {
+    const std::size_t count = std::min(kStream, rays.size() - first);
+    for (std::size_t i = 0; i < count; ++i) {
+      stream[i] = RTCRayHit{};
+      stream[i].ray = to_embree(rays[first + i]);
+      stream[i].hit.geomID = RTC_INVALID_GEOMETRY_ID;
+      stream[i].hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    }
+    rtcIntersect1M(handles_->scene, &context, stream, static_cast<unsigned>(count),
+                   sizeof(RTCRayHit));
+    for (std::size_t i = 0; i < count; ++i) {
+      const RTCRayHit& rh = stream[i];
+      RayHit& hit = hits[first + i];
+      hit = RayHit{};
+      if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) continue;
+      hit.triangle = ids_[rh.hit.primID];
+      hit.t = rh.ray.tfar;
+      hit.u = rh.hit.u;
+      hit.v = rh.hit.v;
+    }
+  }
+}
+
 bool RayTracer::occluded(const Ray& r) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
