@@ -170,6 +170,29 @@ TEST(Photo, APictureAboveTheCallersBoundIsRefused) {
   }
 }
 
+// libjpeg skips bytes between a segment's declared end and the next marker; the header checks
+// do too, so a frame behind a segment of the wrong length is still seen and its size refused
+// (fuzz_photo's 236-byte file decoded for 32 s into 11 GB).
+TEST(Photo, AFrameBehindASegmentOfTheWrongLengthIsStillChecked) {
+  const testing::TempDir dir;
+  write_photo_jpeg(dir.path() / "a.jpg", gradient(64, 48), 90, {0.01, std::nullopt, std::nullopt});
+  std::string jpeg = testing::read_text(dir.path() / "a.jpg");
+  const std::size_t sof = jpeg.find("\xFF\xC0");
+  ASSERT_NE(sof, std::string::npos);
+  jpeg.replace(sof + 5, 4, "\x75\x30\x75\x30");  // 30000 × 30000
+  // After SOI: an APP1 declaring 5 bytes, then 10 that are no marker.
+  jpeg.insert(2, std::string("\xFF\xE1\x00\x05\x01\x02\x03", 7) + std::string(10, '\x41'));
+  const auto file = dir.write("skewed.jpg", jpeg);
+  try {
+    read_photo(file);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("30000 × 30000 px: more than relight reads"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(Photo, AHeaderDeclaringMoreThan250MegapixelsIsRefusedBeforeDecodingInUnderASecond) {
   const testing::TempDir dir;
   write_photo_jpeg(dir.path() / "a.jpg", gradient(64, 48), 90, {0.01, std::nullopt, std::nullopt});
