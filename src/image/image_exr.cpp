@@ -20,6 +20,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "common/input_error.h"
@@ -206,16 +207,37 @@ void check_data_window(const fs::path& path, const unsigned char (&box)[16],
   }
 }
 
+// The bytes OpenEXR reads for a value of a predefined attribute type of fixed size, whatever
+// size the attribute declares (OpenEXR file layout, "Predefined Attribute Types"); 0 for the
+// others (string, vectors, chlist, preview, unknown types).
+std::size_t fixed_attribute_size(const std::string& type) {
+  static const std::pair<const char*, std::size_t> kSizes[] = {
+      {"box2i", 16},      {"box2f", 16},   {"chromaticities", 32},
+      {"compression", 1}, {"double", 8},   {"envmap", 1},
+      {"float", 4},       {"int", 4},      {"keycode", 28},
+      {"lineOrder", 1},   {"m33f", 36},    {"m33d", 72},
+      {"m44f", 64},       {"m44d", 128},   {"rational", 8},
+      {"tiledesc", 9},    {"timecode", 8}, {"v2i", 8},
+      {"v2f", 8},         {"v2d", 16},     {"v3i", 12},
+      {"v3f", 12},        {"v3d", 24},     {"deepImageState", 1}};
+  for (const auto& [name, size] : kSizes) {
+    if (type == name) return size;
+  }
+  return 0;
+}
+
 // Every attribute of an OpenEXR file's first header (OpenEXR file layout: magic, version, then
 // attributes of name, type name, a little-endian int32 size and the value, up to an empty name)
 // must fit in the file. OpenEXR allocates an attribute of a type it does not know by its
 // declared size before reading it, so a file of a few hundred bytes could ask for 2 GiB.
 // Refused here, naming the attribute; what this walk cannot follow is left to OpenEXR. The walk
-// reads as OpenEXR 3.1 does: a channel list (chlist) is read channel by channel up to its empty
-// name, whatever its declared size (a chlist declaring more bytes than its channels hid, from a
-// walk by sizes, the next attribute's 1.7 GB, which OpenEXR then allocated: fuzz_envmap), and a
-// preview image's width × height × 4 bytes must lie within its declared size (OpenEXR allocates
-// them first). The data window is checked here too (check_data_window).
+// reads as OpenEXR 3.1 does, which reads a value of a known type by its type, not by its
+// declared size: a fixed-size type by its size (fixed_attribute_size; a box2i declaring 0
+// bytes hid a data window of ~10⁹ pixels: fuzz_envmap), a channel list (chlist) channel by
+// channel up to its empty name, whatever its declared size (a chlist declaring more bytes than its
+// channels hid, from a walk by sizes, the next attribute's 1.7 GB, which OpenEXR then allocated:
+// fuzz_envmap), and a preview image's width × height × 4 bytes must lie within its declared size
+// (OpenEXR allocates them first). The data window is checked here too (check_data_window).
 void check_exr_header(const fs::path& path, std::size_t max_pixels) {
   std::error_code error;
   const std::uintmax_t file_bytes = fs::file_size(path, error);
@@ -241,10 +263,14 @@ void check_exr_header(const fs::path& path, std::size_t max_pixels) {
                                     " bytes but the file has " + std::to_string(file_bytes - at) +
                                     " after it: truncated or corrupt");
     }
-    if (name == "dataWindow" && type == "box2i" && size == 16) {
+    if (name == "dataWindow" && type == "box2i") {
       unsigned char box[16] = {};
       if (!in.read(reinterpret_cast<char*>(box), 16)) return;
       check_data_window(path, box, max_pixels);
+      continue;
+    }
+    if (const std::size_t fixed = fixed_attribute_size(type); fixed > 0) {
+      in.seekg(static_cast<std::streamoff>(fixed), std::ios::cur);
       continue;
     }
     if (type == "chlist") {  // name, then pixel type, linearity, reserved, x and y sampling
