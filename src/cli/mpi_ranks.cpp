@@ -70,6 +70,86 @@ std::vector<std::vector<std::uint8_t>> MpiRanks::all_gather(std::span<const std:
   return out;
 }
 
+std::vector<std::vector<std::uint8_t>> MpiRanks::all_to_all(
+    std::vector<std::vector<std::uint8_t>> to) {
+  if (to.size() != static_cast<std::size_t>(size_)) {
+    throw std::invalid_argument("rank exchange: all_to_all needs one piece per rank");
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const auto n = static_cast<std::size_t>(size_);
+  std::vector<std::uint64_t> send_sizes(n), receive_sizes(n);
+  for (std::size_t k = 0; k < n; ++k) send_sizes[k] = to[k].size();
+  check(MPI_Alltoall(send_sizes.data(), 1, MPI_UINT64_T, receive_sizes.data(), 1, MPI_UINT64_T,
+                     MPI_COMM_WORLD),
+        "MPI_Alltoall");
+  std::vector<std::vector<std::uint8_t>> from(n);
+  from[static_cast<std::size_t>(rank_)] = std::move(to[static_cast<std::size_t>(rank_)]);
+  for (int r = 1; r < size_; ++r) {
+    const int dest = (rank_ + r) % size_, source = (rank_ - r + size_) % size_;
+    const std::vector<std::uint8_t>& out = to[static_cast<std::size_t>(dest)];
+    std::vector<std::uint8_t>& in = from[static_cast<std::size_t>(source)];
+    in.resize(static_cast<std::size_t>(receive_sizes[static_cast<std::size_t>(source)]));
+    exchange_bytes_ += in.size();
+    // Each side knows the other's size, so both post the same pieces (matched in order).
+    std::vector<MPI_Request> requests;
+    for (std::size_t at = 0; at < in.size(); at += kPiece) {
+      requests.emplace_back();
+      check(MPI_Irecv(in.data() + at, static_cast<int>(std::min(kPiece, in.size() - at)), MPI_BYTE,
+                      source, 0, MPI_COMM_WORLD, &requests.back()),
+            "MPI_Irecv");
+    }
+    for (std::size_t at = 0; at < out.size(); at += kPiece) {
+      requests.emplace_back();
+      check(MPI_Isend(out.data() + at, static_cast<int>(std::min(kPiece, out.size() - at)),
+                      MPI_BYTE, dest, 0, MPI_COMM_WORLD, &requests.back()),
+            "MPI_Isend");
+    }
+    check(MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE),
+          "MPI_Waitall");
+  }
+  exchange_seconds_ +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return from;
+}
+
+std::vector<std::vector<std::uint8_t>> MpiRanks::gather_to_root(
+    std::span<const std::uint8_t> mine) {
+  const auto start = std::chrono::steady_clock::now();
+  const auto n = static_cast<std::size_t>(size_);
+  const std::uint64_t my_size = mine.size();
+  std::vector<std::uint64_t> sizes(n);
+  check(MPI_Gather(&my_size, 1, MPI_UINT64_T, sizes.data(), 1, MPI_UINT64_T, 0, MPI_COMM_WORLD),
+        "MPI_Gather");
+  std::vector<std::vector<std::uint8_t>> out;
+  std::vector<MPI_Request> requests;
+  if (rank_ == 0) {
+    out.resize(n);
+    out[0].assign(mine.begin(), mine.end());
+    for (std::size_t k = 1; k < n; ++k) {
+      out[k].resize(static_cast<std::size_t>(sizes[k]));
+      exchange_bytes_ += out[k].size();
+      for (std::size_t at = 0; at < out[k].size(); at += kPiece) {
+        requests.emplace_back();
+        check(MPI_Irecv(out[k].data() + at, static_cast<int>(std::min(kPiece, out[k].size() - at)),
+                        MPI_BYTE, static_cast<int>(k), 1, MPI_COMM_WORLD, &requests.back()),
+              "MPI_Irecv");
+      }
+    }
+  } else {
+    for (std::size_t at = 0; at < mine.size(); at += kPiece) {
+      requests.emplace_back();
+      check(MPI_Isend(mine.data() + at, static_cast<int>(std::min(kPiece, mine.size() - at)),
+                      MPI_BYTE, 0, 1, MPI_COMM_WORLD, &requests.back()),
+            "MPI_Isend");
+    }
+  }
+  check(MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE),
+        "MPI_Waitall");
+  exchange_seconds_ +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
 void MpiRanks::abort(int code) const {
   MPI_Abort(MPI_COMM_WORLD, code);
   std::_Exit(code);  // MPI_Abort does not return; if it did, this process ends anyway

@@ -29,6 +29,13 @@ class MpiRanks final : public RankExchange {
   // Sizes first, then each rank's bytes broadcast from it in pieces of at most 1 GiB (MPI's
   // counts are int).
   std::vector<std::vector<std::uint8_t>> all_gather(std::span<const std::uint8_t> mine) override;
+  // Sizes first (MPI_Alltoall), then N − 1 rounds of MPI_Sendrecv, in round r to rank + r and
+  // from rank − r, in pieces of at most 1 GiB: each rank receives only its own pieces.
+  std::vector<std::vector<std::uint8_t>> all_to_all(
+      std::vector<std::vector<std::uint8_t>> to) override;
+  // Sizes (MPI_Gather), then each rank's bytes sent to rank 0 in pieces of at most 1 GiB.
+  std::vector<std::vector<std::uint8_t>> gather_to_root(
+      std::span<const std::uint8_t> mine) override;
   double exchange_seconds() const override { return exchange_seconds_; }
   std::uint64_t exchange_bytes() const override { return exchange_bytes_; }
   // Ranks on this machine (MPI_COMM_TYPE_SHARED): they share its cores.

@@ -4,6 +4,7 @@
 // writes the same file one process would (engine/ranks.h).
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -23,6 +24,8 @@
 #include "cli/precompute_run.h"
 #include "common/input_error.h"
 #include "common/memory.h"
+#include "engine/transfer_blocks.h"
+#include "math/sh.h"
 #include "scene/scene_loader.h"
 #include "sources/object/object_sections.h"
 #include "sources/precompute.h"
@@ -115,9 +118,26 @@ void precompute_and_write(const Scene& scene, const nlohmann::json& document,
   const int ranks = options.ranks != nullptr ? options.ranks->size() : 1;
   const ExchangeSummary exchange =
       ranks > 1 ? exchange_summary(p.phases, *options.ranks) : ExchangeSummary{};
-  if (rank != 0) return;
+  if (rank != 0) {
+    send_transfer_file_sections(p, scene, *options.ranks);
+    all_gather_values(*options.ranks, peak_resident_bytes());
+    return;
+  }
   for (const std::string& w : p.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
-  write_transfer_file(output, p, scene, document, scene_file);
+  const auto write_start = std::chrono::steady_clock::now();
+  const std::uint64_t bytes_before = ranks > 1 ? options.ranks->exchange_bytes() : 0;
+  write_transfer_file(output, p, scene, document, scene_file, options.ranks);
+  const double write_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - write_start).count();
+  const std::uint64_t write_bytes = ranks > 1 ? options.ranks->exchange_bytes() - bytes_before : 0;
+  // Each rank's peak, the file written (rank 0 held a round of every rank's blocks there).
+  std::uint64_t least_peak = peak_resident_bytes(), most_peak = least_peak;
+  if (ranks > 1) {
+    for (const std::uint64_t peak : all_gather_values(*options.ranks, least_peak)) {
+      least_peak = std::min(least_peak, peak);
+      most_peak = std::max(most_peak, peak);
+    }
+  }
 
   std::uint64_t rays = 0;
   double seconds = 0;
@@ -153,6 +173,16 @@ void precompute_and_write(const Scene& scene, const nlohmann::json& document,
         "received by a rank\n",
         100 * exchange.least_share, 100 * exchange.most_share, exchange.most_bytes * 1e-6);
   }
+  if (ranks > 1) {
+    std::printf(
+        "  file: written by rank 0 in %.2f s, receiving %.1f MB of the other ranks' rows as it "
+        "wrote\n",
+        write_seconds, write_bytes * 1e-6);
+    std::printf("  peak resident memory: %.1f–%.1f MB a rank\n", least_peak * 1e-6,
+                most_peak * 1e-6);
+  } else {
+    std::printf("  peak resident memory: %.1f MB\n", most_peak * 1e-6);
+  }
   std::printf("  bounces: %d (tolerance %g)\n", p.bounces, scene.precompute.tolerance);
   for (const PortalTransfer& t : p.portals) {
     const CubemapEncodingStats& s = t.direct.stats;
@@ -166,7 +196,11 @@ void precompute_and_write(const Scene& scene, const nlohmann::json& document,
         s.pulse ? double(s.pulse_bytes) / double(s.pulse) : 0.0, s.haar,
         s.haar ? double(s.haar_bytes) / double(s.haar) : 0.0, double(s.all_pulse_bytes) / n,
         double(s.all_haar_bytes) / n, double(t.direct.samples) / n, p.portal_sh_order,
-        double(t.indirect.size_bytes()) / n);
+        // The whole section's bytes: on several ranks, rank 0 holds its own blocks only.
+        double(block_count(p.receivers.size()) *
+               static_cast<std::size_t>(sh_count(p.portal_sh_order)) * 3 * kBlock *
+               (t.indirect.f16.empty() ? 4 : 2)) /
+            double(std::max<std::size_t>(1, p.receivers.size())));
   }
   for (std::size_t i = 0; i < p.objects.size(); ++i) {
     const ObjectMesh& o = p.objects[i];

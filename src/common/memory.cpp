@@ -1,5 +1,7 @@
 #include "common/memory.h"
 
+#include <sys/resource.h>
+
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -22,6 +24,12 @@ std::optional<std::uint64_t> available_memory_bytes() {
   }
   if (!available) return std::nullopt;
   return *available + swap.value_or(0);
+}
+
+std::uint64_t peak_resident_bytes() {
+  rusage usage{};
+  if (getrusage(RUSAGE_SELF, &usage) != 0) return 0;
+  return static_cast<std::uint64_t>(usage.ru_maxrss) * 1024;  // kilobytes on Linux
 }
 
 }  // namespace relight

@@ -12,4 +12,7 @@ namespace relight {
 // give without swapping out others, and the swap beyond it; nullopt where it cannot be read.
 std::optional<std::uint64_t> available_memory_bytes();
 
+// The most this process has held resident so far (getrusage's ru_maxrss), in bytes.
+std::uint64_t peak_resident_bytes();
+
 }  // namespace relight

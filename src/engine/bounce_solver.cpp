@@ -93,34 +93,36 @@ void gather_columns(
 
 // gathered = G · reflected for every receiver row, where reflected = diag(ρ) · E(n) on
 // vertex rows. Since E(n+1) = E_d + gathered on vertex rows, the change of E is the change
-// of `gathered`, measured here before each row is overwritten.
-// With `ranks`, only this rank's blocks of rows (engine/ranks.h).
+// of `gathered`, measured here before each row is overwritten. With `ranks` (engine/ranks.h),
+// only this rank's rows, `gathered` and `direct` holding them as its local rows.
 ColumnChange gather_bounce(const Gather& g, const RowMatrix& reflected, const RowMatrix& direct,
                            RowMatrix& gathered, const RankShares* ranks) {
-  const Eigen::Index columns = reflected.cols(), vertices = direct.rows();
+  const Eigen::Index columns = reflected.cols();
   const ColumnChange zero{std::vector<double>(columns, 0.0), std::vector<double>(columns, 0.0)};
-  const auto gather_rows = [&](Eigen::Index begin, Eigen::Index end, ColumnChange& change) {
+  // Rows [begin, end) of G into local rows from `local`.
+  const auto gather_rows = [&](Eigen::Index begin, Eigen::Index end, Eigen::Index local,
+                               ColumnChange& change) {
     Eigen::RowVectorXf sum(columns);
-    for (Eigen::Index i = begin; i != end; ++i) {
+    for (Eigen::Index i = begin; i != end; ++i, ++local) {
       const Eigen::Index first = g.outerIndexPtr()[i], last = g.outerIndexPtr()[i + 1];
       gather_columns(g.valuePtr() + first, g.innerIndexPtr() + first, last - first,
                      reflected.data(), columns, sum.data());
-      if (i < vertices) {
+      if (local < direct.rows()) {
         for (Eigen::Index k = 0; k < columns; ++k) {
-          const double d = double{sum[k]} - gathered(i, k);
-          const double e = double{direct(i, k)} + sum[k];
+          const double d = double{sum[k]} - gathered(local, k);
+          const double e = double{direct(local, k)} + sum[k];
           change.difference[k] += d * d;
           change.norm[k] += e * e;
         }
       }
-      gathered.row(i) = sum;
+      gathered.row(local) = sum;
     }
   };
   if (ranks == nullptr) {
     return tbb::parallel_deterministic_reduce(
         tbb::blocked_range<Eigen::Index>(0, g.rows(), kRowGrain), zero,
         [&](const tbb::blocked_range<Eigen::Index>& rows, ColumnChange change) {
-          gather_rows(rows.begin(), rows.end(), change);
+          gather_rows(rows.begin(), rows.end(), rows.begin(), change);
           return change;
         },
         add);
@@ -130,8 +132,10 @@ ColumnChange gather_bounce(const Gather& g, const RowMatrix& reflected, const Ro
       tbb::blocked_range<std::size_t>(0, blocks.size(), 1), zero,
       [&](const tbb::blocked_range<std::size_t>& range, ColumnChange change) {
         for (std::size_t b = range.begin(); b != range.end(); ++b) {
-          gather_rows(static_cast<Eigen::Index>(ranks->first(blocks[b])),
-                      static_cast<Eigen::Index>(ranks->last(blocks[b])), change);
+          const std::size_t first = ranks->first(blocks[b]);
+          gather_rows(static_cast<Eigen::Index>(first),
+                      static_cast<Eigen::Index>(ranks->last(blocks[b])),
+                      static_cast<Eigen::Index>(ranks->local_row(first)), change);
         }
         return change;
       },
@@ -175,10 +179,8 @@ struct ChannelSolution {
   int bounces = 0;
 };
 
-// The ranks' shares of `gathered`'s rows, and of the change, summed in rank order.
-void share_bounce(const RankShares& ranks, RowMatrix& gathered, ColumnChange& change) {
-  share_rows(ranks, static_cast<std::size_t>(gathered.cols()),
-             std::span<float>(gathered.data(), static_cast<std::size_t>(gathered.size())));
+// The change summed over the ranks, in rank order.
+void sum_change(const RankShares& ranks, ColumnChange& change) {
   std::vector<double> mine = change.difference;
   mine.insert(mine.end(), change.norm.begin(), change.norm.end());
   const auto* bytes = reinterpret_cast<const std::uint8_t*>(mine.data());
@@ -200,32 +202,136 @@ void share_bounce(const RankShares& ranks, RowMatrix& gathered, ColumnChange& ch
   }
 }
 
+// Several ranks (issue 19): the vertex rows whose reflected light crosses between ranks each
+// bounce. A rank's rows of G read the light of the vertices their rays hit, most of them in other
+// ranks' blocks; only those rows are sent, each to the ranks that read it, and sensor rows (which
+// reflect nothing) never are.
+struct BounceHalo {
+  std::vector<std::vector<std::uint32_t>> send;     // per rank: this rank's vertex rows it reads
+  std::vector<std::vector<std::uint32_t>> receive;  // per rank: its vertex rows this rank reads
+};
+
+// Collective: every rank learns which of its vertex rows each other rank reads.
+BounceHalo bounce_halo(const Gather& g, const RankShares& ranks, Eigen::Index vertices) {
+  std::vector<char> read(static_cast<std::size_t>(vertices), 0);
+  for (const std::size_t b : ranks.my_blocks()) {
+    for (std::size_t r = ranks.first(b); r < ranks.last(b); ++r) {
+      for (Gather::InnerIterator it(g, static_cast<Eigen::Index>(r)); it; ++it) {
+        read[static_cast<std::size_t>(it.index())] = 1;
+      }
+    }
+  }
+  const auto n = static_cast<std::size_t>(ranks.size());
+  BounceHalo halo{std::vector<std::vector<std::uint32_t>>(n),
+                  std::vector<std::vector<std::uint32_t>>(n)};
+  for (std::size_t v = 0; v < read.size(); ++v) {
+    const int owner = ranks.owner(v);
+    if (read[v] != 0 && owner != ranks.rank()) {
+      halo.receive[static_cast<std::size_t>(owner)].push_back(static_cast<std::uint32_t>(v));
+    }
+  }
+  std::vector<std::vector<std::uint8_t>> asks(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto* p = reinterpret_cast<const std::uint8_t*>(halo.receive[k].data());
+    asks[k].assign(p, p + halo.receive[k].size() * sizeof(std::uint32_t));
+  }
+  const std::vector<std::vector<std::uint8_t>> asked = ranks.exchange->all_to_all(std::move(asks));
+  for (std::size_t k = 0; k < n; ++k) {
+    if (k == static_cast<std::size_t>(ranks.rank())) continue;
+    if (asked[k].size() % sizeof(std::uint32_t) != 0) {
+      throw std::runtime_error("bounce solver: a rank's rows of another size");
+    }
+    halo.send[k].resize(asked[k].size() / sizeof(std::uint32_t));
+    std::memcpy(halo.send[k].data(), asked[k].data(), asked[k].size());
+    for (const std::uint32_t v : halo.send[k]) {
+      if (v >= read.size() || ranks.owner(v) != ranks.rank()) {
+        throw std::runtime_error("bounce solver: a rank asked for rows it does not own");
+      }
+    }
+  }
+  return halo;
+}
+
+// Collective: each rank's reflected light of the rows others read, sent to them.
+void exchange_halo(const RankShares& ranks, const BounceHalo& halo, RowMatrix& reflected) {
+  const auto columns = static_cast<std::size_t>(reflected.cols());
+  const std::size_t row_bytes = columns * sizeof(float);
+  std::vector<std::vector<std::uint8_t>> out(halo.send.size());
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    out[k].resize(halo.send[k].size() * row_bytes);
+    for (std::size_t i = 0; i < halo.send[k].size(); ++i) {
+      std::memcpy(out[k].data() + i * row_bytes, reflected.row(halo.send[k][i]).data(), row_bytes);
+    }
+  }
+  const std::vector<std::vector<std::uint8_t>> in = ranks.exchange->all_to_all(std::move(out));
+  for (std::size_t k = 0; k < in.size(); ++k) {
+    if (k == static_cast<std::size_t>(ranks.rank())) continue;
+    if (in[k].size() != halo.receive[k].size() * row_bytes) {
+      throw std::runtime_error("bounce solver: a rank's rows of another size");
+    }
+    for (std::size_t i = 0; i < halo.receive[k].size(); ++i) {
+      std::memcpy(reflected.row(halo.receive[k][i]).data(), in[k].data() + i * row_bytes,
+                  row_bytes);
+    }
+  }
+}
+
+// reflected = diag(ρ) · (E_d + gathered) on this rank's vertex rows (its local rows of
+// `direct` and `gathered`).
+void reflect_mine(const RankShares& ranks, const Eigen::VectorXf& albedo, const RowMatrix& direct,
+                  const RowMatrix& gathered, RowMatrix& reflected) {
+  const auto mine = static_cast<std::size_t>(direct.rows());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mine, kRowGrain), [&](const auto& range) {
+    for (std::size_t l = range.begin(); l != range.end(); ++l) {
+      const auto row = static_cast<Eigen::Index>(ranks.receiver_of_local_row(l));
+      const auto local = static_cast<Eigen::Index>(l);
+      reflected.row(row) = albedo[row] * (direct.row(local) + gathered.row(local));
+    }
+  });
+}
+
 ChannelSolution solve_channel(const Gather& g, const Eigen::VectorXf& albedo,
                               const RowMatrix& direct, const BounceSettings& settings,
-                              Progress& bar, const RankShares* ranks) {
+                              Progress& bar, const RankShares* ranks, const BounceHalo* halo) {
   const Eigen::Index receivers = g.rows(), columns = direct.cols();
   ChannelSolution solution;
   if (settings.max_bounces <= 0 || columns == 0 || albedo.isZero(0)) {
-    solution.indirect = Eigen::MatrixXf::Zero(receivers, columns);
+    solution.indirect = Eigen::MatrixXf::Zero(
+        halo != nullptr ? static_cast<Eigen::Index>(ranks->my_receivers()) : receivers, columns);
     bar.advance(std::max(settings.max_bounces, 1));
     return solution;
   }
-  RowMatrix reflected = albedo.asDiagonal() * direct;
-  RowMatrix gathered = RowMatrix::Zero(receivers, columns);
-  // Several ranks: each gathers its blocks of rows (engine/ranks.h), then they exchange them.
-  const std::optional<RankShares> blocks =
-      ranks != nullptr && !ranks->alone()
-          ? std::optional(dealt_blocks(*ranks->exchange, static_cast<std::size_t>(receivers),
-                                       static_cast<std::size_t>(kRowGrain)))
-          : std::nullopt;
+  // Several ranks: this rank's rows (engine/ranks.h), `direct` its vertex rows.
+  const Eigen::Index rows =
+      halo != nullptr ? static_cast<Eigen::Index>(ranks->my_receivers()) : receivers;
+  RowMatrix gathered = RowMatrix::Zero(rows, columns);
+  RowMatrix reflected;
+  // Several ranks: each gathers its blocks of rows (engine/ranks.h) and reflects its vertex
+  // rows, then sends the rows other ranks read (BounceHalo).
+  const auto share_reflected = [&] {
+    reflect_mine(*ranks, albedo, direct, gathered, reflected);
+    exchange_halo(*ranks, *halo, reflected);
+  };
+  if (halo != nullptr) {
+    reflected = RowMatrix::Zero(g.cols(), columns);
+    share_reflected();
+  } else {
+    reflected = albedo.asDiagonal() * direct;
+  }
   while (solution.bounces < settings.max_bounces) {
     ColumnChange change =
-        gather_bounce(g, reflected, direct, gathered, blocks ? &*blocks : nullptr);
-    if (blocks) share_bounce(*blocks, gathered, change);
+        gather_bounce(g, reflected, direct, gathered, halo != nullptr ? ranks : nullptr);
+    if (halo != nullptr) sum_change(*ranks, change);
     ++solution.bounces;
     bar.advance();
     if (max_relative_change(change) < settings.tolerance) break;
-    if (solution.bounces < settings.max_bounces) reflect(albedo, direct, gathered, reflected);
+    if (solution.bounces < settings.max_bounces) {
+      if (halo != nullptr) {
+        share_reflected();
+      } else {
+        reflect(albedo, direct, gathered, reflected);
+      }
+    }
   }
   bar.advance(settings.max_bounces - solution.bounces);
   solution.indirect = to_column_major(gathered);
@@ -233,7 +339,7 @@ ChannelSolution solve_channel(const Gather& g, const Eigen::VectorXf& albedo,
 }
 
 void check_sizes(const GatherOperator& gather, const Receivers& receivers,
-                 const Eigen::MatrixXf& direct) {
+                 const Eigen::MatrixXf& direct, const RankShares* ranks) {
   const auto receiver_count = static_cast<Eigen::Index>(receivers.size());
   if (gather.matrix.rows() != receiver_count ||
       gather.matrix.cols() != static_cast<Eigen::Index>(receivers.vertex_count) ||
@@ -243,7 +349,9 @@ void check_sizes(const GatherOperator& gather, const Receivers& receivers,
   if (!gather.matrix.isCompressed()) {
     throw std::invalid_argument("bounce solver: the gather operator is not compressed");
   }
-  if (direct.rows() != receiver_count) {
+  const auto rows =
+      ranks != nullptr ? static_cast<Eigen::Index>(ranks->my_receivers()) : receiver_count;
+  if (direct.rows() != rows) {
     throw std::invalid_argument("bounce solver: direct irradiance needs one row per receiver");
   }
 }
@@ -364,11 +472,23 @@ BounceResult solve_bounces(const GatherOperator& gather, const Receivers& receiv
                            const Eigen::MatrixXf& direct, const BounceSettings& settings,
                            bool progress, const RankShares* ranks) {
   const auto start = std::chrono::steady_clock::now();
-  check_sizes(gather, receivers, direct);
-  const RowMatrix direct_vertices =
-      direct.topRows(static_cast<Eigen::Index>(receivers.vertex_count));
+  // Several ranks: the rows they exchange, the same for every channel; `direct` holds this
+  // rank's rows.
+  const std::optional<RankShares> blocks =
+      ranks != nullptr && !ranks->alone()
+          ? std::optional(dealt_blocks(*ranks->exchange, receivers.size(),
+                                       static_cast<std::size_t>(kRowGrain)))
+          : std::nullopt;
+  check_sizes(gather, receivers, direct, blocks ? &*blocks : nullptr);
+  const std::optional<BounceHalo> halo =
+      blocks ? std::optional(bounce_halo(gather.matrix, *blocks,
+                                         static_cast<Eigen::Index>(receivers.vertex_count)))
+             : std::nullopt;
+  const RowMatrix direct_vertices = direct.topRows(static_cast<Eigen::Index>(
+      blocks ? blocks->my_receivers_below(receivers.vertex_count) : receivers.vertex_count));
 
   BounceResult result;
+  result.ranks = ranks;
   const std::array<Eigen::VectorXf, 3> albedo = channel_albedo(receivers);
   Progress bar("interreflection", 3 * static_cast<std::uint64_t>(std::max(settings.max_bounces, 1)),
                progress);
@@ -385,7 +505,8 @@ BounceResult solve_bounces(const GatherOperator& gather, const Receivers& receiv
       continue;
     }
     ChannelSolution solution =
-        solve_channel(gather.matrix, albedo[c], direct_vertices, settings, bar, ranks);
+        solve_channel(gather.matrix, albedo[c], direct_vertices, settings, bar,
+                      blocks ? &*blocks : nullptr, halo ? &*halo : nullptr);
     result.indirect[c] = std::move(solution.indirect);
     result.bounces = std::max(result.bounces, solution.bounces);
   }

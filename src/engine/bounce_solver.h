@@ -33,7 +33,9 @@ struct BounceSettings {
 };
 
 struct BounceResult {
-  std::array<Eigen::MatrixXf, 3> indirect;  // receivers × K per channel (r, g, b), lux
+  // receivers × K per channel (r, g, b), lux; on one of several ranks, its rows only (ranks).
+  std::array<Eigen::MatrixXf, 3> indirect;
+  const RankShares* ranks = nullptr;  // the ranks solve_bounces was given
   int bounces = 0;  // products G · diag(ρ) · E computed, the most over channels
   double seconds = 0;
 };
@@ -41,10 +43,11 @@ struct BounceResult {
 // `direct` is receivers × K (sensor rows are accepted and not used: sensors do not
 // reflect). The albedo is receivers.albedo of the vertex rows. Channels whose albedo
 // equals an earlier channel's are copied, not solved again. Throws std::invalid_argument
-// when the sizes of gather, receivers and direct disagree. With `ranks` (engine/ranks.h,
-// issue 19), each rank computes its share's rows of every bounce and the ranks exchange them
-// (collective), so every rank returns the whole result; the bounces' values are those of one
-// process, and the convergence norms are summed over ranks in rank order.
+// when the sizes of gather, receivers and direct disagree. With several `ranks`
+// (engine/ranks.h, issue 19; collective), `direct` and the result hold this rank's rows only
+// (RankShares::local_row), `gather` needs only its rows, and each bounce the ranks exchange the
+// reflected light of the vertex rows other ranks' rows read (only those); the bounces' values
+// are those of one process, and the convergence norms are summed over ranks in rank order.
 BounceResult solve_bounces(const GatherOperator& gather, const Receivers& receivers,
                            const Eigen::MatrixXf& direct, const BounceSettings& settings,
                            bool progress, const RankShares* ranks = nullptr);

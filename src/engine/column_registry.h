@@ -13,6 +13,7 @@
 #include <Eigen/Core>
 
 #include "engine/bounce_solver.h"
+#include "engine/ranks.h"
 #include "engine/transfer_blocks.h"
 
 namespace relight {
@@ -36,15 +37,21 @@ class ColumnRegistry {
 };
 
 // The direct irradiance of every registered column, receivers × columns (scalar: albedo
-// colours the bounced light, ARCHITECTURE §4.2).
+// colours the bounced light, ARCHITECTURE §4.2). On one of several ranks (engine/ranks.h), the
+// rows of its receivers only, as its local rows.
 class DirectColumns {
  public:
-  DirectColumns(Eigen::Index receivers, const ColumnRegistry& registry)
-      : matrix_(receivers, registry.columns()) {}
+  DirectColumns(const RankShares& ranks, const ColumnRegistry& registry)
+      : ranks_(ranks),
+        matrix_(static_cast<Eigen::Index>(ranks.my_receivers()), registry.columns()) {}
+  // This rank's rows of a range, as its local rows.
   auto of(ColumnRange r) { return matrix_.middleCols(r.first, r.count); }
+  // Sets a range from every receiver's rows (receivers × r.count), keeping this rank's.
+  void set(ColumnRange r, const Eigen::MatrixXf& every_receiver);
   const Eigen::MatrixXf& matrix() const { return matrix_; }
 
  private:
+  RankShares ranks_;
   Eigen::MatrixXf matrix_;
 };
 
@@ -54,7 +61,8 @@ inline auto indirect_of(const BounceResult& result, int channel, ColumnRange r) 
 }
 
 // A range's interreflected columns packed in the blocked RGB layout and stored as `storage`
-// (engine/transfer_blocks.h).
+// (engine/transfer_blocks.h). On one of several ranks (collective), its blocks only, binary16
+// scaled by the ranks' largest value so that every rank's blocks share the section's scale.
 PackedTransfer pack_indirect_blocks(const BounceResult& result, ColumnRange r,
                                     TransferStorage storage);
 

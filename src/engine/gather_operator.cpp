@@ -122,22 +122,6 @@ void trace_row(const PreparedMesh& mesh, const TracedScene& traced, Vec3 origin,
   out.row_sizes.push_back(static_cast<std::uint32_t>(scratch.touched.size()));
 }
 
-// Every rank's chunks from theirs (engine/ranks.h: a chunk is one of the ranks' blocks).
-void share_chunks(const RankShares& ranks, std::vector<ChunkRows>& chunks) {
-  share_block_records(
-      ranks,
-      [&](std::size_t c, std::vector<std::uint8_t>& bytes) {
-        put_values<std::uint32_t>(bytes, chunks[c].row_sizes);
-        put_values<std::uint32_t>(bytes, chunks[c].columns);
-        put_values<float>(bytes, chunks[c].values);
-      },
-      [&](std::size_t c, std::span<const std::uint8_t> theirs, std::size_t& at) {
-        chunks[c].row_sizes = take_values<std::uint32_t>(theirs, at);
-        chunks[c].columns = take_values<std::uint32_t>(theirs, at);
-        chunks[c].values = take_values<float>(theirs, at);
-      });
-}
-
 }  // namespace
 
 GatherOperator build_gather_operator(const Receivers& receivers, const PreparedMesh& mesh,
@@ -185,7 +169,6 @@ GatherOperator build_gather_operator(const Receivers& receivers, const PreparedM
     }
   });
   bar.finish();
-  if (!own.alone()) share_chunks(own, chunks);
 
   // Assemble: row offsets by a prefix sum, then every chunk copies into its own span.
   using Index = Eigen::SparseMatrix<float, Eigen::RowMajor>::StorageIndex;
@@ -208,9 +191,10 @@ GatherOperator build_gather_operator(const Receivers& receivers, const PreparedM
     for (std::size_t c = range.begin(); c != range.end(); ++c) {
       const ChunkRows& chunk = chunks[c];
       std::size_t offset = chunk_offsets[c];
-      for (std::size_t i = 0; i < chunk.row_sizes.size(); ++i) {
+      // Another rank's chunk has no rows here: its rows are empty.
+      for (std::size_t i = 0; i < std::min(kChunkRows, rows - c * kChunkRows); ++i) {
         outer[c * kChunkRows + i] = static_cast<Index>(offset);
-        offset += chunk.row_sizes[i];
+        if (i < chunk.row_sizes.size()) offset += chunk.row_sizes[i];
       }
       std::copy(chunk.columns.begin(), chunk.columns.end(), inner + chunk_offsets[c]);
       std::copy(chunk.values.begin(), chunk.values.end(), values + chunk_offsets[c]);

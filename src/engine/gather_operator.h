@@ -39,9 +39,10 @@ struct GatherOperator {
 // receiver's index, independent of thread scheduling). Receivers must be those of `mesh`
 // (vertex_count == mesh vertex count) and `traced` built from the same mesh. Throws
 // std::invalid_argument for rays_per_receiver < 1, mismatched inputs or a matrix with more
-// than 2^31 - 1 entries. With `ranks` (engine/ranks.h; shares on multiples of kBlock), this
-// process traces its own share's rows and the ranks exchange theirs (collective); `rays`
-// counts every rank's.
+// than 2^31 - 1 entries. With several `ranks` (engine/ranks.h; shares on multiples of kBlock),
+// this process traces its own share's rows and keeps only those (the other rows empty): the
+// bounce reads its own rows, and rank 0 gathers the rest as it writes the file; `rays` counts
+// every rank's.
 GatherOperator build_gather_operator(const Receivers& receivers, const PreparedMesh& mesh,
                                      const TracedScene& traced, int rays_per_vertex,
                                      int rays_per_sensor, std::uint64_t seed, bool progress,

@@ -3,12 +3,17 @@
 // receivers, engine/transfer_blocks.h). Each rank traces its own blocks' rows of every
 // per-receiver phase — the gather operator's rays, each luminaire's direct visibility, each
 // portal's cubemaps, the near-field transfer — against the whole scene (every rank holds the
-// scene and its Embree BVH), then the ranks exchange their rows so that each holds every row,
-// and all go on with the same data; the bounce solver shares its rows the same way. Every
-// receiver's rays are seeded by its own index (engine/gather_operator.h), so the rows, and the
-// file, do not depend on how many ranks made them. Pinned by tests/engine/ranks_test.cpp (blocks,
-// exchange in one process) and tests/cli/mpi_precompute_test.cpp (`mpirun -n 2` against one
-// process, byte for byte).
+// scene and its Embree BVH). What the bounce and the file need of a rank's rows stays with it:
+// its rows of the gather operator, the direct columns, the bounce's result and the packed
+// transfer (as its local rows, RankShares::local_row); each bounce sweep the ranks send each
+// other the reflected light of the vertices their rows read (engine/bounce_solver.cpp), and rank
+// 0 gathers every rank's blocks as it writes the file (gather_block_records). The direct phases'
+// smaller records (luminaire geometry, cubemaps, near-field transfer) are still shared whole
+// (share_rows, share_block_records). Every receiver's rays are seeded by its own index
+// (engine/gather_operator.h), so the rows, and the file, do not depend on how many ranks made
+// them. Pinned by tests/engine/ranks_test.cpp (blocks, exchanges, the gather operator and the
+// bounce with ranks as threads) and tests/cli/mpi_precompute_test.cpp (`mpirun -n 2` against
+// one process, byte for byte).
 //
 // This stage knows nothing of MPI: the exchange is the interface below, which the command line
 // implements over MPI (cli/mpi_ranks.h); a process alone is SingleProcess.
@@ -18,14 +23,13 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <span>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <utility>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "common/input_error.h"
 
@@ -38,6 +42,15 @@ class RankExchange {
   virtual int size() const = 0;
   // Collective: every rank passes its bytes and gets every rank's, in rank order.
   virtual std::vector<std::vector<std::uint8_t>> all_gather(std::span<const std::uint8_t> mine) = 0;
+  // Collective: `to[k]` goes to rank k (one piece per rank); returns the piece each rank sent
+  // this one, in rank order (this rank's own piece kept in place). This default goes through
+  // all_gather, so every rank receives every piece; MPI sends each piece to its rank alone.
+  // Throws std::invalid_argument when `to` has not one piece per rank.
+  virtual std::vector<std::vector<std::uint8_t>> all_to_all(
+      std::vector<std::vector<std::uint8_t>> to);
+  // Collective: rank 0 gets every rank's bytes in rank order, the others nothing. This default
+  // goes through all_gather; MPI sends each rank's bytes to rank 0 alone.
+  virtual std::vector<std::vector<std::uint8_t>> gather_to_root(std::span<const std::uint8_t> mine);
   // Seconds spent in all_gather so far, waiting for other ranks included.
   virtual double exchange_seconds() const = 0;
   // Bytes all_gather has received from other ranks so far.
@@ -71,11 +84,27 @@ struct RankShares {
   std::size_t block_count() const { return (receivers + block - 1) / block; }
   std::size_t first(std::size_t b) const { return b * block; }
   std::size_t last(std::size_t b) const { return std::min(receivers, (b + 1) * block); }
+  // The rank whose block holds `receiver`.
+  int owner(std::size_t receiver) const {
+    return static_cast<int>((receiver / block) % static_cast<std::size_t>(size()));
+  }
   // Rank k's blocks, in order: k, k + N, k + 2N, …
   std::vector<std::size_t> blocks_of(int k) const;
   std::vector<std::size_t> my_blocks() const { return blocks_of(rank()); }
   // Receivers in this rank's blocks.
   std::size_t my_receivers() const;
+  // This rank's rows in order, its blocks one after another (only the last block of all may be
+  // short, and it is its rank's last): the local row of one of its receivers, and back.
+  std::size_t local_row(std::size_t receiver) const {
+    return receiver / block / static_cast<std::size_t>(size()) * block + receiver % block;
+  }
+  std::size_t receiver_of_local_row(std::size_t row) const {
+    return first(row / block * static_cast<std::size_t>(size()) +
+                 static_cast<std::size_t>(rank())) +
+           row % block;
+  }
+  // This rank's rows before receiver `receiver` (the local rows of the receivers below it).
+  std::size_t my_receivers_below(std::size_t receiver) const;
 };
 
 // `receivers` in blocks of `block` dealt to the ranks of `exchange`. Throws
@@ -167,8 +196,14 @@ void share_block_records(const RankShares& ranks, Put put, Take take) {
   }
 }
 
-// The same for the rows of a receivers × columns matrix.
-void share_rows(const RankShares& ranks, Eigen::MatrixXf& matrix);
+// Collective: every rank's records, one per block of its own (its i-th block's bytes are
+// `record(i)`, i < its block count), to rank 0, which hands them to `sink` in the order of the
+// blocks (the other ranks pass none): a section of the file gathered as rank 0 writes it. In
+// rounds of `blocks_per_round` blocks from each rank, so that rank 0 holds one round at a time.
+using RecordOf = std::function<std::span<const std::uint8_t>(std::size_t)>;
+using RecordSink = std::function<void(std::span<const std::uint8_t>)>;
+void gather_block_records(const RankShares& ranks, const RecordOf& record,
+                          std::size_t blocks_per_round, const RecordSink* sink);
 
 // Appends the bytes of `values` to `out`, and reads them back from `in` at `at` (advanced);
 // for the exchanges of records whose length varies per receiver.

@@ -2,6 +2,8 @@
 
 #include <chrono>
 
+#include "engine/transfer_blocks.h"
+
 namespace relight {
 
 SourcesResult precompute_sources(const SourceContext& context, const GatherOperator& gather,
@@ -9,7 +11,10 @@ SourcesResult precompute_sources(const SourceContext& context, const GatherOpera
                                  std::span<SourcePrecompute* const> sources) {
   ColumnRegistry registry;
   for (SourcePrecompute* s : sources) s->register_columns(registry);
-  DirectColumns columns(static_cast<Eigen::Index>(context.receivers.size()), registry);
+  const RankShares ranks = context.ranks != nullptr
+                               ? *context.ranks
+                               : single_process_shares(context.receivers.size(), kBlock);
+  DirectColumns columns(ranks, registry);
   SourcesResult out;
   for (SourcePrecompute* s : sources) {
     const ExchangeMeter meter(context.ranks);

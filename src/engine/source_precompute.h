@@ -52,8 +52,9 @@ class ExchangeMeter {
 
 // What every source's direct transfer sees: the receivers, where their rays start, the
 // prepared mesh and its Embree scenes, and the ranks of the precompute (engine/ranks.h): a
-// source traces its per-receiver work for its own share and has the ranks exchange the rest,
-// so that every rank leaves compute_direct with every receiver's data.
+// source traces its per-receiver work for its own share; the direct columns keep each rank's
+// own rows (DirectColumns::set), and what else a source keeps it exchanges or not as its file
+// sections need (the packed transfer stays with its rank until rank 0 writes it).
 struct SourceContext {
   const Receivers& receivers;
   const std::vector<Vec3>& ray_points;  // engine/receivers.h receiver_ray_points

@@ -86,14 +86,23 @@ float half_scale(float largest_magnitude) {
   return std::ldexp(1.0f, std::ilogb(largest_magnitude) - 14);
 }
 
+float largest_magnitude(std::span<const float> values) {
+  float largest = 0;
+  for (const float v : values) largest = std::max(largest, std::abs(v));
+  return largest;
+}
+
 PackedTransfer store_blocks(std::vector<float> blocked, TransferStorage storage) {
+  const float largest = storage == TransferStorage::fp16 ? largest_magnitude(blocked) : 0.0f;
+  return store_blocks(std::move(blocked), storage, largest);
+}
+
+PackedTransfer store_blocks(std::vector<float> blocked, TransferStorage storage, float largest) {
   PackedTransfer out;
   if (storage == TransferStorage::fp32) {
     out.f32 = std::move(blocked);
     return out;
   }
-  float largest = 0;
-  for (const float v : blocked) largest = std::max(largest, std::abs(v));
   out.scale = half_scale(largest);
   out.f16.resize(blocked.size());
   const float inverse = 1 / out.scale;  // a power of two: exact

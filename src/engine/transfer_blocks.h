@@ -70,6 +70,9 @@ struct BlockedTransfer {
   bool half() const { return !f16.empty(); }
   std::size_t size() const { return half() ? f16.size() : f32.size(); }
   std::size_t size_bytes() const { return f32.size_bytes() + f16.size_bytes(); }
+  std::span<const std::byte> bytes() const {
+    return half() ? std::as_bytes(f16) : std::as_bytes(f32);
+  }
   // Values [first, first + out.size()) as floats.
   void copy_to(std::size_t first, std::span<float> out) const;
 };
@@ -86,6 +89,10 @@ struct PackedTransfer {
 
 // `blocked` (pack_blocks) kept as floats or converted to scaled binary16.
 PackedTransfer store_blocks(std::vector<float> blocked, TransferStorage storage);
+// The same, binary16 scaled for `largest` (at least the largest magnitude in `blocked`: the
+// section's, when ranks each pack their blocks of it).
+PackedTransfer store_blocks(std::vector<float> blocked, TransferStorage storage, float largest);
+float largest_magnitude(std::span<const float> values);
 
 // The power of two a section of binary16 transfer is scaled by, from its largest magnitude.
 float half_scale(float largest_magnitude);

@@ -1,6 +1,9 @@
 #include "engine/transfer_sections.h"
 
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <vector>
 
 #include "common/input_error.h"
 
@@ -18,6 +21,44 @@ void add_transfer_section(RltWriter& w, std::uint32_t type, const std::string& n
   }
   const auto flags = static_cast<std::uint32_t>(std::ilogb(t.scale) + kExponentBias);
   w.add_f16(type, name, t.f16, flags);
+}
+
+void gather_blocks(const RankShares& ranks, std::span<const std::byte> mine,
+                   std::size_t block_bytes, const RltWriter::Sink* sink) {
+  if (block_bytes == 0 || mine.size() % block_bytes != 0) {
+    throw std::invalid_argument("gather_blocks: not a whole number of blocks");
+  }
+  const std::span<const std::uint8_t> bytes(reinterpret_cast<const std::uint8_t*>(mine.data()),
+                                            mine.size());
+  const RecordSink to_sink = [sink](std::span<const std::uint8_t> block) {
+    (*sink)(std::as_bytes(block));
+  };
+  gather_block_records(
+      ranks, [&](std::size_t i) { return bytes.subspan(i * block_bytes, block_bytes); },
+      kGatherRoundBytes / (static_cast<std::size_t>(ranks.size()) * block_bytes),
+      sink != nullptr ? &to_sink : nullptr);
+}
+
+void add_transfer_section(RltWriter& w, std::uint32_t type, const std::string& name,
+                          BlockedTransfer t, const RankShares& ranks, std::size_t block_bytes) {
+  const bool half = t.half();
+  const auto flags =
+      half ? static_cast<std::uint32_t>(std::ilogb(t.scale) + kExponentBias) : std::uint32_t{0};
+  const RltElement element = half ? RltElement::f16 : RltElement::f32;
+  if (ranks.alone()) {
+    w.add_section(type, name, t.bytes(), element, flags);
+    return;
+  }
+  w.add_produced_section(
+      type, name,
+      [t, ranks, block_bytes](const RltWriter::Sink& sink) {
+        gather_blocks(ranks, t.bytes(), block_bytes, &sink);
+      },
+      element, flags);
+}
+
+void send_transfer_section(BlockedTransfer t, const RankShares& ranks, std::size_t block_bytes) {
+  gather_blocks(ranks, t.bytes(), block_bytes, nullptr);
 }
 
 BlockedTransfer transfer_section(const RltFile& file, std::uint32_t type) {

@@ -3,9 +3,12 @@
 // engine/transfer_blocks.h). Pinned by tests/engine/transfer_blocks_test.cpp.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <span>
 #include <string>
 
+#include "engine/ranks.h"
 #include "engine/transfer_blocks.h"
 #include "store/rlt_file.h"
 #include "store/rlt_writer.h"
@@ -15,6 +18,22 @@ namespace relight {
 // Adds `t` as section `type`; `t` must outlive the writer's write().
 void add_transfer_section(RltWriter& w, std::uint32_t type, const std::string& name,
                           const PackedTransfer& t);
+
+// Several ranks (issue 19; collective): `t` views this rank's blocks of the section
+// (RankShares local order, engine/column_registry.h pack_indirect_blocks), `block_bytes` the
+// bytes of one block. Rank 0 adds the section, its blocks gathered from every rank in file order
+// while w.write() runs (gather_blocks); the other ranks call send_transfer_section for the same
+// sections in the same order.
+void add_transfer_section(RltWriter& w, std::uint32_t type, const std::string& name,
+                          BlockedTransfer t, const RankShares& ranks, std::size_t block_bytes);
+void send_transfer_section(BlockedTransfer t, const RankShares& ranks, std::size_t block_bytes);
+
+// Collective: each rank's blocks of a section (`mine`, its blocks of `block_bytes` in local
+// order) to rank 0, which hands every block in file order to `sink` (the others pass none). In
+// rounds of at most kGatherRoundBytes received: rank 0 holds one round, never the section.
+inline constexpr std::size_t kGatherRoundBytes = std::size_t{64} << 20;
+void gather_blocks(const RankShares& ranks, std::span<const std::byte> mine,
+                   std::size_t block_bytes, const RltWriter::Sink* sink);
 
 // The section `type` as written by add_transfer_section. InputError "FILE: reason" when it is
 // missing or of another element type.

@@ -51,9 +51,10 @@ Precomputed precompute_transfer(const Scene& scene, const PrecomputeOptions& opt
                                ? dealt_blocks(*options.ranks, out.receivers.size(), kBlock)
                                : single_process_shares(out.receivers.size(), kBlock);
   if (options.memory_bytes) {
-    agree_on_failure(*ranks.exchange,
-                     memory_refusal(scene, least_precompute_memory(scene, out.receivers),
-                                    *options.memory_bytes, options.ranks_here));
+    agree_on_failure(
+        *ranks.exchange,
+        memory_refusal(scene, least_precompute_memory(scene, out.receivers, ranks.size()),
+                       *options.memory_bytes, options.ranks_here));
   }
   const TracedScene traced = build_traced_scene(out.mesh, scene.materials);
   out.phases.push_back({"prepare", seconds_since(start), 0});

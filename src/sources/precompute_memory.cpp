@@ -1,7 +1,9 @@
 #include "sources/precompute_memory.h"
 
+#include <algorithm>
 #include <cstdio>
 
+#include "engine/transfer_blocks.h"
 #include "math/sh.h"
 
 namespace relight {
@@ -22,13 +24,22 @@ std::string gigabytes(std::uint64_t bytes) {
 
 }  // namespace
 
-PrecomputeMemory least_precompute_memory(const Scene& scene, const Receivers& receivers) {
+PrecomputeMemory least_precompute_memory(const Scene& scene, const Receivers& receivers,
+                                         int ranks) {
   PrecomputeMemory m;
   m.receivers = receivers.size();
+  m.ranks = static_cast<std::uint64_t>(std::max(ranks, 1));
+  // A rank's share, rounded up to whole blocks of the transfer.
+  m.share = std::min<std::uint64_t>(m.receivers,
+                                    (block_count(m.receivers) + m.ranks - 1) / m.ranks * kBlock);
   m.columns =
       scene.luminaires.size() * static_cast<std::uint64_t>(sh_count(scene.precompute.sh_order)) +
       scene.portals.size() * static_cast<std::uint64_t>(sh_count(scene.precompute.portal_sh_order));
-  m.bytes = dense_half_copies(scene) * m.receivers * m.columns * sizeof(float) / 2;
+  const std::uint64_t packing = dense_half_copies(scene) * m.share * m.columns * sizeof(float) / 2;
+  // The bounce: every vertex's reflected light beside the rank's direct columns, their vertex
+  // rows and its gathered rows (only on several ranks can this exceed the packing's peak).
+  const std::uint64_t bounce = (receivers.vertex_count + 3 * m.share) * m.columns * sizeof(float);
+  m.bytes = std::max(packing, bounce);
   return m;
 }
 
@@ -40,11 +51,14 @@ std::string memory_refusal(const Scene& scene, const PrecomputeMemory& need,
   std::string where =
       ranks_here > 1 ? "for each of the " + std::to_string(ranks_here) + " ranks on this machine"
                      : "on this machine";
+  const std::string receivers = need.ranks > 1 ? "a rank's " + std::to_string(need.share) + " of " +
+                                                     std::to_string(need.receivers) + " receivers"
+                                               : std::to_string(need.receivers) + " receivers";
   return scene.file.string() + ": too large to precompute here: it needs at least " +
-         gigabytes(need.bytes) + " (" + std::to_string(need.receivers) + " receivers × " +
-         std::to_string(need.columns) + " bounced basis columns × 4 bytes × " + copies +
-         " dense copies at its peak), and " + gigabytes(available) + " is available " + where +
-         " (MemAvailable + SwapFree)";
+         gigabytes(need.bytes) + " (" + receivers + " × " + std::to_string(need.columns) +
+         " bounced basis columns × 4 bytes × " + copies + " dense copies at its peak" +
+         (need.ranks > 1 ? ", or the bounce's reflected light of every vertex" : "") + "), and " +
+         gigabytes(available) + " is available " + where + " (MemAvailable + SwapFree)";
 }
 
 }  // namespace relight

@@ -20,11 +20,16 @@
 namespace relight {
 
 struct PrecomputeMemory {
-  std::uint64_t bytes = 0;  // the least the peak holds
+  std::uint64_t bytes = 0;  // the least the peak of one rank holds
   std::uint64_t receivers = 0, columns = 0;
+  std::uint64_t ranks = 1, share = 0;  // share: the receivers of the rank with the most
 };
 
-PrecomputeMemory least_precompute_memory(const Scene& scene, const Receivers& receivers);
+// On `ranks` ranks (engine/ranks.h), each holds the dense matrices of its share of the
+// receivers only, and during the bounce the reflected light of every vertex (its own and those
+// its rows read from other ranks: in a room, nearly all).
+PrecomputeMemory least_precompute_memory(const Scene& scene, const Receivers& receivers,
+                                         int ranks = 1);
 
 // Empty when `need` fits in `available` bytes (a rank's share of its machine, `ranks_here` ranks
 // sharing it); else the refusal, "SCENE: reason" with the numbers.

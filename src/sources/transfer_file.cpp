@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <stdexcept>
+#include <utility>
 
 #include "common/input_error.h"
 #include "common/read_file.h"
@@ -39,14 +41,99 @@ std::span<const std::uint32_t> indices(const int* p, Eigen::Index n) {
   return {reinterpret_cast<const std::uint32_t*>(p), static_cast<std::size_t>(n)};
 }
 
-// The gather operator kept for the run-time bounce (engine/runtime_scene.h), in compressed rows.
-void write_gather_sections(RltWriter& w, const Eigen::SparseMatrix<float, Eigen::RowMajor>& g) {
-  if (g.nonZeros() == 0) return;
+using GatherMatrix = Eigen::SparseMatrix<float, Eigen::RowMajor>;
+
+// The gather operator's sections, in file order.
+enum class GatherSection { rows, columns, values };
+
+// Several ranks (issue 19; collective): one of the gather operator's sections from every rank's
+// rows (engine/gather_operator.h: each rank holds its own), gathered block by block of
+// receivers as rank 0 writes it: per block, its rows' entry counts, columns or values. `sink`
+// (rank 0) receives the blocks in file order; the other ranks pass none.
+void gather_operator_section(const GatherMatrix& g, const RankShares& ranks, GatherSection section,
+                             const RecordSink* sink) {
+  const std::vector<std::size_t> mine = ranks.my_blocks();
+  // A few MB a round: 64 rows of up to 4,096 entries (a sensor's) are 1 MB.
+  constexpr std::size_t kBlocksPerRound = 32;
+  const int* outer = g.outerIndexPtr();
+  std::vector<std::uint32_t> counts;
+  gather_block_records(
+      ranks,
+      [&](std::size_t i) -> std::span<const std::uint8_t> {
+        const std::size_t first = ranks.first(mine[i]), last = ranks.last(mine[i]);
+        const auto begin = static_cast<std::size_t>(outer[first]);
+        const auto entries = static_cast<std::size_t>(outer[last]) - begin;
+        switch (section) {
+          case GatherSection::rows:
+            counts.clear();
+            for (std::size_t r = first; r < last; ++r) {
+              counts.push_back(static_cast<std::uint32_t>(outer[r + 1] - outer[r]));
+            }
+            return {reinterpret_cast<const std::uint8_t*>(counts.data()),
+                    counts.size() * sizeof(std::uint32_t)};
+          case GatherSection::columns:
+            return {reinterpret_cast<const std::uint8_t*>(g.innerIndexPtr() + begin),
+                    entries * sizeof(std::uint32_t)};
+          case GatherSection::values:
+            return {reinterpret_cast<const std::uint8_t*>(g.valuePtr() + begin),
+                    entries * sizeof(float)};
+        }
+        return {};
+      },
+      kBlocksPerRound, sink);
+}
+
+// The gather operator kept for the run-time bounce (engine/runtime_scene.h), in compressed rows;
+// none when it has no entry (`entries`: over every rank's rows). On several ranks, each section
+// gathered as it is written (gather_operator_section); the other ranks send theirs in the same
+// order (send_gather_sections).
+void write_gather_sections(RltWriter& w, const GatherMatrix& g, std::uint64_t entries,
+                           const RankShares& ranks) {
+  if (entries == 0) return;
   if (!g.isCompressed()) throw std::invalid_argument("gather operator not compressed");
-  w.add_u32(kGatherRows, "gather rows", indices(g.outerIndexPtr(), g.rows() + 1));
-  w.add_u32(kGatherColumns, "gather columns", indices(g.innerIndexPtr(), g.nonZeros()));
-  w.add_f32(kGatherValues, "gather values",
-            std::span(g.valuePtr(), static_cast<std::size_t>(g.nonZeros())));
+  if (ranks.alone()) {
+    w.add_u32(kGatherRows, "gather rows", indices(g.outerIndexPtr(), g.rows() + 1));
+    w.add_u32(kGatherColumns, "gather columns", indices(g.innerIndexPtr(), g.nonZeros()));
+    w.add_f32(kGatherValues, "gather values",
+              std::span(g.valuePtr(), static_cast<std::size_t>(g.nonZeros())));
+    return;
+  }
+  // The rows' offsets from their counts, running over the blocks in file order.
+  w.add_produced_section(
+      kGatherRows, "gather rows",
+      [&g, ranks](const RltWriter::Sink& sink) {
+        std::uint32_t offset = 0;
+        std::vector<std::uint32_t> offsets;
+        const RecordSink to_offsets = [&](std::span<const std::uint8_t> block) {
+          offsets.resize(block.size() / sizeof(std::uint32_t));
+          std::memcpy(offsets.data(), block.data(), offsets.size() * sizeof(std::uint32_t));
+          for (std::uint32_t& o : offsets) o = std::exchange(offset, offset + o);
+          sink(std::as_bytes(std::span(offsets)));
+        };
+        gather_operator_section(g, ranks, GatherSection::rows, &to_offsets);
+        sink(std::as_bytes(std::span(&offset, 1)));
+      },
+      RltElement::u32);
+  for (const GatherSection section : {GatherSection::columns, GatherSection::values}) {
+    const bool columns = section == GatherSection::columns;
+    w.add_produced_section(
+        columns ? kGatherColumns : kGatherValues, columns ? "gather columns" : "gather values",
+        [&g, ranks, section](const RltWriter::Sink& sink) {
+          const RecordSink to_sink = [&sink](std::span<const std::uint8_t> block) {
+            sink(std::as_bytes(block));
+          };
+          gather_operator_section(g, ranks, section, &to_sink);
+        },
+        columns ? RltElement::u32 : RltElement::f32);
+  }
+}
+
+void send_gather_sections(const GatherMatrix& g, std::uint64_t entries, const RankShares& ranks) {
+  if (entries == 0) return;
+  for (const GatherSection s :
+       {GatherSection::rows, GatherSection::columns, GatherSection::values}) {
+    gather_operator_section(g, ranks, s, nullptr);
+  }
 }
 
 void read_gather_sections(const RltFile& file, std::size_t receivers, std::size_t vertices,
@@ -113,11 +200,49 @@ std::string scene_digest(const nlohmann::json& scene_document) {
   return hex;
 }
 
+namespace {
+
+// The ranks' shares of the receivers (engine/ranks.h), and the bytes of one block of each kind
+// of blocked section.
+struct BlockedSections {
+  RankShares ranks;
+  LuminaireBlockBytes luminaire;
+  std::size_t portal_indirect = 0;
+  std::uint64_t gather_entries = 0;  // over every rank's rows
+};
+
+BlockedSections blocked_sections(const Precomputed& p, const Scene& scene, RankExchange* ranks) {
+  const std::size_t receivers = p.receivers.size();
+  const std::size_t element =
+      transfer_storage_named(scene.precompute.storage) == TransferStorage::fp16 ? 2 : 4;
+  const auto k = static_cast<std::size_t>(sh_count(p.sh_order));
+  BlockedSections out{ranks != nullptr ? dealt_blocks(*ranks, receivers, kBlock)
+                                       : single_process_shares(receivers, kBlock),
+                      {k * 3 * kBlock * element, p.direct_mode == "sh" ? k * kBlock * 4 : 0},
+                      static_cast<std::size_t>(sh_count(p.portal_sh_order)) * 3 * kBlock * element,
+                      static_cast<std::uint64_t>(p.gather.nonZeros())};
+  // Collective on several ranks: every rank calls this first, in both paths.
+  if (!out.ranks.alone()) out.gather_entries = sum_over_ranks(*ranks, out.gather_entries);
+  return out;
+}
+
+}  // namespace
+
+void send_transfer_file_sections(const Precomputed& p, const Scene& scene, RankExchange& ranks) {
+  const BlockedSections blocked = blocked_sections(p, scene, &ranks);
+  // In the order write_transfer_file adds them.
+  send_luminaire_sections(p.luminaires, blocked.ranks, blocked.luminaire);
+  send_portal_sections(p.portals, blocked.ranks, blocked.portal_indirect);
+  send_gather_sections(p.gather, blocked.gather_entries, blocked.ranks);
+}
+
 void write_transfer_file(const fs::path& file, const Precomputed& p, const Scene& source,
-                         const nlohmann::json& scene_document, const fs::path& scene_file) {
+                         const nlohmann::json& scene_document, const fs::path& scene_file,
+                         RankExchange* ranks) {
   if (p.luminaires.size() > 0xFFFF || p.portals.size() > 0xFFFF) {
     throw std::invalid_argument("too many luminaires or portals");
   }
+  const BlockedSections blocked = blocked_sections(p, source, ranks);
   nlohmann::json scene = scene_document;
   scene.erase("geometry");
   nlohmann::json phases = nlohmann::json::array();
@@ -137,7 +262,8 @@ void write_transfer_file(const fs::path& file, const Precomputed& p, const Scene
       {"photometry", photometry_files},
       {"portal_sh_order", p.portal_sh_order},
       {"nearfield_sh_order", p.nearfield.sh_order},
-      {"portals", portal_metadata(p.portals)},
+      {"portals",
+       portal_metadata(p.portals, block_count(p.receivers.size()) * blocked.portal_indirect)},
       {"format", "relight transfer"},
       {"scene_file", fs::absolute(scene_file).lexically_normal().string()},
       {"scene_digest", scene_digest(scene_document)},
@@ -180,10 +306,10 @@ void write_transfer_file(const fs::path& file, const Precomputed& p, const Scene
   w.add_u32(kTriangles, "triangles", triangles);
   w.add_u32(kPortalTriangles, "portal triangles", p.triangle_portal);
   w.add_u32(kTriangleMaterials, "triangle materials", p.mesh.triangle_material);
-  write_luminaire_sections(w, p.luminaires, photometry);
-  write_portal_sections(w, p.portals);
+  write_luminaire_sections(w, p.luminaires, photometry, blocked.ranks, blocked.luminaire);
+  write_portal_sections(w, p.portals, blocked.ranks, blocked.portal_indirect);
   write_nearfield_sections(w, p.nearfield);
-  write_gather_sections(w, p.gather);
+  write_gather_sections(w, p.gather, blocked.gather_entries, blocked.ranks);
   ObjectSectionData objects;
   write_object_sections(w, p.objects, objects);
   try {

@@ -67,7 +67,7 @@ void RltWriter::add_section(std::uint32_t type, std::string name, std::span<cons
     throw std::invalid_argument("rlt section '" + name + "': size is not a whole number of " +
                                 rlt_element_name(element) + " values");
   }
-  sections_.push_back({type, element, flags, std::move(name), bytes, nullptr});
+  sections_.push_back({type, element, flags, std::move(name), bytes, nullptr, nullptr});
 }
 
 void RltWriter::add_text(std::uint32_t type, std::string name, std::string text,
@@ -77,9 +77,18 @@ void RltWriter::add_text(std::uint32_t type, std::string name, std::string text,
   sections_.back().owned = std::move(owned);
 }
 
+void RltWriter::add_produced_section(std::uint32_t type, std::string name, Producer produce,
+                                     RltElement element, std::uint32_t flags) {
+  add_section(type, std::move(name), {}, element, flags);
+  sections_.back().produce = std::move(produce);
+}
+
 std::uint64_t RltWriter::file_size() const {
   std::uint64_t end = sizeof(RltHeader) + sections_.size() * sizeof(RltTableEntry);
-  for (const Section& s : sections_) end = rlt_align(end) + s.bytes.size();
+  for (const Section& s : sections_) {
+    if (s.produce) throw std::logic_error("rlt file size: '" + s.name + "' is produced in write()");
+    end = rlt_align(end) + s.bytes.size();
+  }
   return rlt_align(end);
 }
 
@@ -100,10 +109,27 @@ void RltWriter::write(const std::filesystem::path& file) const {
       entry.type = s.type;
       entry.element = static_cast<std::uint32_t>(s.element) | s.flags << 8;
       entry.offset = offset;
-      entry.size = s.bytes.size();
-      entry.checksum = write_hashed(out, s.bytes);
+      if (s.produce) {
+        Xxh64 hash;
+        std::uint64_t size = 0;
+        s.produce([&](std::span<const std::byte> piece) {
+          hash.update(piece);
+          out.append(piece);
+          size += piece.size();
+        });
+        if (size % rlt_element_size(s.element) != 0) {
+          throw std::invalid_argument("rlt section '" + s.name +
+                                      "': size is not a whole number of " +
+                                      rlt_element_name(s.element) + " values");
+        }
+        entry.size = size;
+        entry.checksum = hash.digest();
+      } else {
+        entry.size = s.bytes.size();
+        entry.checksum = write_hashed(out, s.bytes);
+      }
       std::memcpy(entry.name.data(), s.name.data(), s.name.size());
-      const std::uint64_t end = offset + s.bytes.size();
+      const std::uint64_t end = offset + entry.size;
       offset = rlt_align(end);
       out.append(std::span(kZeros).first(offset - end));
     }

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
@@ -50,10 +51,19 @@ struct RltWriter {
                std::uint32_t flags = 0) {
     add_values(type, name, values, flags);
   }
+  // A section whose bytes `produce` hands to its sink in order, piece by piece, while write()
+  // runs: bytes gathered from other processes as the file is written (issue 19), never held
+  // whole. Its size is what it produced; a size that is not a whole number of elements throws
+  // std::invalid_argument from write().
+  using Sink = std::function<void(std::span<const std::byte>)>;
+  using Producer = std::function<void(const Sink&)>;
+  void add_produced_section(std::uint32_t type, std::string name, Producer produce,
+                            RltElement element, std::uint32_t flags = 0);
+
   // A text section (JSON metadata); the writer keeps its own copy.
   void add_text(std::uint32_t type, std::string name, std::string text, std::uint32_t flags = 0);
 
-  // The size the file will have.
+  // The size the file will have; std::logic_error when a section is produced while writing.
   std::uint64_t file_size() const;
 
   // Writes the file atomically through write_atomically. I/O errors throw
@@ -68,6 +78,7 @@ struct RltWriter {
     std::string name;
     std::span<const std::byte> bytes;
     std::shared_ptr<const std::string> owned;  // backs `bytes` for text sections
+    Producer produce;                          // instead of `bytes`, when set
   };
 
   template <RltValue T>

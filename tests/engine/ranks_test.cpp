@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include "engine/bounce_solver.h"
 #include "engine/gather_operator.h"
 #include "engine/transfer_blocks.h"
 #include "scene/primitives.h"
@@ -78,9 +79,11 @@ TEST(RankShares, BlocksAreDealtInTurnAndCoverEveryReceiverOnce) {
   EXPECT_THROW(dealt_blocks(alone, 10, 0), std::invalid_argument);
 }
 
-TEST(RankExchange, TwoRanksAsThreadsBuildTheGatherOperatorBitForBitAsOneProcess) {
+// A box room with a box inside and 90 sensors, its receivers more than four blocks.
+Scene rank_scene() {
   Scene scene;
   scene.materials = {{"wall"}};
+  scene.materials[0].albedo = {0.7, 0.5, 0.3};
   scene.geometry = make_box({0, 0, 0}, {4, 3, 5}, Facing::kInward, 0);
   scene.geometry.append(make_box({1, 0, 1}, {2, 1, 2}, Facing::kOutward, 0));
   for (int i = 0; i < 90; ++i) {  // sensors cost 4× a vertex's rays below
@@ -88,14 +91,29 @@ TEST(RankExchange, TwoRanksAsThreadsBuildTheGatherOperatorBitForBitAsOneProcess)
     name += std::to_string(i);
     scene.sensors.push_back({name, {{0.2 + 0.04 * i, 0.8, 2.5}}, {0, 1, 0}});
   }
+  return scene;
+}
+
+PreparedMesh rank_mesh(const Scene& scene) {
   PreparationSettings settings;
   settings.max_edge = 0.4;
-  const PreparedMesh mesh = prepare_mesh(scene.geometry, settings);
-  const TracedScene traced = build_traced_scene(mesh, scene.materials);
-  const Receivers receivers = make_receivers(scene, mesh);
+  return prepare_mesh(scene.geometry, settings);
+}
+
+struct RankRoom {
+  Scene scene = rank_scene();
+  PreparedMesh mesh = rank_mesh(scene);
+  TracedScene traced = build_traced_scene(mesh, scene.materials);
+  Receivers receivers = make_receivers(scene, mesh);
+};
+
+TEST(RankExchange, TwoRanksAsThreadsBuildTheirRowsOfTheGatherOperatorBitForBitAsOneProcess) {
+  const RankRoom room;
+  const Receivers& receivers = room.receivers;
   ASSERT_GT(receivers.size(), 4 * kBlock);
 
-  const GatherOperator one = build_gather_operator(receivers, mesh, traced, 32, 128, 5, false);
+  const GatherOperator one =
+      build_gather_operator(receivers, room.mesh, room.traced, 32, 128, 5, false);
   ThreadRanks ranks(2);
   std::vector<GatherOperator> two(2);
   std::vector<std::thread> threads;
@@ -104,55 +122,194 @@ TEST(RankExchange, TwoRanksAsThreadsBuildTheGatherOperatorBitForBitAsOneProcess)
       ThreadRanks::Rank rank(ranks, k);
       const RankShares shares = dealt_blocks(rank, receivers.size(), kBlock);
       two[static_cast<std::size_t>(k)] =
-          build_gather_operator(receivers, mesh, traced, 32, 128, 5, false, &shares);
+          build_gather_operator(receivers, room.mesh, room.traced, 32, 128, 5, false, &shares);
     });
   }
   for (std::thread& t : threads) t.join();
-  for (const GatherOperator& g : two) {
-    ASSERT_EQ(g.matrix.nonZeros(), one.matrix.nonZeros());
-    EXPECT_EQ(g.rays, one.rays);
-    EXPECT_TRUE(std::equal(g.matrix.outerIndexPtr(), g.matrix.outerIndexPtr() + g.matrix.rows() + 1,
-                           one.matrix.outerIndexPtr()));
-    EXPECT_TRUE(std::equal(g.matrix.innerIndexPtr(), g.matrix.innerIndexPtr() + g.matrix.nonZeros(),
-                           one.matrix.innerIndexPtr()));
-    EXPECT_TRUE(std::equal(g.matrix.valuePtr(), g.matrix.valuePtr() + g.matrix.nonZeros(),
-                           one.matrix.valuePtr()));
+  // Each rank holds its own blocks' rows, those of one process bit for bit, the others empty.
+  EXPECT_EQ(two[0].matrix.nonZeros() + two[1].matrix.nonZeros(), one.matrix.nonZeros());
+  for (std::size_t k = 0; k < 2; ++k) {
+    const auto& g = two[k].matrix;
+    EXPECT_EQ(two[k].rays, one.rays);
+    ASSERT_EQ(g.rows(), one.matrix.rows());
+    for (Eigen::Index r = 0; r < g.rows(); ++r) {
+      const bool mine = (static_cast<std::size_t>(r) / kBlock) % 2 == k;
+      const int* go = g.outerIndexPtr();
+      const int* oo = one.matrix.outerIndexPtr();
+      if (!mine) {
+        ASSERT_EQ(go[r + 1], go[r]) << "rank " << k << " row " << r;
+        continue;
+      }
+      ASSERT_EQ(go[r + 1] - go[r], oo[r + 1] - oo[r]) << "rank " << k << " row " << r;
+      EXPECT_TRUE(std::equal(g.innerIndexPtr() + go[r], g.innerIndexPtr() + go[r + 1],
+                             one.matrix.innerIndexPtr() + oo[r]));
+      EXPECT_TRUE(std::equal(g.valuePtr() + go[r], g.valuePtr() + go[r + 1],
+                             one.matrix.valuePtr() + oo[r]));
+    }
   }
 }
 
-TEST(RankExchange, ShareRowsFillsEveryRanksRowsOfAMatrixAndAVector) {
+TEST(RankExchange, ThreeRanksAsThreadsBounceTheirRowsBitForBitAsOneProcess) {
+  const RankRoom room;
+  const Receivers& receivers = room.receivers;
+  const GatherOperator one =
+      build_gather_operator(receivers, room.mesh, room.traced, 32, 128, 5, false);
+  // Two columns of direct light: a ramp over the receivers and a patch.
+  const auto n = static_cast<Eigen::Index>(receivers.size());
+  Eigen::MatrixXf direct(n, 2);
+  for (Eigen::Index r = 0; r < n; ++r) {
+    direct(r, 0) = 1.0f + 0.01f * static_cast<float>(r % 97);
+    direct(r, 1) = r % 5 == 0 ? 3.0f : 0.0f;
+  }
+  const BounceSettings settings;
+  const BounceResult alone = solve_bounces(one, receivers, direct, settings, false);
+  constexpr int kRanks = 3;
+  ThreadRanks ranks(kRanks);
+  std::vector<BounceResult> results(kRanks);
+  std::vector<std::uint64_t> received(kRanks);
+  std::vector<std::thread> threads;
+  for (int k = 0; k < kRanks; ++k) {
+    threads.emplace_back([&, k] {
+      ThreadRanks::Rank rank(ranks, k);
+      const RankShares shares = dealt_blocks(rank, receivers.size(), kBlock);
+      const GatherOperator g =
+          build_gather_operator(receivers, room.mesh, room.traced, 32, 128, 5, false, &shares);
+      Eigen::MatrixXf mine(static_cast<Eigen::Index>(shares.my_receivers()), 2);
+      for (Eigen::Index l = 0; l < mine.rows(); ++l) {
+        mine.row(l) = direct.row(
+            static_cast<Eigen::Index>(shares.receiver_of_local_row(static_cast<std::size_t>(l))));
+      }
+      results[static_cast<std::size_t>(k)] =
+          solve_bounces(g, receivers, mine, settings, false, &shares);
+    });
+  }
+  for (std::thread& t : threads) t.join();
+  for (int k = 0; k < kRanks; ++k) {
+    const BounceResult& r = results[static_cast<std::size_t>(k)];
+    EXPECT_EQ(r.bounces, alone.bounces);
+    ThreadRanks::Rank rank(ranks, k);
+    const RankShares shares = dealt_blocks(rank, receivers.size(), kBlock);
+    for (int c = 0; c < 3; ++c) {
+      ASSERT_EQ(r.indirect[c].rows(), static_cast<Eigen::Index>(shares.my_receivers()));
+      for (Eigen::Index l = 0; l < r.indirect[c].rows(); ++l) {
+        const auto row =
+            static_cast<Eigen::Index>(shares.receiver_of_local_row(static_cast<std::size_t>(l)));
+        ASSERT_EQ(r.indirect[c](l, 0), alone.indirect[c](row, 0)) << "rank " << k << " row " << row;
+        ASSERT_EQ(r.indirect[c](l, 1), alone.indirect[c](row, 1)) << "rank " << k << " row " << row;
+      }
+    }
+  }
+}
+
+TEST(RankExchange, BlockRecordsReachRankZeroInTheOrderOfTheBlocks) {
+  // 23 blocks of 10 receivers dealt among 3 ranks; records of varying length, two blocks a round.
+  constexpr int kRanks = 3;
+  ThreadRanks ranks(kRanks);
+  std::vector<std::uint8_t> received;
+  std::vector<std::size_t> sizes;
+  std::vector<std::thread> threads;
+  for (int k = 0; k < kRanks; ++k) {
+    threads.emplace_back([&, k] {
+      ThreadRanks::Rank rank(ranks, k);
+      const RankShares shares = dealt_blocks(rank, 225, 10);
+      const std::vector<std::size_t> mine = shares.my_blocks();
+      std::vector<std::uint8_t> record;
+      const RecordSink sink = [&](std::span<const std::uint8_t> r) {
+        received.insert(received.end(), r.begin(), r.end());
+        sizes.push_back(r.size());
+      };
+      gather_block_records(
+          shares,
+          [&](std::size_t i) {
+            record.assign(mine[i] % 4, static_cast<std::uint8_t>(mine[i]));
+            return std::span<const std::uint8_t>(record);
+          },
+          2, k == 0 ? &sink : nullptr);
+    });
+  }
+  for (std::thread& t : threads) t.join();
+  ASSERT_EQ(sizes.size(), 23u);
+  std::size_t at = 0;
+  for (std::size_t b = 0; b < 23; ++b) {
+    ASSERT_EQ(sizes[b], b % 4) << "block " << b;
+    for (std::size_t i = 0; i < sizes[b]; ++i) ASSERT_EQ(received[at + i], b);
+    at += sizes[b];
+  }
+}
+
+TEST(RankExchange, AllToAllHandsEachRankThePiecesMeantForIt) {
+  constexpr int kRanks = 3;
+  ThreadRanks ranks(kRanks);
+  std::vector<std::vector<std::vector<std::uint8_t>>> got(kRanks);
+  std::vector<std::thread> threads;
+  for (int k = 0; k < kRanks; ++k) {
+    threads.emplace_back([&, k] {
+      ThreadRanks::Rank rank(ranks, k);
+      std::vector<std::vector<std::uint8_t>> to(kRanks);
+      // Rank k sends rank j (k + 1) · j bytes of value 10k + j.
+      for (int j = 0; j < kRanks; ++j) {
+        to[static_cast<std::size_t>(j)].assign(static_cast<std::size_t>((k + 1) * j),
+                                               static_cast<std::uint8_t>(10 * k + j));
+      }
+      got[static_cast<std::size_t>(k)] = rank.all_to_all(std::move(to));
+    });
+  }
+  for (std::thread& t : threads) t.join();
+  for (int j = 0; j < kRanks; ++j) {
+    ASSERT_EQ(got[j].size(), std::size_t{kRanks});
+    for (int k = 0; k < kRanks; ++k) {
+      EXPECT_EQ(got[j][k], std::vector<std::uint8_t>(static_cast<std::size_t>((k + 1) * j),
+                                                     static_cast<std::uint8_t>(10 * k + j)))
+          << "from " << k << " to " << j;
+    }
+  }
+  EXPECT_THROW(SingleProcess().all_to_all({}), std::invalid_argument);
+}
+
+TEST(RankExchange, ShareRowsFillsEveryRanksRowsOfAVector) {
   // 150 receivers in blocks of 64 among 4 ranks: the fourth has none.
   ThreadRanks ranks(4);
-  std::vector<Eigen::MatrixXf> matrices(4);
   std::vector<std::vector<double>> vectors(4);
   std::vector<std::thread> threads;
   for (int k = 0; k < 4; ++k) {
     threads.emplace_back([&, k] {
       ThreadRanks::Rank rank(ranks, k);
       const RankShares shares = dealt_blocks(rank, 150, 64);
-      Eigen::MatrixXf m = Eigen::MatrixXf::Zero(150, 4);
       std::vector<double> v(2 * 150, 0.0);
       for (const std::size_t b : shares.my_blocks()) {
         for (std::size_t r = shares.first(b); r < shares.last(b); ++r) {
-          for (int c = 0; c < 4; ++c) m(static_cast<Eigen::Index>(r), c) = float(r * 10 + c);
           v[2 * r] = double(r);
           v[2 * r + 1] = -double(r);
         }
       }
-      share_rows(shares, m);
       share_rows(shares, 2, v);
-      matrices[static_cast<std::size_t>(k)] = std::move(m);
       vectors[static_cast<std::size_t>(k)] = std::move(v);
     });
   }
   for (std::thread& t : threads) t.join();
   for (int k = 0; k < 4; ++k) {
-    for (Eigen::Index r = 0; r < 150; ++r) {
-      for (int c = 0; c < 4; ++c) ASSERT_EQ(matrices[k](r, c), float(r * 10 + c)) << "rank " << k;
-      ASSERT_EQ(vectors[k][2 * r], double(r));
-      ASSERT_EQ(vectors[k][2 * r + 1], -double(r));
+    for (std::size_t r = 0; r < 150; ++r) {
+      ASSERT_EQ(vectors[k][2 * r], double(r)) << "rank " << k;
+      ASSERT_EQ(vectors[k][2 * r + 1], -double(r)) << "rank " << k;
     }
   }
+}
+
+TEST(RankShares, LocalRowsAreTheRanksBlocksOneAfterAnother) {
+  // 150 receivers in blocks of 64 among 2 ranks: rank 0 holds blocks 0 and 2 (the short one).
+  ThreadRanks ranks(2);
+  ThreadRanks::Rank zero(ranks, 0);
+  const RankShares shares = dealt_blocks(zero, 150, 64);
+  EXPECT_EQ(shares.my_receivers(), 64u + 22u);
+  for (std::size_t l = 0; l < shares.my_receivers(); ++l) {
+    const std::size_t r = shares.receiver_of_local_row(l);
+    EXPECT_EQ(r, l < 64 ? l : 128 + (l - 64));
+    EXPECT_EQ(shares.owner(r), 0);
+    EXPECT_EQ(shares.local_row(r), l);
+  }
+  EXPECT_EQ(shares.owner(64), 1);
+  EXPECT_EQ(shares.my_receivers_below(100), 64u);
+  EXPECT_EQ(shares.my_receivers_below(140), 64u + 12u);
 }
 
 }  // namespace

@@ -230,5 +230,35 @@ TEST(RltWriter, RefusesDuplicateTypesBadNamesAndPartialElements) {
   EXPECT_EQ(writer.file_size(), 64u + 2 * 64 + 64 + 64);
 }
 
+TEST(RltWriter, AProducedSectionIsWrittenByteForByteAsTheSameBytesAdded) {
+  std::vector<float> values(300'000);
+  for (std::size_t i = 0; i < values.size(); ++i) values[i] = 0.5f * static_cast<float>(i);
+  const testing::TempDir dir;
+  RltWriter added, produced;
+  for (RltWriter* w : {&added, &produced}) w->add_text(kMeta, "metadata", "{}");
+  added.add_f32(7, "values", values);
+  // In pieces of 4,097 floats, as ranks' blocks arrive (issue 19).
+  produced.add_produced_section(
+      7, "values",
+      [&](const RltWriter::Sink& sink) {
+        for (std::size_t at = 0; at < values.size(); at += 4097) {
+          sink(std::as_bytes(
+              std::span(values).subspan(at, std::min<std::size_t>(4097, values.size() - at))));
+        }
+      },
+      RltElement::f32);
+  EXPECT_THROW((void)produced.file_size(), std::logic_error);
+  added.write(dir.path() / "added.rlt");
+  produced.write(dir.path() / "produced.rlt");
+  EXPECT_EQ(read_bytes(dir.path() / "added.rlt"), read_bytes(dir.path() / "produced.rlt"));
+
+  RltWriter odd;
+  odd.add_produced_section(
+      8, "odd", [](const RltWriter::Sink& sink) { sink(std::as_bytes(std::span("abc", 3))); },
+      RltElement::u16);
+  EXPECT_THROW(odd.write(dir.path() / "odd.rlt"), std::invalid_argument);
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "odd.rlt"));
+}
+
 }  // namespace
 }  // namespace relight

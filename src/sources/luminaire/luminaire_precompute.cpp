@@ -33,7 +33,7 @@ PhaseTiming LuminairePrecompute::compute_direct(const SourceContext& context,
     t.direct = compute_direct_geometry(context.receivers, context.ray_points, context.traced,
                                        l.position, offsets, context.progress, context.ranks);
     rays += t.direct.rays;
-    columns.of(columns_[j]) = sh_basis_direct(t.direct, order);
+    columns.set(columns_[j], sh_basis_direct(t.direct, order));
     if (scene_->precompute.direct == "sh") {
       const Eigen::MatrixXf block = columns.of(columns_[j]);
       t.direct_sh_blocks = pack_blocks({&block});

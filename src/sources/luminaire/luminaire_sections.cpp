@@ -9,7 +9,8 @@
 namespace relight {
 
 void write_luminaire_sections(RltWriter& w, std::span<const LuminaireTransfer> luminaires,
-                              std::span<const std::string> photometry) {
+                              std::span<const std::string> photometry, const RankShares& ranks,
+                              const LuminaireBlockBytes& block) {
   for (std::size_t j = 0; j < luminaires.size(); ++j) {
     const LuminaireTransfer& l = luminaires[j];
     w.add_f32(rlt_indexed('D', 'X', j), rlt_indexed_name("direct dir x", j), l.direct.dir_x);
@@ -17,12 +18,23 @@ void write_luminaire_sections(RltWriter& w, std::span<const LuminaireTransfer> l
     w.add_f32(rlt_indexed('D', 'Z', j), rlt_indexed_name("direct dir z", j), l.direct.dir_z);
     w.add_f32(rlt_indexed('D', 'F', j), rlt_indexed_name("direct factor", j), l.direct.factor);
     add_transfer_section(w, rlt_indexed('T', 'I', j), rlt_indexed_name("indirect sh", j),
-                         l.indirect);
+                         l.indirect.view(), ranks, block.indirect);
     if (!photometry[j].empty()) {
       w.add_text(rlt_indexed('P', 'H', j), rlt_indexed_name("photometry", j), photometry[j]);
     }
-    if (!l.direct_sh_blocks.empty()) {
-      w.add_f32(rlt_indexed('T', 'D', j), rlt_indexed_name("direct sh", j), l.direct_sh_blocks);
+    if (ranks.alone() ? !l.direct_sh_blocks.empty() : block.direct_sh > 0) {
+      add_transfer_section(w, rlt_indexed('T', 'D', j), rlt_indexed_name("direct sh", j),
+                           BlockedTransfer{l.direct_sh_blocks, {}}, ranks, block.direct_sh);
+    }
+  }
+}
+
+void send_luminaire_sections(std::span<const LuminaireTransfer> luminaires, const RankShares& ranks,
+                             const LuminaireBlockBytes& block) {
+  for (const LuminaireTransfer& l : luminaires) {
+    send_transfer_section(l.indirect.view(), ranks, block.indirect);
+    if (block.direct_sh > 0) {
+      send_transfer_section(BlockedTransfer{l.direct_sh_blocks, {}}, ranks, block.direct_sh);
     }
   }
 }

@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "engine/ranks.h"
 #include "scene/scene.h"
 #include "sources/luminaire/luminaire_precompute.h"
 #include "sources/luminaire/luminaire_transfer_view.h"
@@ -18,10 +19,20 @@
 
 namespace relight {
 
+// The bytes of one block of kBlock receivers of a luminaire's "TI" and "TD" sections (0: none).
+struct LuminaireBlockBytes {
+  std::size_t indirect = 0, direct_sh = 0;
+};
+
 // `photometry[j]`: the file text of luminaire j, empty when it has none. The writer keeps
-// spans into both until it writes.
+// spans into both until it writes. On one of several ranks (issue 19; collective), rank 0's
+// writer gathers the blocked sections from every rank as it writes them, and the others call
+// send_luminaire_sections in the same order (engine/transfer_sections.h).
 void write_luminaire_sections(RltWriter& writer, std::span<const LuminaireTransfer> luminaires,
-                              std::span<const std::string> photometry);
+                              std::span<const std::string> photometry, const RankShares& ranks,
+                              const LuminaireBlockBytes& block);
+void send_luminaire_sections(std::span<const LuminaireTransfer> luminaires, const RankShares& ranks,
+                             const LuminaireBlockBytes& block);
 
 // The stored photometry text of luminaire j.
 std::string_view luminaire_photometry(const RltFile& file, std::size_t j);

@@ -331,10 +331,8 @@ PortalDirect compute_portal_direct(const Receivers& receivers, const std::vector
     }
   });
   bar.finish();
-  if (!own.alone()) {
-    share_chunks(own, chunks);
-    share_rows(own, result.sh_columns);
-  }
+  // The SH columns feed the bounce, which needs each rank's own rows only (engine/ranks.h).
+  if (!own.alone()) share_chunks(own, chunks);
 
   result.offsets.reserve(rows + 1);
   result.offsets.push_back(0);

@@ -48,8 +48,10 @@ struct PortalDirect {
   std::vector<std::uint8_t> records;   // one cubemap record per receiver, back to back
   std::vector<std::uint64_t> offsets;  // receivers + 1: record r is [offsets[r], offsets[r+1])
   CubemapEncodingStats stats;
-  Eigen::MatrixXf sh_columns;  // receivers × sh_count(order): direct E for radiance Y_k
-  Vec3 outward;                // unit: the side of the portal the light comes from
+  // receivers × sh_count(order): direct E for radiance Y_k; on one of several ranks, filled in
+  // for its own receivers only.
+  Eigen::MatrixXf sh_columns;
+  Vec3 outward;  // unit: the side of the portal the light comes from
   std::uint64_t rays = 0;
   std::uint64_t samples = 0;
 };

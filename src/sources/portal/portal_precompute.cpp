@@ -34,7 +34,7 @@ PhaseTiming PortalPrecompute::compute_direct(const SourceContext& context, Direc
                                      context.traced, t.geometry, settings, context.progress,
                                      context.ranks);
     rays += t.direct.rays;
-    columns.of(columns_[p]) = t.direct.sh_columns;
+    columns.set(columns_[p], t.direct.sh_columns);
     t.direct.sh_columns.resize(0, 0);
     transfers.push_back(std::move(t));
   }

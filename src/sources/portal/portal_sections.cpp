@@ -32,7 +32,8 @@ Vec3 vec3_from_json(const nlohmann::json& j) {
 
 }  // namespace
 
-void write_portal_sections(RltWriter& w, std::span<const PortalTransfer> portals) {
+void write_portal_sections(RltWriter& w, std::span<const PortalTransfer> portals,
+                           const RankShares& ranks, std::size_t indirect_block_bytes) {
   for (std::size_t q = 0; q < portals.size(); ++q) {
     const PortalTransfer& t = portals[q];
     w.add_section(rlt_indexed('C', 'R', q), rlt_indexed_name("portal direct cubemaps", q),
@@ -40,11 +41,19 @@ void write_portal_sections(RltWriter& w, std::span<const PortalTransfer> portals
     w.add_u64(rlt_indexed('C', 'O', q), rlt_indexed_name("portal direct offsets", q),
               t.direct.offsets);
     add_transfer_section(w, rlt_indexed('P', 'I', q), rlt_indexed_name("portal indirect sh", q),
-                         t.indirect);
+                         t.indirect.view(), ranks, indirect_block_bytes);
   }
 }
 
-nlohmann::json portal_metadata(std::span<const PortalTransfer> portals) {
+void send_portal_sections(std::span<const PortalTransfer> portals, const RankShares& ranks,
+                          std::size_t indirect_block_bytes) {
+  for (const PortalTransfer& t : portals) {
+    send_transfer_section(t.indirect.view(), ranks, indirect_block_bytes);
+  }
+}
+
+nlohmann::json portal_metadata(std::span<const PortalTransfer> portals,
+                               std::size_t indirect_bytes) {
   nlohmann::json out = nlohmann::json::array();
   for (const PortalTransfer& t : portals) {
     out.push_back({{"name", t.geometry.name},
@@ -57,7 +66,7 @@ nlohmann::json portal_metadata(std::span<const PortalTransfer> portals) {
                    {"samples", t.direct.samples},
                    {"rays", t.direct.rays},
                    {"direct_encoding", encoding_stats_json(t.direct.stats)},
-                   {"indirect_bytes", t.indirect.size_bytes()}});
+                   {"indirect_bytes", indirect_bytes}});
   }
   return out;
 }

@@ -21,8 +21,16 @@
 namespace relight {
 
 // The writer keeps spans into `portals` until it writes.
-void write_portal_sections(RltWriter& writer, std::span<const PortalTransfer> portals);
-nlohmann::json portal_metadata(std::span<const PortalTransfer> portals);
+// On one of several ranks (issue 19; collective), the indirect transfer ("PI", blocks of
+// `indirect_block_bytes`) is gathered from every rank as rank 0 writes it; the others call
+// send_portal_sections in the same order.
+void write_portal_sections(RltWriter& writer, std::span<const PortalTransfer> portals,
+                           const RankShares& ranks, std::size_t indirect_block_bytes);
+void send_portal_sections(std::span<const PortalTransfer> portals, const RankShares& ranks,
+                          std::size_t indirect_block_bytes);
+// `indirect_bytes`: the size of each portal's "PI" section (on several ranks, rank 0 holds only
+// its own blocks of it).
+nlohmann::json portal_metadata(std::span<const PortalTransfer> portals, std::size_t indirect_bytes);
 
 // Views of every portal's sections, from the metadata's "portals"; InputError (naming `where`
 // and the portal) when it disagrees with the scene or a size with `receivers` and K.
