@@ -122,5 +122,30 @@ TEST(RltAtomicWrite, ASuccessfulWriteReplacesTheOldFileWhole) {
   EXPECT_EQ(rlt.view<float>(1)[2], 2.0f);
 }
 
+// A process ended by SIGTERM or SIGINT while it writes (Ctrl-C; mpirun ending rank 0 because
+// another rank died) leaves no temporary, and ends by that signal as it would have.
+TEST(RltAtomicWrite, ASignalWhileWritingRemovesTheTemporaryAndEndsTheProcess) {
+  // Forked (not re-run): the child writes into this test's folder.
+  GTEST_FLAG_SET(death_test_style, "fast");
+  for (const int signal_number : {SIGTERM, SIGINT}) {
+    const testing::TempDir dir;
+    const auto file = dir.path() / "scene.rlt";
+    writer_of({1.0f}).write(file);
+    const std::vector<std::byte> old_bytes = read_bytes(file);
+    RltWriter writer;
+    writer.add_produced_section(
+        1, "values",
+        [signal_number](const RltWriter::Sink& sink) {
+          const float v = 2.0f;
+          sink(std::as_bytes(std::span(&v, 1)));
+          std::raise(signal_number);
+        },
+        RltElement::f32);
+    EXPECT_EXIT(writer.write(file), ::testing::KilledBySignal(signal_number), "");
+    EXPECT_EQ(folder_entries(dir.path()), std::vector<std::string>{"scene.rlt"});
+    EXPECT_EQ(read_bytes(file), old_bytes);
+  }
+}
+
 }  // namespace
 }  // namespace relight
