@@ -205,6 +205,31 @@ using RecordSink = std::function<void(std::span<const std::uint8_t>)>;
 void gather_block_records(const RankShares& ranks, const RecordOf& record,
                           std::size_t blocks_per_round, const RecordSink* sink);
 
+// What rank 0 receives a round when it gathers blocks of fixed size (64 MB).
+inline constexpr std::size_t kGatherRoundBytes = std::size_t{64} << 20;
+
+// Collective: `data` holds `stride` values per receiver (row-major rows, every receiver's place),
+// each rank having filled its own blocks' rows; rank 0's `sink` receives every block's rows in
+// order (gather_block_records), the others pass none.
+template <typename T>
+void gather_rows(const RankShares& ranks, std::size_t stride, std::span<const T> data,
+                 const RecordSink* sink) {
+  static_assert(std::is_trivially_copyable_v<T>);
+  if (data.size() != ranks.receivers * stride) {
+    throw std::invalid_argument("rank exchange: rows of another size");
+  }
+  const std::vector<std::size_t> mine = ranks.my_blocks();
+  const std::size_t block_bytes = std::max<std::size_t>(1, ranks.block * stride * sizeof(T));
+  gather_block_records(
+      ranks,
+      [&](std::size_t i) {
+        const T* first = data.data() + ranks.first(mine[i]) * stride;
+        return std::span(reinterpret_cast<const std::uint8_t*>(first),
+                         (ranks.last(mine[i]) - ranks.first(mine[i])) * stride * sizeof(T));
+      },
+      kGatherRoundBytes / (static_cast<std::size_t>(ranks.size()) * block_bytes), sink);
+}
+
 // Appends the bytes of `values` to `out`, and reads them back from `in` at `at` (advanced);
 // for the exchanges of records whose length varies per receiver.
 template <typename T>

@@ -61,6 +61,27 @@ void send_transfer_section(BlockedTransfer t, const RankShares& ranks, std::size
   gather_blocks(ranks, t.bytes(), block_bytes, nullptr);
 }
 
+void add_row_section(RltWriter& w, std::uint32_t type, const std::string& name,
+                     std::span<const float> rows, std::size_t stride, const RankShares& ranks) {
+  if (ranks.alone()) {
+    w.add_f32(type, name, rows);
+    return;
+  }
+  w.add_produced_section(
+      type, name,
+      [rows, stride, ranks](const RltWriter::Sink& sink) {
+        const RecordSink to_sink = [&sink](std::span<const std::uint8_t> block) {
+          sink(std::as_bytes(block));
+        };
+        gather_rows(ranks, stride, rows, &to_sink);
+      },
+      RltElement::f32);
+}
+
+void send_row_section(std::span<const float> rows, std::size_t stride, const RankShares& ranks) {
+  gather_rows(ranks, stride, rows, nullptr);
+}
+
 BlockedTransfer transfer_section(const RltFile& file, std::uint32_t type) {
   const RltSectionInfo& info = file.info(type);
   BlockedTransfer t;

@@ -31,9 +31,16 @@ void send_transfer_section(BlockedTransfer t, const RankShares& ranks, std::size
 // Collective: each rank's blocks of a section (`mine`, its blocks of `block_bytes` in local
 // order) to rank 0, which hands every block in file order to `sink` (the others pass none). In
 // rounds of at most kGatherRoundBytes received: rank 0 holds one round, never the section.
-inline constexpr std::size_t kGatherRoundBytes = std::size_t{64} << 20;
 void gather_blocks(const RankShares& ranks, std::span<const std::byte> mine,
                    std::size_t block_bytes, const RltWriter::Sink* sink);
+
+// Several ranks (issue 19; collective): a section of `stride` floats per receiver, `rows` holding
+// every receiver's place and this rank's own blocks filled in; rank 0 adds it, gathered from
+// every rank as it is written (gather_rows), the others call send_row_section in the same
+// order. One process adds `rows` as it is.
+void add_row_section(RltWriter& w, std::uint32_t type, const std::string& name,
+                     std::span<const float> rows, std::size_t stride, const RankShares& ranks);
+void send_row_section(std::span<const float> rows, std::size_t stride, const RankShares& ranks);
 
 // The section `type` as written by add_transfer_section. InputError "FILE: reason" when it is
 // missing or of another element type.

@@ -233,6 +233,7 @@ void send_transfer_file_sections(const Precomputed& p, const Scene& scene, RankE
   // In the order write_transfer_file adds them.
   send_luminaire_sections(p.luminaires, blocked.ranks, blocked.luminaire);
   send_portal_sections(p.portals, blocked.ranks, blocked.portal_indirect);
+  send_nearfield_sections(p.nearfield, blocked.ranks);
   send_gather_sections(p.gather, blocked.gather_entries, blocked.ranks);
 }
 
@@ -308,7 +309,7 @@ void write_transfer_file(const fs::path& file, const Precomputed& p, const Scene
   w.add_u32(kTriangleMaterials, "triangle materials", p.mesh.triangle_material);
   write_luminaire_sections(w, p.luminaires, photometry, blocked.ranks, blocked.luminaire);
   write_portal_sections(w, p.portals, blocked.ranks, blocked.portal_indirect);
-  write_nearfield_sections(w, p.nearfield);
+  write_nearfield_sections(w, p.nearfield, blocked.ranks);
   write_gather_sections(w, p.gather, blocked.gather_entries, blocked.ranks);
   ObjectSectionData objects;
   write_object_sections(w, p.objects, objects);

@@ -130,10 +130,8 @@ DirectGeometry compute_direct_geometry(const Receivers& receivers,
   });
   bar.finish();
   g.rays = rays.load();
-  if (!own.alone()) {
-    for (std::vector<float>* v : {&g.dir_x, &g.dir_y, &g.dir_z, &g.factor}) share_rows(own, 1, *v);
-    g.rays = sum_over_ranks(*own.exchange, g.rays);
-  }
+  // On several ranks each keeps its own rows: the bounce and the file need no more of them.
+  if (!own.alone()) g.rays = sum_over_ranks(*own.exchange, g.rays);
   return g;
 }
 

@@ -69,8 +69,9 @@ Rgb luminaire_direct_irradiance(const Occluders& occluders, std::span<const Lumi
                                 Vec3 p, Vec3 n);
 
 // `ray_points` are receiver_ray_points(receivers, mesh): the shadow rays start there. With
-// `ranks` (engine/ranks.h), this process traces its share and the ranks exchange theirs
-// (collective); `rays` counts every rank's.
+// several `ranks` (engine/ranks.h; collective), this process traces its share's rows and keeps
+// only those (the others zero): rank 0 gathers them as it writes the file; `rays` counts every
+// rank's.
 DirectGeometry compute_direct_geometry(const Receivers& receivers,
                                        const std::vector<Vec3>& ray_points,
                                        const TracedScene& traced, Vec3 luminaire_position,

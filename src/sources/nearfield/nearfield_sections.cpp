@@ -3,6 +3,7 @@
 #include <cstdint>
 
 #include "common/input_error.h"
+#include "engine/transfer_sections.h"
 #include "math/sh.h"
 #include "store/rlt_format.h"
 
@@ -14,9 +15,17 @@ constexpr std::uint32_t kTransfer = rlt_fourcc("NFTR");
 
 }  // namespace
 
-void write_nearfield_sections(RltWriter& w, const NearfieldTransfer& nearfield) {
+void write_nearfield_sections(RltWriter& w, const NearfieldTransfer& nearfield,
+                              const RankShares& ranks) {
   if (nearfield.transfer.empty()) return;
-  w.add_f32(kTransfer, "near-field transfer", nearfield.transfer);
+  add_row_section(w, kTransfer, "near-field transfer", nearfield.transfer,
+                  static_cast<std::size_t>(sh_count(nearfield.sh_order)), ranks);
+}
+
+void send_nearfield_sections(const NearfieldTransfer& nearfield, const RankShares& ranks) {
+  if (nearfield.transfer.empty()) return;
+  send_row_section(nearfield.transfer, static_cast<std::size_t>(sh_count(nearfield.sh_order)),
+                   ranks);
 }
 
 void read_nearfield_sections(const RltFile& file, std::size_t receivers, NearfieldTransferView& nf,

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <string>
 
+#include "engine/ranks.h"
 #include "sources/nearfield/nearfield_precompute.h"
 #include "sources/nearfield/nearfield_transfer_view.h"
 #include "store/rlt_file.h"
@@ -14,8 +15,12 @@
 
 namespace relight {
 
-// The writer keeps spans into `nearfield` until it writes.
-void write_nearfield_sections(RltWriter& writer, const NearfieldTransfer& nearfield);
+// The writer keeps spans into `nearfield` until it writes. On several ranks (issue 19;
+// collective) rank 0 gathers the transfer's rows as it writes, and the others call
+// send_nearfield_sections in the same order.
+void write_nearfield_sections(RltWriter& writer, const NearfieldTransfer& nearfield,
+                              const RankShares& ranks);
+void send_nearfield_sections(const NearfieldTransfer& nearfield, const RankShares& ranks);
 
 // Fills the transfer span of `view` (its sh_order set) from `file`; InputError
 // naming `where` when they are missing or their sizes disagree.

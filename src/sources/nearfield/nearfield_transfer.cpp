@@ -57,7 +57,7 @@ std::vector<float> nearfield_transfer(const RayTracer& occluders, std::span<cons
       }
     }
   });
-  share_rows(own, k, out);
+  // On several ranks each keeps its own rows, which rank 0 gathers as it writes the file.
   return out;
 }
 

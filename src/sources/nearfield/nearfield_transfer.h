@@ -30,8 +30,9 @@ struct NearfieldTransferSettings {
   std::uint64_t seed = 1;
 };
 
-// receivers × order² floats, receiver-major. `occluders` is the static scene. With `ranks`
-// (engine/ranks.h), this process traces its share and the ranks exchange theirs (collective).
+// receivers × order² floats, receiver-major. `occluders` is the static scene. With several
+// `ranks` (engine/ranks.h), this process traces its share's rows and keeps only those (the
+// others zero): rank 0 gathers them as it writes the file.
 std::vector<float> nearfield_transfer(const RayTracer& occluders, std::span<const Vec3> positions,
                                       std::span<const Vec3> normals,
                                       const NearfieldTransferSettings& settings,

@@ -242,28 +242,42 @@ void sample_receiver(Vec3 point, Vec3 normal, std::size_t receiver, const Portal
   trace_cells(origin, normal, receiver, grid, in_portal, traced, s, scratch, out);
 }
 
-// Every rank's chunks from theirs (engine/ranks.h: a chunk is one of the ranks' blocks).
-void share_chunks(const RankShares& ranks, std::vector<ChunkOutput>& chunks) {
+// What the portal's summary needs of every chunk, the records staying with their rank
+// (engine/ranks.h: a chunk is one of the ranks' blocks).
+struct ChunkSummary {
+  CubemapEncodingStats stats;
+  Vec3 flow{0, 0, 0};
+  std::uint64_t rays = 0, samples = 0;
+};
+
+ChunkSummary summary_of(const ChunkOutput& chunk) {
+  ChunkSummary out{{}, chunk.flow, chunk.rays, chunk.samples};
+  for (const EncodedReceiver& e : chunk.encoded) add_receiver(out.stats, e);
+  return out;
+}
+
+// Every rank's chunks' summaries from theirs.
+void share_summaries(const RankShares& ranks, std::vector<ChunkSummary>& summaries) {
   share_block_records(
       ranks,
       [&](std::size_t c, std::vector<std::uint8_t>& bytes) {
-        const ChunkOutput& o = chunks[c];
-        put_values<std::uint8_t>(bytes, o.bytes);
-        put_values<std::uint32_t>(bytes, o.sizes);
-        put_values<EncodedReceiver>(bytes, o.encoded);
-        put_values<Vec3>(bytes, std::span(&o.flow, 1));
-        put_values<std::uint64_t>(bytes, std::array{o.rays, o.samples});
+        put_values<ChunkSummary>(bytes, std::span(&summaries[c], 1));
       },
       [&](std::size_t c, std::span<const std::uint8_t> theirs, std::size_t& at) {
-        ChunkOutput& o = chunks[c];
-        o.bytes = take_values<std::uint8_t>(theirs, at);
-        o.sizes = take_values<std::uint32_t>(theirs, at);
-        o.encoded = take_values<EncodedReceiver>(theirs, at);
-        o.flow = take_values<Vec3>(theirs, at).at(0);
-        const std::vector<std::uint64_t> counts = take_values<std::uint64_t>(theirs, at);
-        o.rays = counts.at(0);
-        o.samples = counts.at(1);
+        summaries[c] = take_values<ChunkSummary>(theirs, at).at(0);
       });
+}
+
+void add_stats(CubemapEncodingStats& sum, const CubemapEncodingStats& s) {
+  sum.receivers += s.receivers;
+  sum.empty += s.empty;
+  sum.pulse += s.pulse;
+  sum.haar += s.haar;
+  sum.bytes += s.bytes;
+  sum.pulse_bytes += s.pulse_bytes;
+  sum.haar_bytes += s.haar_bytes;
+  sum.all_pulse_bytes += s.all_pulse_bytes;
+  sum.all_haar_bytes += s.all_haar_bytes;
 }
 
 }  // namespace
@@ -331,19 +345,25 @@ PortalDirect compute_portal_direct(const Receivers& receivers, const std::vector
     }
   });
   bar.finish();
-  // The SH columns feed the bounce, which needs each rank's own rows only (engine/ranks.h).
-  if (!own.alone()) share_chunks(own, chunks);
-
-  result.offsets.reserve(rows + 1);
+  // Each rank keeps its chunks' records and SH columns (the bounce needs its own rows, rank 0
+  // gathers the records as it writes the file); the summaries are shared, and summed in the
+  // chunks' order as one process sums them.
+  std::vector<ChunkSummary> summaries(chunk_count);
+  for (const std::size_t c : own.my_blocks()) summaries[c] = summary_of(chunks[c]);
+  if (!own.alone()) share_summaries(own, summaries);
+  result.offsets.reserve(own.my_receivers() + 1);
   result.offsets.push_back(0);
-  Vec3 flow{0, 0, 0};
-  for (const ChunkOutput& chunk : chunks) {
+  for (const std::size_t c : own.my_blocks()) {
+    const ChunkOutput& chunk = chunks[c];
     result.records.insert(result.records.end(), chunk.bytes.begin(), chunk.bytes.end());
     for (std::uint32_t size : chunk.sizes) result.offsets.push_back(result.offsets.back() + size);
-    for (const EncodedReceiver& e : chunk.encoded) add_receiver(result.stats, e);
-    flow = flow + chunk.flow;
-    result.rays += chunk.rays;
-    result.samples += chunk.samples;
+  }
+  Vec3 flow{0, 0, 0};
+  for (const ChunkSummary& summary : summaries) {
+    add_stats(result.stats, summary.stats);
+    flow = flow + summary.flow;
+    result.rays += summary.rays;
+    result.samples += summary.samples;
   }
   // The light travels −flow; the portal's outward side is the side the flow points to.
   if (length(portal.normal) > 0) {

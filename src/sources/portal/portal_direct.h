@@ -45,8 +45,11 @@ struct PortalDirectSettings {
 
 struct PortalDirect {
   int face_size = 32;
-  std::vector<std::uint8_t> records;   // one cubemap record per receiver, back to back
-  std::vector<std::uint64_t> offsets;  // receivers + 1: record r is [offsets[r], offsets[r+1])
+  // One cubemap record per receiver, back to back; receivers + 1 offsets: record r is
+  // [offsets[r], offsets[r+1]). On one of several ranks, its own receivers' only, in the order
+  // of its local rows (engine/ranks.h).
+  std::vector<std::uint8_t> records;
+  std::vector<std::uint64_t> offsets;
   CubemapEncodingStats stats;
   // receivers × sh_count(order): direct E for radiance Y_k; on one of several ranks, filled in
   // for its own receivers only.
@@ -57,9 +60,9 @@ struct PortalDirect {
 };
 
 // `skip[r]` != 0 leaves receiver r empty (glass vertices). `ray_points` are
-// receiver_ray_points(receivers, mesh). With `ranks` (engine/ranks.h; shares on multiples of
-// kBlock), this process traces its share and the ranks exchange theirs (collective); `rays`
-// and `samples` count every rank's.
+// receiver_ray_points(receivers, mesh). With several `ranks` (engine/ranks.h; shares on
+// multiples of kBlock; collective), this process traces its share and keeps its records and SH
+// columns; `stats`, `outward`, `rays` and `samples` are every rank's, as one process finds them.
 PortalDirect compute_portal_direct(const Receivers& receivers, const std::vector<Vec3>& ray_points,
                                    const std::vector<std::uint8_t>& skip, const PreparedMesh& mesh,
                                    const TracedScene& traced, const PortalGeometry& portal,

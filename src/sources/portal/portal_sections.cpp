@@ -1,5 +1,9 @@
 #include "sources/portal/portal_sections.h"
 
+#include <algorithm>
+#include <cstring>
+#include <utility>
+
 #include "common/input_error.h"
 #include "engine/transfer_blocks.h"
 #include "engine/transfer_sections.h"
@@ -32,14 +36,82 @@ Vec3 vec3_from_json(const nlohmann::json& j) {
 
 }  // namespace
 
+namespace {
+
+enum class RecordPart { records, sizes };
+
+// Several ranks (issue 19; collective): each rank's blocks of cubemap records, or their
+// records' sizes, to rank 0's `sink` in file order (each rank holds its own, engine/ranks.h).
+void gather_cubemap_records(const PortalDirect& direct, const RankShares& ranks, RecordPart part,
+                            const RecordSink* sink) {
+  // Records of ~300 bytes: 64 receivers a block, a few MB a round.
+  constexpr std::size_t kBlocksPerRound = 256;
+  const std::size_t local = direct.offsets.size() - 1;
+  std::vector<std::uint32_t> sizes;
+  gather_block_records(
+      ranks,
+      [&](std::size_t i) -> std::span<const std::uint8_t> {
+        const std::size_t first = i * ranks.block, last = std::min(local, first + ranks.block);
+        if (part == RecordPart::records) {
+          return std::span(direct.records)
+              .subspan(direct.offsets[first], direct.offsets[last] - direct.offsets[first]);
+        }
+        sizes.clear();
+        for (std::size_t r = first; r < last; ++r) {
+          sizes.push_back(static_cast<std::uint32_t>(direct.offsets[r + 1] - direct.offsets[r]));
+        }
+        return {reinterpret_cast<const std::uint8_t*>(sizes.data()),
+                sizes.size() * sizeof(std::uint32_t)};
+      },
+      kBlocksPerRound, sink);
+}
+
+void add_gathered_records(RltWriter& w, const PortalDirect& direct, std::size_t q,
+                          const RankShares& ranks) {
+  w.add_produced_section(
+      rlt_indexed('C', 'R', q), rlt_indexed_name("portal direct cubemaps", q),
+      [&direct, ranks](const RltWriter::Sink& sink) {
+        const RecordSink to_sink = [&sink](std::span<const std::uint8_t> block) {
+          sink(std::as_bytes(block));
+        };
+        gather_cubemap_records(direct, ranks, RecordPart::records, &to_sink);
+      },
+      RltElement::bytes);
+  // The offsets from the records' sizes, running over the blocks in file order.
+  w.add_produced_section(
+      rlt_indexed('C', 'O', q), rlt_indexed_name("portal direct offsets", q),
+      [&direct, ranks](const RltWriter::Sink& sink) {
+        std::uint64_t offset = 0;
+        std::vector<std::uint64_t> offsets;
+        const RecordSink to_offsets = [&](std::span<const std::uint8_t> block) {
+          offsets.resize(block.size() / sizeof(std::uint32_t));
+          for (std::size_t i = 0; i < offsets.size(); ++i) {
+            std::uint32_t size = 0;
+            std::memcpy(&size, block.data() + i * sizeof size, sizeof size);
+            offsets[i] = std::exchange(offset, offset + size);
+          }
+          sink(std::as_bytes(std::span(offsets)));
+        };
+        gather_cubemap_records(direct, ranks, RecordPart::sizes, &to_offsets);
+        sink(std::as_bytes(std::span(&offset, 1)));
+      },
+      RltElement::u64);
+}
+
+}  // namespace
+
 void write_portal_sections(RltWriter& w, std::span<const PortalTransfer> portals,
                            const RankShares& ranks, std::size_t indirect_block_bytes) {
   for (std::size_t q = 0; q < portals.size(); ++q) {
     const PortalTransfer& t = portals[q];
-    w.add_section(rlt_indexed('C', 'R', q), rlt_indexed_name("portal direct cubemaps", q),
-                  std::as_bytes(std::span(t.direct.records)));
-    w.add_u64(rlt_indexed('C', 'O', q), rlt_indexed_name("portal direct offsets", q),
-              t.direct.offsets);
+    if (ranks.alone()) {
+      w.add_section(rlt_indexed('C', 'R', q), rlt_indexed_name("portal direct cubemaps", q),
+                    std::as_bytes(std::span(t.direct.records)));
+      w.add_u64(rlt_indexed('C', 'O', q), rlt_indexed_name("portal direct offsets", q),
+                t.direct.offsets);
+    } else {
+      add_gathered_records(w, t.direct, q, ranks);
+    }
     add_transfer_section(w, rlt_indexed('P', 'I', q), rlt_indexed_name("portal indirect sh", q),
                          t.indirect.view(), ranks, indirect_block_bytes);
   }
@@ -48,6 +120,9 @@ void write_portal_sections(RltWriter& w, std::span<const PortalTransfer> portals
 void send_portal_sections(std::span<const PortalTransfer> portals, const RankShares& ranks,
                           std::size_t indirect_block_bytes) {
   for (const PortalTransfer& t : portals) {
+    for (const RecordPart part : {RecordPart::records, RecordPart::sizes}) {
+      gather_cubemap_records(t.direct, ranks, part, nullptr);
+    }
     send_transfer_section(t.indirect.view(), ranks, indirect_block_bytes);
   }
 }
