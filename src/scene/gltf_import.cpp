@@ -80,6 +80,13 @@ class GltfReader {
   }
 
  private:
+  struct MaterialTexture {
+    std::int32_t slot = -1;  // into mesh_.textures.textures
+    int set = 0;             // TEXCOORD_<set>
+    // UV' = [m0 m1 m2; m3 m4 m5] · (u, v, 1): KHR_texture_transform, the identity without it.
+    std::array<double, 6> transform{1, 0, 0, 0, 1, 0};
+  };
+
   [[noreturn]] void fail(const std::string& reason) const { fail_input(file_.string(), reason); }
 
   void check_extensions() const {
@@ -375,6 +382,39 @@ class GltfReader {
     return uv;
   }
 
+  // KHR_texture_transform (Khronos glTF extension registry, KHR_texture_transform): the
+  // texture's UVs taken through T · R · S, T the offset, R a turn by `rotation` radians
+  // counter-clockwise in UV space, S the scale; `texCoord` in it overrides the texture info's.
+  void read_texture_transform(const tinygltf::Value& value, const std::string& where,
+                              MaterialTexture& texture) const {
+    if (!value.IsObject()) fail(where + " must be an object");
+    const auto number = [&](const tinygltf::Value& v, const std::string& key) {
+      if (!v.IsNumber() || !std::isfinite(v.GetNumberAsDouble())) {
+        fail(where + ": " + key + " must be a finite number");
+      }
+      return v.GetNumberAsDouble();
+    };
+    const auto pair = [&](const std::string& key, std::array<double, 2> fallback) {
+      if (!value.Has(key)) return fallback;
+      const tinygltf::Value& v = value.Get(key);
+      if (!v.IsArray() || v.ArrayLen() != 2) fail(where + ": " + key + " must be two numbers");
+      return std::array<double, 2>{number(v.Get(0), key), number(v.Get(1), key)};
+    };
+    const std::array<double, 2> offset = pair("offset", {0, 0});
+    const std::array<double, 2> scale = pair("scale", {1, 1});
+    const double rotation = value.Has("rotation") ? number(value.Get("rotation"), "rotation") : 0;
+    if (value.Has("texCoord")) {
+      const tinygltf::Value& set = value.Get("texCoord");
+      if (!set.IsInt() || set.GetNumberAsInt() < 0) {
+        fail(where + ": texCoord must be a non-negative integer");
+      }
+      texture.set = set.GetNumberAsInt();
+    }
+    const double c = std::cos(rotation), s = std::sin(rotation);
+    texture.transform = {c * scale[0],  s * scale[1], offset[0],
+                         -s * scale[0], c * scale[1], offset[1]};
+  }
+
   std::uint32_t material_slot(int material, const std::string& what) {
     if (material >= static_cast<int>(model_.materials.size())) {
       fail(what + ": material " + std::to_string(material) + " does not exist");
@@ -410,9 +450,14 @@ class GltfReader {
         mesh_.materials.push_back(imported);
         const tinygltf::TextureInfo& base_colour = pbr.baseColorTexture;
         if (base_colour.index >= 0) {
-          material_texture_[it->second] = {
-              texture_slot(base_colour.index, "material " + std::to_string(material)),
-              base_colour.texCoord};
+          const std::string where = "material " + std::to_string(material);
+          MaterialTexture texture{texture_slot(base_colour.index, where), base_colour.texCoord};
+          const auto transform = base_colour.extensions.find("KHR_texture_transform");
+          if (transform != base_colour.extensions.end()) {
+            read_texture_transform(transform->second,
+                                   where + ": baseColorTexture: KHR_texture_transform", texture);
+          }
+          material_texture_[it->second] = texture;
         }
       }
     }
@@ -474,6 +519,12 @@ class GltfReader {
       std::vector<TextureCoord> uv, corners;
       if (textured != material_texture_.end()) {
         uv = read_texture_coords(primitive, textured->second.set, positions.size(), what);
+        const std::array<double, 6>& m = textured->second.transform;
+        for (TextureCoord& t : uv) {
+          const double u = t[0], v = t[1];
+          t = {static_cast<float>(m[0] * u + m[1] * v + m[2]),
+               static_cast<float>(m[3] * u + m[4] * v + m[5])};
+        }
       }
       for (Triangle t : triangles) {
         if (mirrored) std::swap(t[1], t[2]);
@@ -500,11 +551,6 @@ class GltfReader {
       all.corner_uv.insert(all.corner_uv.end(), corners.begin(), corners.end());
     }
   }
-
-  struct MaterialTexture {
-    std::int32_t slot = -1;  // into mesh_.textures.textures
-    int set = 0;             // TEXCOORD_<set>
-  };
 
   const std::filesystem::path& file_;
   const tinygltf::Model& model_;

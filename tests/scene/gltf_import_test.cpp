@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -359,6 +360,71 @@ TEST_F(GltfImport, BaseColourTextureRidesOnTheTrianglesWithTheirUvs) {
   const fs::path no_uv = write("no_uv.gltf", doc.dump());
   EXPECT_NE(error_of(no_uv).find("needs TEXCOORD_0, which it lacks"), std::string::npos)
       << error_of(no_uv);
+}
+
+// issue 13: KHR_texture_transform on the base colour texture takes the UVs through
+// offset · rotation · scale (the extension's T · R · S; rotation counter-clockwise in UV space),
+// and its texCoord overrides the texture info's; bad values are input errors naming it.
+TEST_F(GltfImport, TextureTransformMovesTurnsAndScalesTheUvs) {
+  Image8 image;
+  image.width = 2;
+  image.height = 1;
+  image.rgb = {255, 0, 0, 0, 0, 255};
+  write_png(dir_.path() / "paint.png", image);
+  std::vector<unsigned char> bytes = quad_buffer();
+  const float uv[8] = {0, 0, 1, 0, 1, 1, 0, 1};
+  bytes.resize(60 + sizeof uv);
+  std::memcpy(bytes.data() + 60, uv, sizeof uv);
+  json doc = quad_document(
+      {{"byteLength", bytes.size()},
+       {"uri", "data:application/octet-stream;base64," + base64(bytes)}},
+      {{{"mesh", 0}}},
+      {{{"attributes", {{"POSITION", 0}, {"TEXCOORD_1", 2}}}, {"indices", 1}, {"material", 0}}});
+  doc["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 60}, {"byteLength", sizeof uv}});
+  doc["accessors"].push_back(
+      {{"bufferView", 2}, {"componentType", 5126}, {"count", 4}, {"type", "VEC2"}});
+  doc["textures"] = {{{"source", 0}}};
+  doc["images"] = {{{"uri", "paint.png"}}};
+  doc["extensionsUsed"] = {"KHR_texture_transform"};
+  json& info = doc["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"];
+  info = {{"index", 0},
+          {"extensions",
+           {{"KHR_texture_transform",
+             {{"offset", {0.5, 0.25}},
+              {"rotation", std::acos(-1.0) / 2},
+              {"scale", {2, 3}},
+              {"texCoord", 1}}}}}};
+  const ImportedMesh mesh = import_mesh(write("transformed.gltf", doc.dump()));
+  ASSERT_EQ(mesh.textures.corner_uv.size(), 6u);
+  // (u, v) → (2u·cos + 3v·sin + 0.5, −2u·sin + 3v·cos + 0.25), turned a quarter.
+  const auto expect_uv = [&](std::size_t corner, float u, float v) {
+    EXPECT_NEAR(mesh.textures.corner_uv[corner][0], u, 1e-6) << corner;
+    EXPECT_NEAR(mesh.textures.corner_uv[corner][1], v, 1e-6) << corner;
+  };
+  expect_uv(0, 0.5f, 0.25f);   // (0, 0)
+  expect_uv(1, 0.5f, -1.75f);  // (1, 0)
+  expect_uv(2, 3.5f, -1.75f);  // (1, 1)
+  expect_uv(5, 3.5f, 0.25f);   // (0, 1)
+
+  // Without the extension's texCoord the texture info's set 0 is read, which this mesh lacks.
+  info["extensions"]["KHR_texture_transform"].erase("texCoord");
+  const fs::path set_zero = write("set_zero.gltf", doc.dump());
+  EXPECT_NE(error_of(set_zero).find("needs TEXCOORD_0, which it lacks"), std::string::npos)
+      << error_of(set_zero);
+  for (const auto& [key, value, reason] :
+       {std::tuple<std::string, json, std::string>{
+            "scale", {1, "x"}, "scale must be a finite number"},
+        {"offset", {1}, "offset must be two numbers"},
+        {"rotation", "a quarter", "rotation must be a finite number"},
+        {"texCoord", -1, "texCoord must be a non-negative integer"}}) {
+    json bad = doc;
+    bad["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["extensions"]
+       ["KHR_texture_transform"][key] = value;
+    const std::string message = error_of(write("bad.gltf", bad.dump()));
+    EXPECT_NE(message.find("material 0: baseColorTexture: KHR_texture_transform: " + reason),
+              std::string::npos)
+        << message;
+  }
 }
 
 }  // namespace
