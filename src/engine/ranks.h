@@ -7,10 +7,10 @@
 // its rows of the gather operator, the direct columns, the bounce's result and the packed
 // transfer (as its local rows, RankShares::local_row); each bounce sweep the ranks send each
 // other the reflected light of the vertices their rows read (engine/bounce_solver.cpp), and rank
-// 0 gathers every rank's blocks as it writes the file (gather_block_records). The direct phases'
-// smaller records (luminaire geometry, cubemaps, near-field transfer) are still shared whole
-// (share_rows, share_block_records). Every receiver's rays are seeded by its own index
-// (engine/gather_operator.h), so the rows, and the file, do not depend on how many ranks made
+// 0 gathers every rank's blocks as it writes the file (gather_block_records), the direct phases'
+// records too (luminaire geometry, cubemaps, near-field transfer); only small per-block
+// summaries are shared whole (share_block_records). Every receiver's rays are seeded by its own
+// index (engine/gather_operator.h), so the rows, and the file, do not depend on how many ranks made
 // them. Pinned by tests/engine/ranks_test.cpp (blocks, exchanges, the gather operator and the
 // bounce with ranks as threads) and tests/cli/mpi_precompute_test.cpp (`mpirun -n 2` against
 // one process, byte for byte).
@@ -144,39 +144,6 @@ std::vector<T> all_gather_values(RankExchange& exchange, const T& mine) {
 
 // Σ over ranks of `mine` (collective).
 std::uint64_t sum_over_ranks(RankExchange& exchange, std::uint64_t mine);
-
-// `data` holds `stride` values per receiver (row-major rows); this rank's blocks' values are
-// filled in. On return (collective) every block's values are, from its rank.
-template <typename T>
-void share_rows(const RankShares& ranks, std::size_t stride, std::span<T> data) {
-  static_assert(std::is_trivially_copyable_v<T>);
-  if (ranks.alone()) return;
-  if (data.size() != ranks.receivers * stride) {
-    throw std::invalid_argument("rank exchange: rows of another size");
-  }
-  std::vector<std::uint8_t> mine;
-  for (const std::size_t b : ranks.my_blocks()) {
-    const auto* p = reinterpret_cast<const std::uint8_t*>(data.data() + ranks.first(b) * stride);
-    mine.insert(mine.end(), p, p + (ranks.last(b) - ranks.first(b)) * stride * sizeof(T));
-  }
-  const std::vector<std::vector<std::uint8_t>> all = ranks.exchange->all_gather(mine);
-  for (int k = 0; k < ranks.size(); ++k) {
-    if (k == ranks.rank()) continue;
-    const std::vector<std::uint8_t>& theirs = all[static_cast<std::size_t>(k)];
-    std::size_t at = 0;
-    for (const std::size_t b : ranks.blocks_of(k)) {
-      const std::size_t bytes = (ranks.last(b) - ranks.first(b)) * stride * sizeof(T);
-      if (theirs.size() - at < bytes) throw std::runtime_error("rank exchange: a share cut short");
-      std::memcpy(data.data() + ranks.first(b) * stride, theirs.data() + at, bytes);
-      at += bytes;
-    }
-    if (at != theirs.size()) throw std::runtime_error("rank exchange: a share of another size");
-  }
-}
-template <typename T>
-void share_rows(const RankShares& ranks, std::size_t stride, std::vector<T>& data) {
-  share_rows(ranks, stride, std::span<T>(data));
-}
 
 // Records of varying length per block (a chunk of a gather operator's rows, of encoded
 // cubemaps): `put(b, bytes)` appends this rank's block b's record (put_values below), each of

@@ -266,31 +266,34 @@ TEST(RankExchange, AllToAllHandsEachRankThePiecesMeantForIt) {
   EXPECT_THROW(SingleProcess().all_to_all({}), std::invalid_argument);
 }
 
-TEST(RankExchange, ShareRowsFillsEveryRanksRowsOfAVector) {
+TEST(RankExchange, ShareBlockRecordsFillsEveryRanksBlocks) {
   // 150 receivers in blocks of 64 among 4 ranks: the fourth has none.
   ThreadRanks ranks(4);
-  std::vector<std::vector<double>> vectors(4);
+  std::vector<std::vector<std::vector<std::uint32_t>>> records(4);
   std::vector<std::thread> threads;
   for (int k = 0; k < 4; ++k) {
     threads.emplace_back([&, k] {
       ThreadRanks::Rank rank(ranks, k);
       const RankShares shares = dealt_blocks(rank, 150, 64);
-      std::vector<double> v(2 * 150, 0.0);
-      for (const std::size_t b : shares.my_blocks()) {
-        for (std::size_t r = shares.first(b); r < shares.last(b); ++r) {
-          v[2 * r] = double(r);
-          v[2 * r + 1] = -double(r);
-        }
-      }
-      share_rows(shares, 2, v);
-      vectors[static_cast<std::size_t>(k)] = std::move(v);
+      std::vector<std::vector<std::uint32_t>> mine(shares.block_count());
+      for (const std::size_t b : shares.my_blocks()) mine[b].assign(b + 1, std::uint32_t(10 * b));
+      share_block_records(
+          shares,
+          [&](std::size_t b, std::vector<std::uint8_t>& bytes) {
+            put_values<std::uint32_t>(bytes, mine[b]);
+          },
+          [&](std::size_t b, std::span<const std::uint8_t> theirs, std::size_t& at) {
+            mine[b] = take_values<std::uint32_t>(theirs, at);
+          });
+      records[static_cast<std::size_t>(k)] = std::move(mine);
     });
   }
   for (std::thread& t : threads) t.join();
   for (int k = 0; k < 4; ++k) {
-    for (std::size_t r = 0; r < 150; ++r) {
-      ASSERT_EQ(vectors[k][2 * r], double(r)) << "rank " << k;
-      ASSERT_EQ(vectors[k][2 * r + 1], -double(r)) << "rank " << k;
+    ASSERT_EQ(records[k].size(), 3u);
+    for (std::size_t b = 0; b < 3; ++b) {
+      EXPECT_EQ(records[k][b], std::vector<std::uint32_t>(b + 1, std::uint32_t(10 * b)))
+          << "rank " << k << " block " << b;
     }
   }
 }
