@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
+#include <span>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 // The C API only: without these, mpi.h pulls in the deprecated C++ bindings.
 #define OMPI_SKIP_MPICXX 1
@@ -19,6 +21,33 @@ constexpr std::size_t kPiece = std::size_t{1} << 30;  // bytes per broadcast
 
 void check(int status, const char* what) {
   if (status != MPI_SUCCESS) throw std::runtime_error(std::string("MPI: ") + what + " failed");
+}
+
+// Posts the non-blocking receives (into `bytes`) or sends (from it) of a buffer in pieces of at
+// most kPiece bytes, MPI's counts being int; the peer posts the same pieces, matched in order.
+void post_receives(std::span<std::uint8_t> bytes, int source, int tag,
+                   std::vector<MPI_Request>& requests) {
+  for (std::size_t at = 0; at < bytes.size(); at += kPiece) {
+    requests.emplace_back();
+    check(MPI_Irecv(bytes.data() + at, static_cast<int>(std::min(kPiece, bytes.size() - at)),
+                    MPI_BYTE, source, tag, MPI_COMM_WORLD, &requests.back()),
+          "MPI_Irecv");
+  }
+}
+
+void post_sends(std::span<const std::uint8_t> bytes, int dest, int tag,
+                std::vector<MPI_Request>& requests) {
+  for (std::size_t at = 0; at < bytes.size(); at += kPiece) {
+    requests.emplace_back();
+    check(MPI_Isend(bytes.data() + at, static_cast<int>(std::min(kPiece, bytes.size() - at)),
+                    MPI_BYTE, dest, tag, MPI_COMM_WORLD, &requests.back()),
+          "MPI_Isend");
+  }
+}
+
+void wait_all(std::vector<MPI_Request>& requests) {
+  check(MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE),
+        "MPI_Waitall");
 }
 
 }  // namespace
@@ -92,20 +121,9 @@ std::vector<std::vector<std::uint8_t>> MpiRanks::all_to_all(
     exchange_bytes_ += in.size();
     // Each side knows the other's size, so both post the same pieces (matched in order).
     std::vector<MPI_Request> requests;
-    for (std::size_t at = 0; at < in.size(); at += kPiece) {
-      requests.emplace_back();
-      check(MPI_Irecv(in.data() + at, static_cast<int>(std::min(kPiece, in.size() - at)), MPI_BYTE,
-                      source, 0, MPI_COMM_WORLD, &requests.back()),
-            "MPI_Irecv");
-    }
-    for (std::size_t at = 0; at < out.size(); at += kPiece) {
-      requests.emplace_back();
-      check(MPI_Isend(out.data() + at, static_cast<int>(std::min(kPiece, out.size() - at)),
-                      MPI_BYTE, dest, 0, MPI_COMM_WORLD, &requests.back()),
-            "MPI_Isend");
-    }
-    check(MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE),
-          "MPI_Waitall");
+    post_receives(in, source, 0, requests);
+    post_sends(out, dest, 0, requests);
+    wait_all(requests);
   }
   exchange_seconds_ +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -128,23 +146,12 @@ std::vector<std::vector<std::uint8_t>> MpiRanks::gather_to_root(
     for (std::size_t k = 1; k < n; ++k) {
       out[k].resize(static_cast<std::size_t>(sizes[k]));
       exchange_bytes_ += out[k].size();
-      for (std::size_t at = 0; at < out[k].size(); at += kPiece) {
-        requests.emplace_back();
-        check(MPI_Irecv(out[k].data() + at, static_cast<int>(std::min(kPiece, out[k].size() - at)),
-                        MPI_BYTE, static_cast<int>(k), 1, MPI_COMM_WORLD, &requests.back()),
-              "MPI_Irecv");
-      }
+      post_receives(out[k], static_cast<int>(k), 1, requests);
     }
   } else {
-    for (std::size_t at = 0; at < mine.size(); at += kPiece) {
-      requests.emplace_back();
-      check(MPI_Isend(mine.data() + at, static_cast<int>(std::min(kPiece, mine.size() - at)),
-                      MPI_BYTE, 0, 1, MPI_COMM_WORLD, &requests.back()),
-            "MPI_Isend");
-    }
+    post_sends(mine, 0, 1, requests);
   }
-  check(MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE),
-        "MPI_Waitall");
+  wait_all(requests);
   exchange_seconds_ +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;

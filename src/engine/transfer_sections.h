@@ -5,8 +5,12 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
+#include <functional>
 #include <span>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "engine/ranks.h"
 #include "engine/transfer_blocks.h"
@@ -41,6 +45,26 @@ void gather_blocks(const RankShares& ranks, std::span<const std::byte> mine,
 void add_row_section(RltWriter& w, std::uint32_t type, const std::string& name,
                      std::span<const float> rows, std::size_t stride, const RankShares& ranks);
 void send_row_section(std::span<const float> rows, std::size_t stride, const RankShares& ranks);
+
+// Several ranks: an offsets section (records gathered block by block, engine/ranks.h) from its
+// records' sizes. `gather_sizes` runs the gather of blocks of uint32 sizes, in file order, into
+// the sink it is given; `sink` gets their running offsets as Offset values, then the total.
+template <typename Offset>
+void write_running_offsets(const RltWriter::Sink& sink,
+                           const std::function<void(const RecordSink&)>& gather_sizes) {
+  Offset offset = 0;
+  std::vector<Offset> offsets;
+  gather_sizes([&](std::span<const std::uint8_t> block) {
+    offsets.resize(block.size() / sizeof(std::uint32_t));
+    for (std::size_t i = 0; i < offsets.size(); ++i) {
+      std::uint32_t size = 0;
+      std::memcpy(&size, block.data() + i * sizeof size, sizeof size);
+      offsets[i] = std::exchange(offset, offset + size);
+    }
+    sink(std::as_bytes(std::span(offsets)));
+  });
+  sink(std::as_bytes(std::span(&offset, 1)));
+}
 
 // The section `type` as written by add_transfer_section. InputError "FILE: reason" when it is
 // missing or of another element type.

@@ -2,13 +2,12 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <cstring>
 #include <stdexcept>
-#include <utility>
 
 #include "common/input_error.h"
 #include "common/read_file.h"
 #include "engine/transfer_blocks.h"
+#include "engine/transfer_sections.h"
 #include "light/photometric_web.h"
 #include "math/sh.h"
 #include "scene/scene_loader.h"
@@ -102,16 +101,9 @@ void write_gather_sections(RltWriter& w, const GatherMatrix& g, std::uint64_t en
   w.add_produced_section(
       kGatherRows, "gather rows",
       [&g, ranks](const RltWriter::Sink& sink) {
-        std::uint32_t offset = 0;
-        std::vector<std::uint32_t> offsets;
-        const RecordSink to_offsets = [&](std::span<const std::uint8_t> block) {
-          offsets.resize(block.size() / sizeof(std::uint32_t));
-          std::memcpy(offsets.data(), block.data(), offsets.size() * sizeof(std::uint32_t));
-          for (std::uint32_t& o : offsets) o = std::exchange(offset, offset + o);
-          sink(std::as_bytes(std::span(offsets)));
-        };
-        gather_operator_section(g, ranks, GatherSection::rows, &to_offsets);
-        sink(std::as_bytes(std::span(&offset, 1)));
+        write_running_offsets<std::uint32_t>(sink, [&](const RecordSink& counts) {
+          gather_operator_section(g, ranks, GatherSection::rows, &counts);
+        });
       },
       RltElement::u32);
   for (const GatherSection section : {GatherSection::columns, GatherSection::values}) {

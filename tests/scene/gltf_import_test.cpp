@@ -300,6 +300,25 @@ TEST_F(GltfImport, AnImageWhoseBufferViewRunsPastItsBufferIsAnInputError) {
   EXPECT_NE(message.find("buffer view lies outside its buffer"), std::string::npos) << message;
 }
 
+// The quad with corner UVs (0, 0), (1, 0), (1, 1), (0, 1) as TEXCOORD_<set> (accessor 2).
+json quad_document_with_uvs(int set) {
+  std::vector<unsigned char> bytes = quad_buffer();
+  const float uv[8] = {0, 0, 1, 0, 1, 1, 0, 1};
+  bytes.resize(60 + sizeof uv);
+  std::memcpy(bytes.data() + 60, uv, sizeof uv);
+  json doc =
+      quad_document({{"byteLength", bytes.size()},
+                     {"uri", "data:application/octet-stream;base64," + base64(bytes)}},
+                    {{{"mesh", 0}}},
+                    {{{"attributes", {{"POSITION", 0}, {"TEXCOORD_" + std::to_string(set), 2}}},
+                      {"indices", 1},
+                      {"material", 0}}});
+  doc["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 60}, {"byteLength", sizeof uv}});
+  doc["accessors"].push_back(
+      {{"bufferView", 2}, {"componentType", 5126}, {"count", 4}, {"type", "VEC2"}});
+  return doc;
+}
+
 // issue 13: a base colour texture (a 2 × 1 PNG: red, then blue) on the quad, through
 // TEXCOORD_0 (accessor 2), as a file beside the .gltf and as a data URI: the triangles carry
 // the texture and their corners' UVs, the texture holds the decoded (linear) texels.
@@ -312,18 +331,7 @@ TEST_F(GltfImport, BaseColourTextureRidesOnTheTrianglesWithTheirUvs) {
   std::ifstream png(dir_.path() / "paint.png", std::ios::binary);
   const std::vector<unsigned char> png_bytes{std::istreambuf_iterator<char>(png), {}};
 
-  std::vector<unsigned char> bytes = quad_buffer();
-  const float uv[8] = {0, 0, 1, 0, 1, 1, 0, 1};
-  bytes.resize(60 + sizeof uv);
-  std::memcpy(bytes.data() + 60, uv, sizeof uv);
-  json doc = quad_document(
-      {{"byteLength", bytes.size()},
-       {"uri", "data:application/octet-stream;base64," + base64(bytes)}},
-      {{{"mesh", 0}}},
-      {{{"attributes", {{"POSITION", 0}, {"TEXCOORD_0", 2}}}, {"indices", 1}, {"material", 0}}});
-  doc["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 60}, {"byteLength", sizeof uv}});
-  doc["accessors"].push_back(
-      {{"bufferView", 2}, {"componentType", 5126}, {"count", 4}, {"type", "VEC2"}});
+  json doc = quad_document_with_uvs(0);
   doc["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", 0}};
   doc["textures"] = {{{"source", 0}, {"sampler", 0}}};
   doc["samplers"] = {{{"wrapS", 33071}, {"wrapT", 33648}}};
@@ -371,18 +379,7 @@ TEST_F(GltfImport, TextureTransformMovesTurnsAndScalesTheUvs) {
   image.height = 1;
   image.rgb = {255, 0, 0, 0, 0, 255};
   write_png(dir_.path() / "paint.png", image);
-  std::vector<unsigned char> bytes = quad_buffer();
-  const float uv[8] = {0, 0, 1, 0, 1, 1, 0, 1};
-  bytes.resize(60 + sizeof uv);
-  std::memcpy(bytes.data() + 60, uv, sizeof uv);
-  json doc = quad_document(
-      {{"byteLength", bytes.size()},
-       {"uri", "data:application/octet-stream;base64," + base64(bytes)}},
-      {{{"mesh", 0}}},
-      {{{"attributes", {{"POSITION", 0}, {"TEXCOORD_1", 2}}}, {"indices", 1}, {"material", 0}}});
-  doc["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 60}, {"byteLength", sizeof uv}});
-  doc["accessors"].push_back(
-      {{"bufferView", 2}, {"componentType", 5126}, {"count", 4}, {"type", "VEC2"}});
+  json doc = quad_document_with_uvs(1);
   doc["textures"] = {{{"source", 0}}};
   doc["images"] = {{{"uri", "paint.png"}}};
   doc["extensionsUsed"] = {"KHR_texture_transform"};

@@ -1,8 +1,6 @@
 #include "sources/portal/portal_sections.h"
 
 #include <algorithm>
-#include <cstring>
-#include <utility>
 
 #include "common/input_error.h"
 #include "engine/transfer_blocks.h"
@@ -81,19 +79,9 @@ void add_gathered_records(RltWriter& w, const PortalDirect& direct, std::size_t 
   w.add_produced_section(
       rlt_indexed('C', 'O', q), rlt_indexed_name("portal direct offsets", q),
       [&direct, ranks](const RltWriter::Sink& sink) {
-        std::uint64_t offset = 0;
-        std::vector<std::uint64_t> offsets;
-        const RecordSink to_offsets = [&](std::span<const std::uint8_t> block) {
-          offsets.resize(block.size() / sizeof(std::uint32_t));
-          for (std::size_t i = 0; i < offsets.size(); ++i) {
-            std::uint32_t size = 0;
-            std::memcpy(&size, block.data() + i * sizeof size, sizeof size);
-            offsets[i] = std::exchange(offset, offset + size);
-          }
-          sink(std::as_bytes(std::span(offsets)));
-        };
-        gather_cubemap_records(direct, ranks, RecordPart::sizes, &to_offsets);
-        sink(std::as_bytes(std::span(&offset, 1)));
+        write_running_offsets<std::uint64_t>(sink, [&](const RecordSink& sizes) {
+          gather_cubemap_records(direct, ranks, RecordPart::sizes, &sizes);
+        });
       },
       RltElement::u64);
 }
