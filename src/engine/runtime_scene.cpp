@@ -25,6 +25,7 @@ RuntimeScene::RuntimeScene(const RuntimeSceneView& view, BounceSettings bounce)
     : vertex_count_(view.vertex_count),
       positions_(copy(view.mesh_positions)),
       triangles_(view.opaque_triangles),
+      opaque_ids_(view.opaque_ids),
       occluders_(positions_, view.opaque_triangles, view.opaque_ids),
       glass_(positions_, view.glass_triangles, view.glass_portal),
       bounce_(bounce) {

@@ -118,6 +118,9 @@ class RuntimeScene {
   // The opaque triangle an occluders() hit reports (by its id, the mesh index) and the
   // mesh's vertex positions.
   const Triangle& opaque_triangle(std::uint32_t id) const { return triangles_[opaque_slot_[id]]; }
+  // Every opaque triangle and, in the same order, its id.
+  const std::vector<Triangle>& opaque_triangles() const { return triangles_; }
+  const std::vector<std::uint32_t>& opaque_ids() const { return opaque_ids_; }
   const std::vector<Vec3>& mesh_positions() const { return positions_; }
 
   // out (3 per receiver): at vertices the mean of `irradiance` over the hat function with s²
@@ -155,6 +158,7 @@ class RuntimeScene {
   std::vector<Vec3> ray_points_;  // per receiver
   std::vector<Vec3> positions_;
   std::vector<Triangle> triangles_;         // opaque
+  std::vector<std::uint32_t> opaque_ids_;   // per opaque triangle: its mesh index
   std::vector<std::uint32_t> opaque_slot_;  // mesh triangle index → index into triangles_
   RayTracer occluders_, glass_;
   std::vector<GlassBounds> glass_bounds_;  // per portal

@@ -208,17 +208,21 @@ Rgb hemispherical_albedo(const MetallicRoughness& m) {
   return {channel(f0.r, m.albedo.r), channel(f0.g, m.albedo.g), channel(f0.b, m.albedo.b)};
 }
 
-Rgb metallic_roughness_brdf(const MetallicRoughness& m, Vec3 n, Vec3 l, Vec3 v) {
+Rgb metallic_roughness_specular(const MetallicRoughness& m, Vec3 n, Vec3 l, Vec3 v) {
   const double n_dot_l = dot(n, l), n_dot_v = dot(n, v);
   if (n_dot_l <= 0 || n_dot_v <= 0) return {};
   const Vec3 h = normalize(l + v);
   const double alpha = alpha_of(m);
-  const Rgb f0 = f0_of(m);
-  const Rgb specular =
-      schlick(f0, dot(v, h)) * (ggx_d(alpha, dot(n, h)) * smith_v(alpha, n_dot_l, n_dot_v));
-  if (m.metallic >= 1) return specular;
+  return schlick(f0_of(m), dot(v, h)) *
+         (ggx_d(alpha, dot(n, h)) * smith_v(alpha, n_dot_l, n_dot_v));
+}
+
+Rgb metallic_roughness_diffuse(const MetallicRoughness& m, Vec3 n, Vec3 l, Vec3 v) {
+  const double n_dot_l = dot(n, l), n_dot_v = dot(n, v);
+  if (n_dot_l <= 0 || n_dot_v <= 0 || m.metallic >= 1) return {};
   // The diffuse layer gets what the specular lobe leaves, coupled reciprocally (header):
   // (1 − E_s(v)) (1 − E_s(l)) / (1 − Ē_s) · (1 − metallic) ρ / π.
+  const Rgb f0 = f0_of(m);
   const Rgb ev = specular_directional_albedo(m, n_dot_v);
   const Rgb el = specular_directional_albedo(m, n_dot_l);
   const std::pair<double, double> means = SpecularAlbedoTable::get().mean(m.roughness);
@@ -226,9 +230,12 @@ Rgb metallic_roughness_brdf(const MetallicRoughness& m, Vec3 n, Vec3 l, Vec3 v) 
     const double mean = f0c * means.first + means.second;
     return (1 - evc) * (1 - elc) / (1 - mean) * albedo * (1 - m.metallic) / kPi;
   };
-  return specular + Rgb{channel(f0.r, ev.r, el.r, m.albedo.r),
-                        channel(f0.g, ev.g, el.g, m.albedo.g),
-                        channel(f0.b, ev.b, el.b, m.albedo.b)};
+  return {channel(f0.r, ev.r, el.r, m.albedo.r), channel(f0.g, ev.g, el.g, m.albedo.g),
+          channel(f0.b, ev.b, el.b, m.albedo.b)};
+}
+
+Rgb metallic_roughness_brdf(const MetallicRoughness& m, Vec3 n, Vec3 l, Vec3 v) {
+  return metallic_roughness_specular(m, n, l, v) + metallic_roughness_diffuse(m, n, l, v);
 }
 
 double metallic_roughness_pdf(const MetallicRoughness& m, Vec3 n, Vec3 l, Vec3 v) {

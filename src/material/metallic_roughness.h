@@ -45,6 +45,9 @@ struct MetallicRoughness {
 // f(l, v) per channel (1/sr) at a surface of unit normal n; l toward the light, v toward the
 // viewer, both unit.
 Rgb metallic_roughness_brdf(const MetallicRoughness& m, Vec3 n, Vec3 l, Vec3 v);
+// Its two layers, f = specular + diffuse: F D V, and the coupled diffuse layer.
+Rgb metallic_roughness_specular(const MetallicRoughness& m, Vec3 n, Vec3 l, Vec3 v);
+Rgb metallic_roughness_diffuse(const MetallicRoughness& m, Vec3 n, Vec3 l, Vec3 v);
 
 // The specular lobe's directional albedo ∫ F D V cos θ_l dω_l per channel at n·v = `n_dot_v`
 // (a table over n·v and roughness, bilinear; within 1e-3 of quadrature).

@@ -15,6 +15,7 @@
 #include "material/lambert.h"
 #include "math/frame.h"
 #include "math/sampling.h"
+#include "render/reference_mirror.h"
 #include "sources/luminaire/luminaire_direct.h"
 
 namespace relight {
@@ -45,36 +46,63 @@ Vec3 opening_point(const ReferenceOpening& o, const PlacedLuminaire& l, Pcg32& r
   return f.c0 * (s * o.length) + f.c90 * (t * o.width) - f.aim * (h * o.height);
 }
 
+// Luminaire j's light at a surface point (`origin` pushed off it, unit normal n): I(−w) cos θ
+// / d² when the luminaire is seen (through a random point of its opening), w toward it.
+Rgb luminaire_light(PathContext& ctx, std::size_t j, Vec3 origin, Vec3 n, Vec3& w) {
+  const PlacedLuminaire& l = ctx.ref.luminaires[j];
+  const ReferenceOpening& opening = ctx.ref.openings[j];
+  const Vec3 d = l.position - origin;
+  const double dist2 = dot(d, d);
+  const double dist = std::sqrt(dist2);
+  if (dist <= kLightMargin) return {};
+  w = d / dist;
+  const double cos_theta = dot(n, w);
+  if (cos_theta <= 0) return {};
+  const Rgb intensity = l.intensity_toward(-w);
+  if (max_component(intensity) <= 0) return {};
+  ++ctx.rays;
+  Vec3 to_light = d;
+  if (!opening.is_point()) to_light += opening_point(opening, l, ctx.rng);
+  const double span = length(to_light);
+  if (span > kLightMargin &&
+      ctx.ref.traced.opaque.occluded({origin, to_light / span, 0, span - kLightMargin})) {
+    return {};
+  }
+  return intensity * (cos_theta / dist2);
+}
+
+// How a path reached a glossy point of a near-mirror plane: by cosine sampling at a Lambertian
+// point (`from`, the ray's origin), whose density `pdf` competes with the mirror lobe about
+// each luminaire's image there (render/reference_mirror.h). Without a plane: no competition.
+struct MirrorArrival {
+  const MirrorPlane* plane = nullptr;
+  double alpha = 0;
+  Vec3 from, direction;
+  double pdf = 0;
+
+  // The cosine strategy's power-heuristic weight for the light at `light`.
+  double weight(Vec3 light) const {
+    if (plane == nullptr) return 1;
+    const std::optional<MirrorLobe> lobe = mirror_lobe(*plane, alpha, from, light);
+    return lobe ? power_heuristic(pdf, mirror_lobe_pdf(*lobe, direction)) : 1;
+  }
+};
+
 Rgb direct_illuminance(PathContext& ctx, Vec3 p, Vec3 n, Sources sources = Sources::kAll,
-                       const NextEventWeight& weight = {}) {
+                       const NextEventWeight& weight = {}, const MirrorArrival& arrival = {}) {
   const ReferenceScene& ref = ctx.ref;
   Rgb e;
   const Vec3 origin = offset_from_surface(p, n);
   for (std::size_t j = 0; j < ref.luminaires.size(); ++j) {
-    const PlacedLuminaire& l = ref.luminaires[j];
     const ReferenceOpening& opening = ref.openings[j];
     if ((sources == Sources::kPoints && !opening.is_point()) ||
         (sources == Sources::kOpenings && opening.is_point())) {
       continue;
     }
-    const Vec3 d = l.position - origin;
-    const double dist2 = dot(d, d);
-    const double dist = std::sqrt(dist2);
-    if (dist <= kLightMargin) continue;
-    const Vec3 w = d / dist;
-    const double cos_theta = dot(n, w);
-    if (cos_theta <= 0) continue;
-    const Rgb intensity = l.intensity_toward(-w);
-    if (max_component(intensity) <= 0) continue;
-    ++ctx.rays;
-    Vec3 to_light = d;
-    if (!opening.is_point()) to_light += opening_point(opening, l, ctx.rng);
-    const double span = length(to_light);
-    if (span > kLightMargin &&
-        ref.traced.opaque.occluded({origin, to_light / span, 0, span - kLightMargin})) {
-      continue;
-    }
-    e += intensity * (cos_theta / dist2) * weight(w, kDeltaPdf);
+    Vec3 w;
+    const Rgb light = luminaire_light(ctx, j, origin, n, w);
+    if (max_component(light) <= 0) continue;
+    e += light * weight(w, kDeltaPdf) * arrival.weight(ref.luminaires[j].position);
   }
   return e;
 }
@@ -84,6 +112,7 @@ struct SurfaceHit {
   Vec3 normal;
   Rgb albedo;
   std::optional<MetallicRoughness> glossy;  // none: Lambertian
+  std::int32_t mirror = -1;                 // its near-mirror plane, or −1
 };
 
 // The first front-facing opaque surface along the ray; false for misses and back faces.
@@ -104,6 +133,7 @@ bool trace_surface(PathContext& ctx, const Ray& ray, SurfaceHit& out) {
     out.glossy = ref.glossy[static_cast<std::size_t>(glossy)];
     out.glossy->albedo = out.glossy->albedo * texture;
   }
+  if (hit.triangle < ref.triangle_mirror.size()) out.mirror = ref.triangle_mirror[hit.triangle];
   return true;
 }
 
@@ -123,9 +153,10 @@ Rgb emitters_illuminance(PathContext& ctx, Vec3 p, Vec3 n, const NextEventWeight
 
 // What a glossy surface reflects toward v from every light by next-event estimation, each
 // sample weighted against the BRDF sample that continues the path (render/reference_weight.h).
-Rgb glossy_next_events(PathContext& ctx, const SurfaceHit& s, Vec3 v) {
+Rgb glossy_next_events(PathContext& ctx, const SurfaceHit& s, Vec3 v,
+                       const MirrorArrival& arrival = {}) {
   const NextEventWeight weight{s.glossy ? &*s.glossy : nullptr, s.normal, v};
-  return direct_illuminance(ctx, s.position, s.normal, Sources::kAll, weight) +
+  return direct_illuminance(ctx, s.position, s.normal, Sources::kAll, weight, arrival) +
          daylight_illuminance(ctx, s.position, s.normal, weight) +
          emitters_illuminance(ctx, s.position, s.normal, weight);
 }
@@ -158,13 +189,62 @@ Vec3 cosine_direction(Vec3 n, Pcg32& rng) {
   return frame_from_normal(n).to_world(sample_cosine_hemisphere(u1, u2));
 }
 
-// Luminance arriving at `origin` from direction `dir` (light reflected by the scene). With
-// `brdf_pdf` > 0 the direction was drawn by BRDF sampling at a glossy surface with that
-// density, and light it finds through a window counts with the BRDF strategy's weight.
-Rgb incident_luminance(PathContext& ctx, Vec3 origin, Vec3 dir, double brdf_pdf = 0) {
+double mirror_alpha(const ReferenceScene& ref, const MirrorPlane& plane) {
+  const double r = ref.glossy.at(static_cast<std::size_t>(plane.group)).roughness;
+  return std::max(r * r, 1e-4);  // as the BRDF clamps it
+}
+
+// The luminaires' light reflected by the near-mirror planes onto a surface point, sampled
+// about each luminaire's image (render/reference_mirror.h) and weighted against the cosine
+// sampling of the path's continuation from the point.
+Rgb mirror_illuminance(PathContext& ctx, Vec3 p, Vec3 n) {
+  const ReferenceScene& ref = ctx.ref;
+  if (ref.mirror_planes.empty()) return {};
+  const Vec3 origin = offset_from_surface(p, n);
+  Rgb e;
+  for (std::size_t k = 0; k < ref.mirror_planes.size(); ++k) {
+    const MirrorPlane& plane = ref.mirror_planes[k];
+    const double alpha = mirror_alpha(ref, plane);
+    for (std::size_t j = 0; j < ref.luminaires.size(); ++j) {
+      const std::optional<MirrorLobe> lobe =
+          mirror_lobe(plane, alpha, origin, ref.luminaires[j].position);
+      if (!lobe) continue;
+      const double u1 = ctx.rng.next_double(), u2 = ctx.rng.next_double();
+      const Vec3 w = sample_mirror_lobe(*lobe, u1, u2);
+      const double cos_x = dot(n, w);
+      if (cos_x <= 0) continue;
+      SurfaceHit s;
+      if (!trace_surface(ctx, {origin, w}, s) || s.mirror != static_cast<std::int32_t>(k) ||
+          !s.glossy) {
+        continue;
+      }
+      Vec3 l;
+      const Rgb light =
+          luminaire_light(ctx, j, offset_from_surface(s.position, s.normal), s.normal, l);
+      if (max_component(light) <= 0) continue;
+      const double q = mirror_lobe_pdf(*lobe, w);
+      e += metallic_roughness_brdf(*s.glossy, s.normal, l, -w) * light *
+           (cos_x / q * power_heuristic(q, cos_x / kPi));
+    }
+  }
+  return e;
+}
+
+// How a path continues from a surface point: by BRDF sampling at a glossy surface with density
+// `brdf_pdf` > 0 (light it finds through a window counts with the BRDF strategy's weight), or
+// (brdf_pdf = 0) cosine-distributed about `normal`.
+struct Continuation {
+  double brdf_pdf = 0;
+  Vec3 normal;
+};
+
+// Luminance arriving at `origin` from direction `dir` (light reflected by the scene), drawn
+// as `how` says.
+Rgb incident_luminance(PathContext& ctx, Vec3 origin, Vec3 dir, Continuation how) {
   Rgb result, throughput{1, 1, 1};
   Ray ray{origin, dir};
-  double pdf = brdf_pdf;
+  double pdf = how.brdf_pdf;
+  Vec3 from_normal = how.normal;
   for (int depth = 0; depth < ctx.max_depth; ++depth) {
     SurfaceHit s;
     if (!trace_surface(ctx, ray, s)) {
@@ -174,13 +254,20 @@ Rgb incident_luminance(PathContext& ctx, Vec3 origin, Vec3 dir, double brdf_pdf 
     if (s.glossy) {
       // L = Σ next events (weighted) + f cos / p · L_in(l'), l' by BRDF sampling.
       const Vec3 v = -ray.direction;
-      result += throughput * glossy_next_events(ctx, s, v);
+      MirrorArrival arrival;
+      if (pdf == 0 && s.mirror >= 0) {  // reached by cosine sampling
+        const MirrorPlane& plane = ctx.ref.mirror_planes[static_cast<std::size_t>(s.mirror)];
+        arrival = {&plane, mirror_alpha(ctx.ref, plane), ray.origin, ray.direction,
+                   std::max(0.0, dot(from_normal, ray.direction)) / kPi};
+      }
+      result += throughput * glossy_next_events(ctx, s, v, arrival);
       const GlossyStep step = glossy_step(ctx, s, v);
       const double survive = std::min(1.0, max_component(step.weight));
       if (survive <= 0 || ctx.rng.next_double() >= survive) break;
       throughput = throughput * step.weight * (1 / survive);
       ray = {offset_from_surface(s.position, s.normal), step.l};
       pdf = step.pdf;
+      from_normal = s.normal;
       continue;
     }
     pdf = 0;
@@ -188,21 +275,26 @@ Rgb incident_luminance(PathContext& ctx, Vec3 origin, Vec3 dir, double brdf_pdf 
     // exterior through portals), then continue; a continuation that escapes adds nothing.
     const Rgb e = direct_illuminance(ctx, s.position, s.normal) +
                   daylight_illuminance(ctx, s.position, s.normal) +
-                  emitters_illuminance(ctx, s.position, s.normal);
+                  emitters_illuminance(ctx, s.position, s.normal) +
+                  mirror_illuminance(ctx, s.position, s.normal);
     result += throughput * lambertian_radiance(s.albedo, e);
     throughput = throughput * s.albedo;
     const double survive = std::min(1.0, max_component(s.albedo));
     if (survive <= 0 || ctx.rng.next_double() >= survive) break;
     throughput *= 1 / survive;
     ray = {offset_from_surface(s.position, s.normal), cosine_direction(s.normal, ctx.rng)};
+    from_normal = s.normal;
   }
   return result;
 }
 
 // One-sample estimate of the reflected part of E at a front surface point: π · L_in(ω),
-// ω cosine-distributed about n.
+// ω cosine-distributed about n, and the near-mirrors' reflection of the luminaires sampled
+// about their images.
 Rgb indirect_sample(PathContext& ctx, Vec3 p, Vec3 n) {
-  return incident_luminance(ctx, offset_from_surface(p, n), cosine_direction(n, ctx.rng)) * kPi;
+  return incident_luminance(ctx, offset_from_surface(p, n), cosine_direction(n, ctx.rng), {0, n}) *
+             kPi +
+         mirror_illuminance(ctx, p, n);
 }
 
 }  // namespace
@@ -212,7 +304,7 @@ ReferenceScene make_reference_scene(const Scene& scene, const PreparedMesh& mesh
                                     const std::vector<PlacedLuminaire>& luminaires,
                                     std::vector<Environment> environments, PlacedEmitters emitters,
                                     const std::vector<std::vector<ExteriorObject>>& exterior) {
-  ReferenceScene ref{mesh, traced, luminaires, {}, {}, {}, {}, {}, {}};
+  ReferenceScene ref{mesh, traced, luminaires, {}, {}, {}, {}, {}, {}, {}, {}};
   ref.emitters = make_reference_emitters(std::move(emitters));
   ref.portals = make_reference_portals(scene, mesh, std::move(environments), exterior);
   for (std::size_t j = 0; j < luminaires.size(); ++j) {
@@ -235,6 +327,14 @@ ReferenceScene make_reference_scene(const Scene& scene, const PreparedMesh& mesh
     ref.triangle_glossy.push_back(glossy.index.at(m));
   }
   ref.glossy = std::move(glossy.brdf);
+  std::vector<std::uint32_t> ids(mesh.triangles.size());
+  for (std::size_t t = 0; t < ids.size(); ++t) ids[t] = static_cast<std::uint32_t>(t);
+  ref.mirror_planes = find_mirror_planes(mesh.positions, mesh.triangles, ids, [&](std::size_t t) {
+    const std::int32_t g = ref.triangle_glossy[t];
+    return g >= 0 && reflects_as_mirror(ref.glossy[static_cast<std::size_t>(g)]) ? std::int64_t{g}
+                                                                                 : std::int64_t{-1};
+  });
+  ref.triangle_mirror = mirror_plane_of(ref.mirror_planes, mesh.triangles.size());
   return ref;
 }
 
@@ -319,7 +419,7 @@ ReferenceImages reference_render(const PinholeCamera& camera, const ReferenceSce
             if (step.pdf > 0) {
               l_sum += step.weight *
                        incident_luminance(ctx, offset_from_surface(hit.position, hit.normal),
-                                          step.l, step.pdf);
+                                          step.l, {step.pdf, hit.normal});
             }
           } else {
             l_sum += lambertian_radiance(hit.albedo, e);

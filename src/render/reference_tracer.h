@@ -27,11 +27,15 @@
 // adding what it finds through a window with the complementary weight
 // (render/reference_weight.h); Russian roulette on f cos / p. Sensors still report E, and the
 // illuminance image E at the surface seen.
+// Near-mirrors (render/reference_mirror.h): wherever E is estimated, each luminaire's light
+// reflected by each near-mirror plane is also sampled about the luminaire's image, weighted by
+// the power heuristic against the cosine sampling that otherwise finds it.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
+#include "engine/mirror_planes.h"
 #include "image/image.h"
 #include "light/luminaire_frame.h"
 #include "material/metallic_roughness.h"
@@ -73,6 +77,11 @@ struct ReferenceScene {
   // Glossy materials (issue 13): per triangle an index into `glossy`, or −1 (Lambertian).
   std::vector<std::int32_t> triangle_glossy;
   std::vector<MetallicRoughness> glossy;
+  // Near-mirror planes (engine/mirror_planes.h, grouped by glossy material) and per triangle
+  // the index of its plane, or −1: light reflected by them is also sampled about each
+  // luminaire's image (render/reference_mirror.h).
+  std::vector<MirrorPlane> mirror_planes;
+  std::vector<std::int32_t> triangle_mirror;
 };
 
 // `environments`: one per scene portal, in order (see make_reference_portals); may stay

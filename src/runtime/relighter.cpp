@@ -98,6 +98,7 @@ void Relighter::make_glossy_bounce(std::span<const Material> materials,
     luminaires_.set_glossy(nullptr);
     portals_.set_glossy(nullptr);
     glossy_bounce_.reset();
+    mirrors_.reset();
     return;
   }
   std::vector<std::int32_t> glossy_of(material_of.size(), -1);
@@ -118,8 +119,10 @@ void Relighter::make_glossy_bounce(std::span<const Material> materials,
   // none, should making it fail).
   const Receivers& receivers = runtime_->receiver_set();
   try {
+    mirrors_.emplace(*runtime_, glossy_of, glossy.brdf);
     glossy_bounce_.emplace(runtime_->gather(), receivers.positions, receivers.normals,
-                           std::move(glossy_of), std::move(glossy.brdf), albedo, bounce_);
+                           std::move(glossy_of), std::move(glossy.brdf), albedo, bounce_,
+                           &*mirrors_);
   } catch (...) {
     luminaires_.set_glossy(nullptr);
     portals_.set_glossy(nullptr);

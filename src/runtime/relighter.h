@@ -151,8 +151,9 @@ class Relighter {
   void update_objects();
 
   TransferView transfer_;
-  std::vector<Luminaire> luminaire_specs_;  // the scene's (positions, openings)
-  std::optional<RuntimeScene> runtime_;     // with portals, emitters, objects or glossy surfaces
+  std::vector<Luminaire> luminaire_specs_;   // the scene's (positions, openings)
+  std::optional<RuntimeScene> runtime_;      // with portals, emitters, objects or glossy surfaces
+  std::optional<MirrorReflection> mirrors_;  // the near-mirror planes of glossy_bounce_
   std::optional<GlossyFirstBounce> glossy_bounce_;  // with glossy surfaces (luminaires' term)
   LuminaireLighting luminaires_;
   PortalSetLighting portals_;

@@ -1,6 +1,7 @@
 // GlossyFirstBounce (engine/glossy_first_bounce.h) on a hand-made operator: two receivers
 // gather from a glossy vertex and a Lambertian one; the correction before bouncing is
-// Σ_glossy G_rj (π f(l_j, ω_jr) − ρh_j) D_j exactly (to float precision), nothing from the
+// Σ_glossy G_rj (π f(l_j, ω_jr) D_j − ρh_j D'_j) exactly (to float precision; D' = D unless
+// given), nothing from the
 // Lambertian vertex, and with bounces the response is that correction plus its diffuse
 // interreflection (two vertices reflecting into each other: a geometric series by hand).
 #include <cmath>
@@ -59,6 +60,20 @@ TEST(GlossyFirstBounce, CorrectionIsPiFMinusRhoTimesDirectOverGlossyEntries) {
   }
   // Receiver 0 gathers only from the Lambertian vertex: no correction.
   for (int c = 0; c < 3; ++c) EXPECT_EQ(response[c], 0.0f);
+
+  // With D' (what the diffuse transfer reflected: a luminaire's SH series) the diffuse part
+  // taken out is ρh D', not ρh D.
+  const std::vector<float> reflected{60.0f, 20.0f, 0.0f};
+  std::vector<float> consistent(9);
+  once.respond(dx, dy, dz, direct, consistent, nullptr, reflected);
+  for (const std::size_t r : {std::size_t{1}, std::size_t{2}}) {
+    const float weight = r == 1 ? 0.3f : 0.25f;
+    const Rgb f =
+        metallic_roughness_brdf(metal, normals[0], l, normalize(positions[r] - positions[0]));
+    const Rgb expected = (f * (kPi * 120.0) - rho_h * 60.0) * weight;
+    EXPECT_NEAR(consistent[3 * r], expected.r, 1e-4 * std::abs(expected.r) + 1e-6) << r;
+    EXPECT_NEAR(consistent[3 * r + 2], expected.b, 1e-4 * std::abs(expected.b) + 1e-6) << r;
+  }
 
   // With bounces: the correction reflected by the wall (vertex 1, albedo 0.5) reaches row 0.
   BounceSettings bouncing;

@@ -45,7 +45,10 @@ LuminaireLighting::LuminaireLighting(LuminaireTransferSet transfer, const Scene&
     throw std::invalid_argument("LuminaireLighting: transfer and scene disagree on luminaires");
   }
   luminaires_.resize(scene.luminaires.size());
-  for (const Luminaire& l : scene.luminaires) states_.push_back(luminaire_state(l));
+  for (const Luminaire& l : scene.luminaires) {
+    states_.push_back(luminaire_state(l));
+    positions_.push_back(l.position);
+  }
   for (std::size_t j = 0; j < luminaires_.size(); ++j) update(j, states_[j], true);
 }
 
@@ -142,7 +145,7 @@ void LuminaireLighting::update(std::size_t j, const LuminaireState& s, bool geom
                                                v.factor[r]);
             }
           });
-      respond_glossy(j);
+      respond_glossy(j, s);
     }
   }
   const Rgb rgb = s.on ? s.color * s.dimmer : Rgb{};
@@ -208,18 +211,52 @@ void LuminaireLighting::set_glossy(const GlossyFirstBounce* glossy) {
       glossy != nullptr && !glossy->empty() && !transfer_.direct_sh_mode ? glossy : nullptr;
   if (now == glossy_ && now == nullptr) return;
   glossy_ = now;
-  for (std::size_t j = 0; j < luminaires_.size(); ++j) respond_glossy(j);
+  for (std::size_t j = 0; j < luminaires_.size(); ++j) {
+    luminaires_[j].mirror_traced = false;
+    respond_glossy(j, states_[j]);
+  }
 }
 
-void LuminaireLighting::respond_glossy(std::size_t j) {
+void LuminaireLighting::respond_glossy(std::size_t j, const LuminaireState& s) {
   Lit& l = luminaires_[j];
   if (glossy_ == nullptr) {
     l.glossy.clear();
+    l.mirror_paths.clear();
+    l.mirror_traced = false;
     return;
   }
   const LuminaireTransferView& v = transfer_.luminaires[j];
   l.glossy.resize(3 * transfer_.receivers);
-  glossy_->respond(v.dir_x, v.dir_y, v.dir_z, l.direct, l.glossy);
+  // D': what the stored transfer reflected at the glossy vertices — the distribution's SH
+  // series toward each (its weights are l.sh), times the same geometry.
+  std::vector<float> reflected(transfer_.receivers, 0.0f);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, transfer_.receivers),
+                    [&](const auto& range) {
+                      for (std::size_t r = range.begin(); r != range.end(); ++r) {
+                        if (!glossy_->glossy(r) || v.factor[r] == 0) continue;
+                        const Vec3 w{v.dir_x[r], v.dir_y[r], v.dir_z[r]};
+                        reflected[r] = static_cast<float>(sh_evaluate(l.sh, w) * v.factor[r]);
+                      }
+                    });
+  const MirrorReflection* mirrors = glossy_->mirrors();
+  if (mirrors == nullptr) {
+    glossy_->respond(v.dir_x, v.dir_y, v.dir_z, l.direct, l.glossy, nullptr, reflected);
+    return;
+  }
+  // Its image in the near-mirror planes: the paths traced once, I evaluated as aimed now.
+  if (!l.mirror_traced) {
+    l.mirror_paths = mirrors->trace(positions_[j]);
+    l.mirror_traced = true;
+  }
+  const PhotometricFrame frame = photometric_frame(s.aim, s.c0);
+  std::vector<float> intensity(l.mirror_paths.size());
+  for (std::size_t k = 0; k < intensity.size(); ++k) {
+    const float* e = l.mirror_paths[k].emit;
+    intensity[k] =
+        static_cast<float>(l.distribution.intensity(frame.to_photometric({e[0], e[1], e[2]})));
+  }
+  const MirrorLight mirror{l.mirror_paths, intensity};
+  glossy_->respond(v.dir_x, v.dir_y, v.dir_z, l.direct, l.glossy, &mirror, reflected);
 }
 
 std::size_t LuminaireLighting::transfer_bytes() const {

@@ -46,7 +46,8 @@ class LuminaireLighting : public SourceTerm {
 
   // The glossy surfaces' first reflection of each luminaire's direct light
   // (engine/glossy_first_bounce.h), Γ per luminaire, recomputed when its aim or distribution
-  // changes. Null (or "sh" direct mode, which has no light direction per receiver): none.
+  // changes; its image in near-mirror planes traced once per `glossy`. Null (or "sh" direct
+  // mode, which has no light direction per receiver): none.
   // `glossy` must outlive the term.
   void set_glossy(const GlossyFirstBounce* glossy);
   // out (3 per receiver) += Σ_j rgb_j · Γ_j. Not part of add_block: it is bounced with the
@@ -66,22 +67,25 @@ class LuminaireLighting : public SourceTerm {
  private:
   struct Lit {  // one luminaire as the current state lights it
     Distribution distribution;
-    std::vector<double> sh;               // world-frame SH coefficients of I (windowed)
-    std::optional<CurveProjector> curve;  // kept for curve distributions (Eq. 19-21)
-    std::vector<float> direct;            // D_r without colour (exact mode)
-    std::vector<float> glossy;            // Γ_r, 3 per receiver (with glossy surfaces)
-    std::vector<float> weights;           // K × 3: rgb_c · w_k (indirect, and "sh" direct)
+    std::vector<double> sh;                // world-frame SH coefficients of I (windowed)
+    std::optional<CurveProjector> curve;   // kept for curve distributions (Eq. 19-21)
+    std::vector<float> direct;             // D_r without colour (exact mode)
+    std::vector<float> glossy;             // Γ_r, 3 per receiver (with glossy surfaces)
+    std::vector<MirrorPath> mirror_paths;  // through near-mirrors, traced for glossy_
+    bool mirror_traced = false;
+    std::vector<float> weights;  // K × 3: rgb_c · w_k (indirect, and "sh" direct)
     float rgb[3] = {0, 0, 0};
     bool active = false;
   };
 
   void update(std::size_t j, const LuminaireState& s, bool geometry_changed);
   void project_distribution(std::size_t j, const LuminaireState& s);
-  void respond_glossy(std::size_t j);
+  void respond_glossy(std::size_t j, const LuminaireState& s);
 
   LuminaireTransferSet transfer_;
   ShWindow window_;
   std::vector<LuminaireState> states_;
+  std::vector<Vec3> positions_;  // the luminaires' photometric centres
   std::vector<Lit> luminaires_;
   std::size_t incremental_curve_updates_ = 0;
   const GlossyFirstBounce* glossy_ = nullptr;
