@@ -86,7 +86,7 @@ int run_nearfield(const NearfieldArgs& args) {
     const PinholeCamera pinhole = make_pinhole_camera(camera, args.view.width, args.view.height);
     const ShadedImages images = shade_vertices(
         pinhole,
-        {relit.opaque_tracer(), t.positions, t.triangles, t.vertex_albedo, irradiance, {}, {}, {}});
+        {relit.opaque_tracer(), t.positions, t.triangles, t.vertex_albedo, irradiance, {}, {}, {}, {}});
     const DisplayOptions display = display_options(args.view);
     const bool lux = display.false_color && display.false_color->quantity == Quantity::kIlluminance;
     write_image(args.view.output, lux ? images.illuminance : images.luminance, display);

@@ -105,9 +105,10 @@ void GlossyFirstBounce::respond(std::span<const float> dir_x, std::span<const fl
       if (path.receiver >= rows || g < 0 || mirror->intensity[k] <= 0) continue;
       const Rgb e = specular_directional_albedo(glossy_[static_cast<std::size_t>(g)], path.cos_in) *
                     (static_cast<double>(mirror->intensity[k]) * path.factor);
-      once[3 * path.receiver] += static_cast<float>(e.r);
-      once[3 * path.receiver + 1] += static_cast<float>(e.g);
-      once[3 * path.receiver + 2] += static_cast<float>(e.b);
+      float* c = &once[3 * std::size_t{path.receiver}];
+      c[0] += static_cast<float>(e.r);
+      c[1] += static_cast<float>(e.g);
+      c[2] += static_cast<float>(e.b);
     }
   }
   // Γ = c + X, X = G ρ (c + X).

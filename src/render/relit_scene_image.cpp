@@ -99,15 +99,162 @@ VertexShadingInput vertex_input(RelitScene& scene, const VertexView& view,
                                 std::function<Rgb(Vec3, Vec3)> background) {
   const TransferFile& t = scene.transfer();
   if (view.shown) {
-    return {*view.shown->tracer,   view.shown->positions,
-            view.shown->triangles, view.shown->albedo,
-            view.irradiance,       {},
-            std::move(background), {}};
+    return {*view.shown->tracer,
+            view.shown->positions,
+            view.shown->triangles,
+            view.shown->albedo,
+            view.irradiance,
+            {},
+            std::move(background),
+            {},
+            {}};
   }
-  return {
-      scene.opaque_tracer(), t.positions, t.triangles,           scene.relighter().vertex_albedo(),
-      view.irradiance,       {},          std::move(background), {}};
+  return {scene.opaque_tracer(),
+          t.positions,
+          t.triangles,
+          scene.relighter().vertex_albedo(),
+          view.irradiance,
+          {},
+          std::move(background),
+          {},
+          {}};
 }
+
+// The relit scene's glossy room surfaces as render/glossy_pixels.h shades them: the exact
+// direct light's highlights (luminaires, suns; emitters as the diffuse surface of the same
+// hemispherical albedo) and the room's reflection gathered from the relit vertices, for a
+// pixel's hit point or a vertex. With `shown`, the objects as the state places them are seen
+// and shadow (they shade as diffuse).
+class GlossyShading {
+ public:
+  GlossyShading(RelitScene& scene, const ShownScene* shown)
+      : t_(scene.transfer()),
+        lit_(scene.relighter()),
+        windows_(scene.portal_tracer()),
+        occluders_(lit_.objects() != nullptr ? lit_.objects()->occluders()
+                                             : Occluders(scene.opaque_tracer())),
+        lights_(pixel_lights(t_.scene, lit_)),
+        glossy_(glossy_materials(lit_.state().materials)),
+        texture_(t_.view.scene.vertex_texture),
+        pixels_{shown != nullptr ? *shown->tracer : scene.opaque_tracer(),
+                shown != nullptr ? shown->positions : t_.positions,
+                shown != nullptr ? shown->triangles : t_.triangles,
+                {},
+                [this](Vec3 origin, Vec3 dir) { return outside(origin, dir); },
+                [this](const MetallicRoughness& m, Vec3 p, Vec3 n, Vec3 v) {
+                  return direct(m, p, n, v);
+                }} {
+    if (glossy_.empty()) return;
+    if (!lit_.suns().empty()) {
+      sun_geometry_.emplace(lit_.sun_geometry());
+      sun_geometry_->occluders = occluders_;
+    }
+    const ObjectLighting* objects = lit_.objects();
+    const std::vector<float> total =
+        objects != nullptr
+            ? with_objects(scene.irradiance(), t_.vertex_count, objects->irradiance(true))
+            : std::vector<float>(
+                  scene.irradiance().begin(),
+                  scene.irradiance().begin() + static_cast<std::ptrdiff_t>(3 * t_.vertex_count));
+    const std::span<const float> albedo =
+        shown != nullptr ? std::span<const float>(shown->albedo) : lit_.vertex_albedo();
+    vertex_radiance_.resize(total.size());
+    for (std::size_t i = 0; i < total.size(); ++i) {
+      vertex_radiance_[i] = static_cast<float>(lambertian_radiance(albedo[i], total[i]));
+    }
+    pixels_.vertex_radiance = vertex_radiance_;
+  }
+  GlossyShading(const GlossyShading&) = delete;
+  GlossyShading& operator=(const GlossyShading&) = delete;
+
+  bool empty() const { return glossy_.empty(); }
+
+  // The luminance toward v (unit) at a hit p (normal n) on `triangle` at barycentrics `bary`;
+  // none for a Lambertian triangle or an object's.
+  std::optional<Rgb> at_hit(std::uint32_t triangle, const std::array<double, 3>& bary, Vec3 p,
+                            Vec3 n, Vec3 v) const {
+    if (glossy_.empty() || triangle >= t_.triangle_material.size()) return std::nullopt;
+    const std::int32_t g = glossy_.index.at(t_.triangle_material[triangle]);
+    if (g < 0) return std::nullopt;
+    // The base colour times the vertices' texture values (scene/surface_texture.h).
+    MetallicRoughness brdf = glossy_.brdf[static_cast<std::size_t>(g)];
+    if (!texture_.empty()) {
+      Rgb at;
+      for (std::size_t k = 0; k < 3; ++k) {
+        at += vertex_texture_at(texture_, t_.triangles[triangle][k]) * bary[k];
+      }
+      brdf.albedo = brdf.albedo * at;
+    }
+    // A stream per hit point: images are deterministic whatever the threads do.
+    const std::uint64_t seed = std::hash<double>{}(p.x * 7.0 + p.y * 131.0 + p.z * 1031.0);
+    return glossy_pixel_radiance(pixels_, brdf, p, n, v, kGlossySamples, seed);
+  }
+
+  // Per vertex of the shown scene (3 each): the luminance of a glossy room vertex toward
+  // `eye`, with `samples` BRDF samples of the room's reflection; NaN elsewhere.
+  std::vector<float> vertex_luminance(Vec3 eye, int samples) const {
+    std::vector<float> out(pixels_.positions.size() * 3, std::numeric_limits<float>::quiet_NaN());
+    const std::vector<std::uint32_t>& material = t_.view.scene.vertex_material;
+    if (glossy_.empty() || material.size() < t_.vertex_count) return out;
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, t_.vertex_count, 64), [&](const auto& r) {
+      for (std::size_t v = r.begin(); v != r.end(); ++v) {
+        if (material[v] == kNoMaterial) continue;
+        const std::int32_t g = glossy_.index.at(material[v]);
+        if (g < 0) continue;
+        MetallicRoughness brdf = glossy_.brdf[static_cast<std::size_t>(g)];
+        brdf.albedo = brdf.albedo * vertex_texture_at(texture_, v);
+        const Vec3 p = t_.positions[v], n = t_.view.scene.receiver_normals[v];
+        const Vec3 to_eye = eye - p;
+        const double d = length(to_eye);
+        if (!(d > 0) || dot(to_eye, n) <= 0) continue;  // seen from behind: as diffuse
+        const Rgb l = glossy_pixel_radiance(pixels_, brdf, p, n, to_eye / d, samples, v);
+        out[3 * v] = static_cast<float>(l.r);
+        out[3 * v + 1] = static_cast<float>(l.g);
+        out[3 * v + 2] = static_cast<float>(l.b);
+      }
+    });
+    return out;
+  }
+
+ private:
+  // The shell through a window; the sun disc is exact in direct().
+  Rgb outside(Vec3 origin, Vec3 dir) const {
+    const RayHit hit = windows_.intersect({origin, dir});
+    return hit.hit() ? lit_.shell(hit.triangle).radiance(dir) : Rgb{};
+  }
+
+  Rgb direct(const MetallicRoughness& m, Vec3 p, Vec3 n, Vec3 v) const {
+    Rgb l;
+    for (const LuminaireLight& light : lights_) {
+      const Rgb e = luminaire_direct_irradiance(occluders_, std::span(&light, 1), p, n);
+      if (max_component(e) > 0) {
+        l += metallic_roughness_brdf(m, n, normalize(light.position - p), v) * e;
+      }
+    }
+    if (sun_geometry_) {
+      for (const PortalSun& sun : lit_.suns()) {
+        const Rgb e = sun_irradiance(*sun_geometry_, std::span(&sun, 1), p, n);
+        if (max_component(e) > 0) l += metallic_roughness_brdf(m, n, sun.disc.direction, v) * e;
+      }
+    }
+    if (const EmitterLighting* emitters = lit_.emitters(); emitters != nullptr) {
+      l += lambertian_radiance(hemispherical_albedo(m),
+                               emitter_direct_irradiance(emitters->placed(), &occluders_, p, n));
+    }
+    return l;
+  }
+
+  const TransferFile& t_;
+  const Relighter& lit_;
+  const RayTracer& windows_;
+  const Occluders occluders_;
+  const std::vector<LuminaireLight> lights_;
+  std::optional<SunGeometry> sun_geometry_;
+  const GlossyMaterials glossy_;
+  const std::span<const float> texture_;
+  std::vector<float> vertex_radiance_;
+  GlossyPixelScene pixels_;
+};
 
 }  // namespace
 
@@ -116,9 +263,15 @@ std::vector<Rgb> relit_scene_luminance(RelitScene& scene, std::span<const Ray> r
   const VertexView view = make_vertex_view(scene);
   const RayTracer& windows = scene.portal_tracer();
   const Relighter& lit = scene.relighter();
-  const VertexShadingInput input = vertex_input(scene, view, [&](Vec3 origin, Vec3 dir) {
+  VertexShadingInput input = vertex_input(scene, view, [&](Vec3 origin, Vec3 dir) {
     return window_luminance(lit, windows, origin, dir, with_suns);
   });
+  // Glossy vertices as seen from the rays' eye (the first ray's origin: one observer).
+  const GlossyShading glossy(scene, view.shown ? &*view.shown : nullptr);
+  const std::vector<float> toward_eye =
+      glossy.empty() || rays.empty() ? std::vector<float>{}
+                                     : glossy.vertex_luminance(rays.front().origin, kGlossySamples);
+  input.vertex_luminance = toward_eye;
   std::vector<Rgb> out(rays.size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rays.size(), 256), [&](const auto& r) {
     for (std::size_t i = r.begin(); i != r.end(); ++i) {
@@ -149,7 +302,15 @@ ShadedImages render_relit_scene(RelitScene& scene, const Camera& camera, int wid
     return window_luminance(lit, windows, origin, dir, true);
   };
   if (!pixel_direct) {
-    return shade_vertices(pinhole, vertex_input(scene, make_vertex_view(scene), background));
+    // Glossy vertices send their own luminance toward the eye.
+    const VertexView view = make_vertex_view(scene);
+    const GlossyShading glossy(scene, view.shown ? &*view.shown : nullptr);
+    const std::vector<float> toward_eye =
+        glossy.empty() ? std::vector<float>{}
+                       : glossy.vertex_luminance(pinhole.eye, kGlossySamples);
+    VertexShadingInput input = vertex_input(scene, view, background);
+    input.vertex_luminance = toward_eye;
+    return shade_vertices(pinhole, input);
   }
   std::vector<float> indirect = scene.indirect_irradiance();
   if (objects != nullptr) {
@@ -166,70 +327,17 @@ ShadedImages render_relit_scene(RelitScene& scene, const Camera& camera, int wid
   // Glossy room triangles (the state's materials) shade by their BRDF (render/glossy_pixels.h):
   // the exact direct light's highlights and the room's reflection gathered from the relit
   // vertices. Objects' triangles shade as diffuse.
-  const GlossyMaterials glossy = glossy_materials(lit.state().materials);
-  std::vector<float> vertex_radiance;
-  if (!glossy.empty()) {
-    const std::vector<float> total =
-        objects != nullptr
-            ? with_objects(scene.irradiance(), t.vertex_count, objects->irradiance(true))
-            : std::vector<float>(
-                  scene.irradiance().begin(),
-                  scene.irradiance().begin() + static_cast<std::ptrdiff_t>(3 * t.vertex_count));
-    vertex_radiance.resize(total.size());
-    for (std::size_t i = 0; i < total.size(); ++i) {
-      vertex_radiance[i] = static_cast<float>(lambertian_radiance(albedo[i], total[i]));
-    }
-  }
-  const GlossyPixelScene glossy_scene{
-      visible,
-      positions,
-      triangles,
-      vertex_radiance,
-      [&](Vec3 origin, Vec3 dir) {  // the shell through a window; the sun disc is exact below
-        const RayHit hit = windows.intersect({origin, dir});
-        return hit.hit() ? lit.shell(hit.triangle).radiance(dir) : Rgb{};
-      },
-      [&](const MetallicRoughness& m, Vec3 p, Vec3 n, Vec3 v) {
-        Rgb l;
-        for (const LuminaireLight& light : lights) {
-          const Rgb e = luminaire_direct_irradiance(occluders, std::span(&light, 1), p, n);
-          if (max_component(e) > 0) {
-            l += metallic_roughness_brdf(m, n, normalize(light.position - p), v) * e;
-          }
-        }
-        if (sun_geometry) {
-          for (const PortalSun& sun : lit.suns()) {
-            const Rgb e = sun_irradiance(*sun_geometry, std::span(&sun, 1), p, n);
-            if (max_component(e) > 0) l += metallic_roughness_brdf(m, n, sun.disc.direction, v) * e;
-          }
-        }
-        if (emitters != nullptr) {
-          l += lambertian_radiance(hemispherical_albedo(m),
-                                   emitter_direct_irradiance(emitters->placed(), &occluders, p, n));
-        }
-        return l;
-      }};
-  const std::span<const float> texture = t.view.scene.vertex_texture;
+  const GlossyShading glossy(scene, shown ? &*shown : nullptr);
   const auto glossy_radiance = [&](std::uint32_t triangle, const std::array<double, 3>& bary,
                                    Vec3 p, Vec3 n, Vec3 v) -> std::optional<Rgb> {
-    if (glossy.empty() || triangle >= t.triangle_material.size()) return std::nullopt;
-    const std::int32_t g = glossy.index.at(t.triangle_material[triangle]);
-    if (g < 0) return std::nullopt;
-    // The base colour times the vertices' texture values (scene/surface_texture.h).
-    MetallicRoughness brdf = glossy.brdf[static_cast<std::size_t>(g)];
-    if (!texture.empty()) {
-      Rgb at;
-      for (std::size_t k = 0; k < 3; ++k) {
-        at += vertex_texture_at(texture, t.triangles[triangle][k]) * bary[k];
-      }
-      brdf.albedo = brdf.albedo * at;
-    }
-    // A stream per hit point: images are deterministic whatever the threads do.
-    const std::uint64_t seed = std::hash<double>{}(p.x * 7.0 + p.y * 131.0 + p.z * 1031.0);
-    return glossy_pixel_radiance(glossy_scene, brdf, p, n, v, kGlossySamples, seed);
+    return glossy.at_hit(triangle, bary, p, n, v);
   };
   return shade_vertices(
-      pinhole, {visible, positions, triangles, albedo, indirect,
+      pinhole, {visible,
+                positions,
+                triangles,
+                albedo,
+                indirect,
                 [&](Vec3 p, Vec3 n) {
                   Rgb e = luminaire_direct_irradiance(occluders, lights, p, n) +
                           (sun_geometry ? sun_irradiance(*sun_geometry, lit.suns(), p, n) : Rgb{});
@@ -238,7 +346,17 @@ ShadedImages render_relit_scene(RelitScene& scene, const Camera& camera, int wid
                   }
                   return e;
                 },
-                background, glossy_radiance});
+                background,
+                glossy_radiance,
+                {}});
+}
+
+std::vector<float> glossy_vertex_luminance(RelitScene& scene, Vec3 eye, int samples) {
+  const VertexView view = make_vertex_view(scene);
+  const GlossyShading glossy(scene, view.shown ? &*view.shown : nullptr);
+  std::vector<float> out = glossy.vertex_luminance(eye, samples);
+  out.resize(3 * scene.transfer().vertex_count);  // the room's vertices
+  return out;
 }
 
 }  // namespace relight

@@ -1,6 +1,7 @@
 #include "render/vertex_shading.h"
 #include "material/lambert.h"
 
+#include <cmath>
 #include <limits>
 
 #include <tbb/blocked_range.h>
@@ -37,11 +38,19 @@ RaySample shade_ray(const VertexShadingInput& in, Vec3 origin, Vec3 dir) {
   Rgb l;
   if (in.direct_at_hit) {
     const Vec3 p = a * bary[0] + b * bary[1] + c * bary[2], n = normalize(face);
-    const std::optional<Rgb> glossy =
-        in.glossy_radiance ? in.glossy_radiance(hit.triangle, bary, p, n, dir * -1.0)
-                           : std::nullopt;
+    const std::optional<Rgb> glossy = in.glossy_radiance
+                                          ? in.glossy_radiance(hit.triangle, bary, p, n, dir * -1.0)
+                                          : std::nullopt;
     e += in.direct_at_hit(p, n);
     l = glossy ? *glossy : lambertian_radiance(albedo, e);
+  } else if (!in.vertex_luminance.empty()) {
+    for (std::size_t k = 0; k < 3; ++k) {
+      const Rgb own = vertex_rgb(in.vertex_luminance, t[k]);
+      l += (std::isnan(own.r) ? lambertian_radiance(vertex_rgb(in.vertex_albedo, t[k]),
+                                                    vertex_rgb(in.irradiance, t[k]))
+                              : own) *
+           bary[k];
+    }
   } else {
     l = lambertian_radiance(albedo, e);
   }

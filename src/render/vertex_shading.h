@@ -2,7 +2,8 @@
 // Gouraud shading): a primary ray per sub-pixel finds the visible triangle, and the
 // vertex values are interpolated with the hit's barycentrics — the same interpolation the
 // gather operator assumes, so an image shows exactly what the transfer computed.
-// Luminance of a vertex is albedo/π · E (diffuse); back faces show black.
+// Luminance of a vertex is albedo/π · E (diffuse), or its own luminance toward the eye where
+// given (glossy vertices); back faces show black.
 #pragma once
 
 #include <array>
@@ -38,6 +39,9 @@ struct VertexShadingInput {
   std::function<std::optional<Rgb>(std::uint32_t triangle, const std::array<double, 3>& bary,
                                    Vec3 point, Vec3 normal, Vec3 v)>
       glossy_radiance;
+  // Without direct_at_hit, when set (3 per vertex): the luminance each vertex sends toward the
+  // eye, interpolated instead of ρ/π E where it is not NaN (glossy vertices, issue 13).
+  std::span<const float> vertex_luminance;
 };
 
 // What one ray of shade_vertices sees from `origin` along `dir`: a front surface (its

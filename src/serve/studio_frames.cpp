@@ -1,5 +1,7 @@
 #include "serve/studio_frames.h"
 
+#include <cmath>
+
 #include <bit>
 #include <cstring>
 #include <stdexcept>
@@ -181,6 +183,28 @@ std::string encode_frame(std::uint32_t frame_number, std::optional<std::uint32_t
     put(out, float_to_half(values.object_radiance[3 * i + 1]));
     put(out, float_to_half(values.object_radiance[3 * i + 2]));
     put(out, float_to_half(values.object_illuminance[i]));
+  }
+  return out;
+}
+
+std::string encode_glossy_view(std::uint32_t frame_number, Vec3 eye, float milliseconds,
+                               std::span<const float> luminance) {
+  std::vector<std::uint32_t> glossy;
+  for (std::size_t v = 0; 3 * v + 2 < luminance.size(); ++v) {
+    if (!std::isnan(luminance[3 * v])) glossy.push_back(static_cast<std::uint32_t>(v));
+  }
+  std::string out;
+  out.reserve(28 + 10 * glossy.size());
+  put_tag(out, "RLGV");
+  put(out, frame_number);
+  put(out, static_cast<std::uint32_t>(glossy.size()));
+  put(out, milliseconds);
+  put(out, static_cast<float>(eye.x));
+  put(out, static_cast<float>(eye.y));
+  put(out, static_cast<float>(eye.z));
+  for (const std::uint32_t v : glossy) put(out, v);
+  for (const std::uint32_t v : glossy) {
+    for (std::size_t c = 0; c < 3; ++c) put(out, float_to_half(luminance[3 * std::size_t{v} + c]));
   }
   return out;
 }

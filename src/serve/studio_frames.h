@@ -59,4 +59,10 @@ void compute_object_values(std::span<const float> albedo, std::span<const float>
 std::string encode_frame(std::uint32_t frame_number, std::optional<std::uint32_t> seq,
                          float milliseconds, const FrameValues& values);
 
+// `RLGV` (docs/studio-protocol.md): the glossy vertices' luminance toward one client's eye
+// for frame `frame_number`; `luminance` is 3 per vertex, NaN at vertices that are not glossy
+// (render/relit_scene_image.h glossy_vertex_luminance).
+std::string encode_glossy_view(std::uint32_t frame_number, Vec3 eye, float milliseconds,
+                               std::span<const float> luminance);
+
 }  // namespace relight

@@ -96,6 +96,9 @@ ClientMessage parse_client_message(const std::string& text, const Scene& scene,
   } else if (type == "ping") {
     root.expect_keys({"type", "seq"});
     m.request = PingRequest{};
+  } else if (type == "view") {
+    root.expect_keys({"type", "seq", "eye"});
+    m.request = ViewRequest{root.at("eye").vec3()};
   } else if (type == "annual") {
     root.expect_keys({"type", "seq", "weather", "occupied"});
     AnnualRequest r;
@@ -114,7 +117,7 @@ ClientMessage parse_client_message(const std::string& text, const Scene& scene,
     m.request = std::move(r);
   } else {
     root.at("type").fail("unknown message type \"" + type +
-                         "\" (expected state, pick, distribution, ping, annual or optimize)");
+                         "\" (expected state, pick, distribution, ping, annual, optimize or view)");
   }
   return m;
 }

@@ -43,6 +43,10 @@ struct DistributionRequest {
   int samples = kDefaultProfileSamples;
 };
 struct PingRequest {};
+// Where the sender's camera is: glossy surfaces are shaded toward it (RLGV).
+struct ViewRequest {
+  Vec3 eye;
+};
 // A year of daylight (`relight annual`) from the weather file's text, parsed and checked here.
 struct AnnualRequest {
   WeatherFile weather;
@@ -63,7 +67,7 @@ inline constexpr std::size_t kMaxClientMessageBytes = std::size_t{8} << 20;
 struct ClientMessage {
   std::optional<std::uint32_t> seq;
   std::variant<StateRequest, PickRequest, DistributionRequest, PingRequest, AnnualRequest,
-               OptimizeRequest>
+               OptimizeRequest, ViewRequest>
       request;
 };
 

@@ -4,6 +4,7 @@
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
+#include <map>
 #include <mutex>
 #include <optional>
 #include <set>
@@ -13,6 +14,7 @@
 #include "common/input_error.h"
 #include "design/optimize.h"
 #include "light/distribution.h"
+#include "render/relit_scene_image.h"
 #include "runtime/annual_daylight.h"
 #include "runtime/relit_scene.h"
 #include "serve/static_files.h"
@@ -27,6 +29,10 @@ namespace relight {
 namespace fs = std::filesystem;
 
 namespace {
+
+// BRDF samples of the room's reflection per glossy vertex in a client's view (RLGV): a fifth
+// of render's, for a reply within tens of milliseconds on a room.
+constexpr int kViewGlossySamples = 16;
 
 // A validated state waiting for the worker; a newer one replaces it (coalescing).
 // As StateRequest (serve/studio_messages.h), a false positive of clang-tidy 14:
@@ -94,6 +100,10 @@ struct StudioServer::Impl {
   // the optimise panel's run starts.
   nlohmann::json received_document = nlohmann::json::object();
   std::set<ConnectionId> clients;
+  // Each client's eye as its last `view` said, and the clients whose RLGV is due (after a
+  // new eye, and for every eye after each frame).
+  std::map<ConnectionId, Vec3> eyes;
+  std::set<ConnectionId> views_due;
 
   std::atomic<std::size_t> incremental_updates{0};  // written by the worker
 
@@ -146,12 +156,28 @@ struct StudioServer::Impl {
     std::uint32_t frame_number = shown.frame_number;           // only the worker advances it
     while (true) {
       PendingState p;
+      std::vector<std::pair<ConnectionId, Vec3>> views;
       {
         std::unique_lock lock(mutex);
-        wake.wait(lock, [&] { return quit || pending.has_value(); });
+        wake.wait(lock, [&] { return quit || pending.has_value() || !views_due.empty(); });
         if (quit) return;
-        p = std::move(*pending);
-        pending.reset();
+        if (!pending) {  // states first: a view of a state about to change is wasted
+          for (const ConnectionId id : views_due) views.emplace_back(id, eyes.at(id));
+          views_due.clear();
+        } else {
+          p = std::move(*pending);
+          pending.reset();
+        }
+      }
+      if (!views.empty()) {
+        for (const auto& [id, eye] : views) {
+          try {
+            show_view(id, eye, frame_number);
+          } catch (const std::exception& e) {
+            send_json(id, error_message(std::nullopt, e.what()));
+          }
+        }
+        continue;
       }
       try {
         // A material edit shows its first bounce at once, then the converged light
@@ -163,6 +189,8 @@ struct StudioServer::Impl {
         }
         show(p, shown_document, frame_number, true);
         last_good = std::move(p.state);
+        std::lock_guard lock(mutex);
+        for (const auto& [id, eye] : eyes) views_due.insert(id);
       } catch (const std::exception& e) {  // e.g. a map file that cannot be read
         send_json(p.client, error_message(p.seq, e.what()));
         relit->relighter().set_material_bounces(-1);
@@ -222,6 +250,15 @@ struct StudioServer::Impl {
     }
   }
 
+  // Sends client `id` its glossy vertices' luminance toward `eye` under the state shown
+  // (frame `frame_number`).
+  void show_view(ConnectionId id, Vec3 eye, std::uint32_t frame_number) {
+    const auto start = std::chrono::steady_clock::now();
+    const std::vector<float> luminance = glossy_vertex_luminance(*relit, eye, kViewGlossySamples);
+    const std::chrono::duration<float, std::milli> ms = std::chrono::steady_clock::now() - start;
+    transport->send(id, encode_glossy_view(frame_number, eye, ms.count(), luminance), true, true);
+  }
+
   nlohmann::json profile_message(std::optional<std::uint32_t> seq, std::size_t j,
                                  const LightingState& state,
                                  int samples = kDefaultProfileSamples) const {
@@ -249,6 +286,8 @@ struct StudioServer::Impl {
   void on_close(ConnectionId id) {
     std::lock_guard lock(mutex);
     clients.erase(id);
+    eyes.erase(id);
+    views_due.erase(id);
   }
 
   void on_message(ConnectionId id, const std::string& payload, bool binary) {
@@ -443,6 +482,16 @@ struct StudioServer::Impl {
         send_json(id, error_message(seq, e.what()));
       }
     });
+  }
+
+  void handle(ConnectionId id, std::optional<std::uint32_t>, const ViewRequest& r) {
+    {
+      std::lock_guard lock(mutex);
+      if (clients.count(id) == 0) return;  // closed meanwhile
+      eyes[id] = r.eye;
+      views_due.insert(id);
+    }
+    wake.notify_one();
   }
 
   void handle(ConnectionId id, std::optional<std::uint32_t> seq, const PingRequest&) {

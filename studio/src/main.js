@@ -18,7 +18,7 @@ import { Markers } from './markers.js';
 import { MaterialPanel } from './materials.js';
 import { ObjectPanel, ObjectsView } from './objects.js';
 import { OptimizePanel } from './optimize.js';
-import { decodeFrame, decodeGeometry, decodeObjects, messages } from './protocol.js';
+import { decodeFrame, decodeGeometry, decodeGlossyView, decodeObjects, halfToFloat, messages } from './protocol.js';
 import { Sensors } from './sensors.js';
 import { StateStore, canonical } from './state.js';
 import { notice } from './ui.js';
@@ -42,6 +42,8 @@ const api = {
   annual: null, // the last `annual` result, with the annual_progress messages before it
   annualProgress: 0,
   optimized: null, // the last `optimized` result of this client's optimise panel
+  glossyViews: 0, // RLGV messages applied
+  lastGlossyView: null, // {frame, count, eye, serverMs, vertices} of the last one
 };
 window.relightStudio = api;
 
@@ -63,6 +65,7 @@ const connection = new Connection(`${proto}//${location.host}/ws`, {
   close: () => {
     session.hello = null;
     session.geometry = false;
+    eyeUpdate.sent = null;
   },
 });
 const store = new StateStore(connection);
@@ -252,6 +255,12 @@ function onBinary(tag, buffer) {
       }
       session.pendingFrameNumber = f.frame;
       if (session.probeRay) refreshProbe();
+    } else if (tag === 'RLGV') {
+      if (!session.geometry) throw new Error('RLGV before RLGE');
+      const g = decodeGlossyView(buffer);
+      viewer.setGlossyView(g);
+      api.glossyViews++;
+      api.lastGlossyView = { frame: g.frame, count: g.count, eye: g.eye, serverMs: g.serverMs, vertices: Array.from(g.vertices) };
     } else {
       console.warn(`relight studio: unknown binary message "${tag}"`);
     }
@@ -270,6 +279,25 @@ function clientError(message) {
 
 viewer.beforeRender.push(() => sensors.colour(viewer.used));
 viewer.onDisplayChange = () => legend.update(viewer.used);
+// The eye for glossy surfaces (RLGV): sent when the camera has moved, at most every 100 ms
+// and once more when it stops; again after a reconnect.
+const eyeUpdate = { sent: null, timer: null, last: 0 };
+function sendEye() {
+  eyeUpdate.timer = null;
+  if (!session.geometry) return;
+  const eye = viewer.camera.position.toArray();
+  if (eyeUpdate.sent && eye.every((x, i) => Math.abs(x - eyeUpdate.sent[i]) < 1e-3)) return;
+  if (connection.send(messages.view(connection.nextSeq(), eye))) {
+    eyeUpdate.sent = eye;
+    eyeUpdate.last = performance.now();
+  }
+}
+viewer.afterRender.push(() => {
+  if (eyeUpdate.timer !== null) return;
+  const wait = Math.max(0, 100 - (performance.now() - eyeUpdate.last));
+  eyeUpdate.timer = setTimeout(sendEye, wait);
+});
+
 viewer.afterRender.push((info) => {
   legend.update(viewer.used);
   labels.begin();
@@ -508,6 +536,9 @@ Object.assign(api, {
     return store.latestSeq;
   },
   pick: (x, y) => pickAt(x, y),
+  requestRender: () => viewer.requestRender(),
+  // The radiance shown at vertex v (cd/m², R G B), glossy views applied.
+  shownRadiance: (v) => [0, 1, 2].map((c) => halfToFloat(viewer.lighting.array[4 * v + c])),
   // The sensor readings of the frame shown (lx, every set's points back to back).
   sensorReadings: () => Array.from(sensors.values),
   // Emitter i's marker on the canvas (CSS px), object i's base centre, and any world point's.

@@ -1,6 +1,7 @@
 // Wire format of `relight serve` (docs/studio-protocol.md): decoding of the binary
-// geometry ("RLGE"), movable objects ("RLOB") and frame ("RLFR") messages, IEEE 754 binary16
-// → number, and builders for the client's text messages (state, pick, distribution, ping).
+// geometry ("RLGE"), movable objects ("RLOB"), frame ("RLFR") and glossy view ("RLGV")
+// messages, IEEE 754 binary16 → number, and builders for the client's text messages (state,
+// pick, distribution, ping, view).
 
 const LITTLE_ENDIAN = new Uint8Array(new Uint16Array([1]).buffer)[0] === 1;
 export const NO_SEQ = 0xffffffff;
@@ -116,6 +117,26 @@ export function decodeFrame(buffer) {
   };
 }
 
+// RLGV: the glossy vertices' luminance toward this client's eye (its last `view`) for frame
+// `frame`: vertex indices (u32) and per listed vertex three half floats (R G B, cd/m²) that
+// replace the frame's radiance there; none when no surface is glossy.
+export function decodeGlossyView(buffer) {
+  need(buffer, 28, 'RLGV header');
+  if (binaryTag(buffer) !== 'RLGV') throw new Error(`expected RLGV, got "${binaryTag(buffer)}"`);
+  const dv = new DataView(buffer);
+  const G = dv.getUint32(8, true);
+  const expected = 28 + 4 * G + 6 * G;
+  if (buffer.byteLength !== expected) throw new Error(`RLGV: ${buffer.byteLength} bytes, expected ${expected}`);
+  return {
+    frame: dv.getUint32(4, true),
+    count: G,
+    serverMs: dv.getFloat32(12, true),
+    eye: [dv.getFloat32(16, true), dv.getFloat32(20, true), dv.getFloat32(24, true)],
+    vertices: view(Uint32Array, buffer, 28, G, 'getUint32'),
+    halfs: view(Uint16Array, buffer, 28 + 4 * G, 3 * G, 'getUint16'),
+  };
+}
+
 // IEEE 754 binary16 bits → number.
 export function halfToFloat(h) {
   const sign = h & 0x8000 ? -1 : 1;
@@ -137,4 +158,5 @@ export const messages = {
   pick: (seq, origin, direction) => ({ type: 'pick', seq, origin, direction }),
   distribution: (seq, luminaire, samples = 181) => ({ type: 'distribution', seq, luminaire, samples }),
   ping: (seq) => ({ type: 'ping', seq }),
+  view: (seq, eye) => ({ type: 'view', seq, eye }),
 };

@@ -136,9 +136,39 @@ export class Viewer {
       throw new Error(`frame has ${frame.vertexCount} vertices, geometry ${this.geometry.vertexCount}`);
     }
     this.lighting.array.set(frame.halfs);
+    this.lastFrameHalfs = frame.halfs;
+    this._applyGlossyView();
     this.lighting.needsUpdate = true;
     this.framePending = true;
     this.requestRender();
+  }
+
+  // Glossy vertices shaded toward the eye (a decoded RLGV): their radiance replaces the frame's
+  // now and in the frames that follow, until the next RLGV (one follows every frame).
+  setGlossyView(glossy) {
+    if (!this.lighting) throw new Error('glossy view before geometry');
+    for (const v of glossy.vertices) {
+      if (v >= this.geometry.vertexCount) throw new Error(`RLGV: vertex ${v} of ${this.geometry.vertexCount}`);
+    }
+    // Vertices the last view listed and this one does not go back to the frame's radiance.
+    if (this.glossy && this.lastFrameHalfs) {
+      for (const v of this.glossy.vertices) {
+        for (let c = 0; c < 3; c++) this.lighting.array[4 * v + c] = this.lastFrameHalfs[4 * v + c];
+      }
+    }
+    this.glossy = glossy;
+    this._applyGlossyView();
+    this.lighting.needsUpdate = true;
+    this.requestRender();
+  }
+
+  _applyGlossyView() {
+    if (!this.glossy) return;
+    const a = this.lighting.array;
+    const { vertices, halfs } = this.glossy;
+    for (let i = 0; i < vertices.length; i++) {
+      for (let c = 0; c < 3; c++) a[4 * vertices[i] + c] = halfs[3 * i + c];
+    }
   }
 
   addOverlay(object) {

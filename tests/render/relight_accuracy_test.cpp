@@ -325,7 +325,7 @@ TEST(RelightAccuracy, FurnishedRoomImageMatchesReference) {
   const RayTracer tracer(r.precomputed.mesh.positions, opaque, ids);
   const ShadedImages shaded = shade_vertices(
       camera,
-      {tracer, r.precomputed.mesh.positions, r.precomputed.mesh.triangles, albedo, e, {}, {}, {}},
+      {tracer, r.precomputed.mesh.positions, r.precomputed.mesh.triangles, albedo, e, {}, {}, {}, {}},
       4);
 
   const std::vector<PlacedLuminaire> luminaires = place_luminaires(r.scene);
@@ -398,6 +398,7 @@ TEST(RelightAccuracy, FurnishedRoomImageMatchesReference) {
        albedo,
        indirect,
        [&](Vec3 q, Vec3 n) { return luminaire_direct_irradiance(tracer, lights, q, n); },
+       {},
        {},
        {}},
       4);

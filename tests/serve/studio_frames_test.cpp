@@ -236,5 +236,29 @@ TEST(StudioFrames, ObjectValuesAreTheRelighterLight) {
   EXPECT_GT(floor_lux(hidden), floor_lux(shown)) << "the cabinet shadows the floor";
 }
 
+// RLGV: only the vertices with a luminance (not NaN) are listed, ascending, with their three
+// half floats after the indices; the header carries the frame, the count and the eye.
+TEST(StudioFrames, GlossyViewListsTheGlossyVerticesAndTheirLuminance) {
+  const float nan = std::nanf("");
+  const std::vector<float> luminance{nan, nan, nan, 1.5f, 2.0f, 4.0f, nan, nan, nan,
+                                     0.25f, 0.5f, 0.75f};
+  const std::string bytes = encode_glossy_view(7, {1, 2, 3}, 3.5f, luminance);
+  ASSERT_EQ(bytes.size(), 28u + 2 * 4 + 2 * 6);
+  EXPECT_EQ(bytes.substr(0, 4), "RLGV");
+  EXPECT_EQ(read<std::uint32_t>(bytes, 4), 7u);
+  EXPECT_EQ(read<std::uint32_t>(bytes, 8), 2u);
+  EXPECT_EQ(read<float>(bytes, 12), 3.5f);
+  EXPECT_EQ(read<float>(bytes, 16), 1.0f);
+  EXPECT_EQ(read<float>(bytes, 24), 3.0f);
+  EXPECT_EQ(read<std::uint32_t>(bytes, 28), 1u);
+  EXPECT_EQ(read<std::uint32_t>(bytes, 32), 3u);
+  EXPECT_EQ(half_to_float(read<std::uint16_t>(bytes, 36)), 1.5f);
+  EXPECT_EQ(half_to_float(read<std::uint16_t>(bytes, 40)), 4.0f);
+  EXPECT_EQ(half_to_float(read<std::uint16_t>(bytes, 42)), 0.25f);
+  EXPECT_EQ(half_to_float(read<std::uint16_t>(bytes, 46)), 0.75f);
+  // Nothing glossy: the header alone.
+  EXPECT_EQ(encode_glossy_view(1, {}, 0, std::vector<float>(6, nan)).size(), 28u);
+}
+
 }  // namespace
 }  // namespace relight

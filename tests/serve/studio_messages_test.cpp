@@ -75,6 +75,20 @@ TEST(StudioMessages, MalformedMessagesNameWhereAndKeepTheirSeq) {
   EXPECT_NE(refusal(R"({"type":"ping","extra":1})").first.find("extra"), std::string::npos);
 }
 
+// A client's eye for glossy shading (RLGV): three finite numbers, else refused at /eye.
+TEST(StudioMessages, ViewCarriesTheEye) {
+  const ClientMessage v = parse(R"({"type":"view","seq":4,"eye":[1.5,1.6,-2]})");
+  ASSERT_TRUE(std::holds_alternative<ViewRequest>(v.request));
+  EXPECT_EQ(std::get<ViewRequest>(v.request).eye, (Vec3{1.5, 1.6, -2}));
+  EXPECT_EQ(v.seq, 4u);
+  EXPECT_NE(refusal(R"({"type":"view","eye":[1,"a",2]})").first.find("message:/eye"),
+            std::string::npos);
+  EXPECT_NE(refusal(R"({"type":"view","eye":[1,2]})").first.find("/eye"), std::string::npos);
+  EXPECT_NE(refusal(R"({"type":"view"})").first.find("eye"), std::string::npos);
+  EXPECT_NE(refusal(R"({"type":"view","eye":[1,2,3],"up":[0,1,0]})").first.find("up"),
+            std::string::npos);
+}
+
 // The optimise panel's message: its targets parsed against the scene, bad ones refused with
 // their path inside the message.
 TEST(StudioMessages, OptimizeCarriesCheckedTargets) {

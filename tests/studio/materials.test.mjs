@@ -6,7 +6,9 @@
 // the state's materials.panel live: the server answers with an approximate frame ("final":
 // false, the edit's light reflected once) and then the final one, and the floor in front of the
 // panel gets darker (less light bounced off it), the final frame darker still than the first;
-// roughness from the panel reaches the state; Reset returns the scene's light.
+// roughness from the panel reaches the state; Reset returns the scene's light. Made metal, the
+// panel is shaded toward the eye (RLGV after the studio's `view`): its vertices show their own
+// luminance, not ρ/π E, and it changes when the camera moves.
 import test from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
@@ -110,4 +112,50 @@ test('roughness from the panel reaches the state; Reset returns the scene', asyn
   assert.deepEqual(shown.state.state, {});
   const back = floorLux(shown.frame);
   assert.ok(Math.abs(back - sceneLux) < 1e-4 * sceneLux, `after Reset ${back} lx, the scene ${sceneLux} lx`);
+});
+
+// The luminance the page shows at each of the last RLGV's vertices, and that view.
+async function glossyShown() {
+  return page.evaluate(() => {
+    const api = window.relightStudio;
+    const g = api.lastGlossyView;
+    const y = (rgb) => 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2];
+    return { view: g, shown: g.vertices.map((v) => y(api.shownRadiance(v))) };
+  });
+}
+
+test('a metal panel is shaded toward the eye, and its look follows the camera', async () => {
+  // Satin metal: the downlight's highlight spreads over several of the panel's vertices.
+  await page.evaluate(() => window.relightStudio.setState({
+    materials: { panel: { albedo: [0.9, 0.9, 0.9], metallic: 1, roughness: 0.4 } } }));
+  // The final frame of the edit, then the glossy view for it.
+  await page.waitForFunction(() => {
+    const api = window.relightStudio;
+    return api.lastState?.final === true && api.state().materials?.panel?.metallic === 1 &&
+           api.lastGlossyView?.frame === api.lastState.frame && api.lastGlossyView.count > 0;
+  });
+  const facing = await glossyShown();
+  const eye = facing.view.eye;
+  assert.ok(Math.abs(eye[2] - 3.9) < 1e-3, `shaded for the preset's eye: ${eye}`);
+  assert.ok(Math.min(...facing.shown) > 0, 'every glossy vertex shows light');
+
+  // The camera moves up and to the side: a new view, a new look (seen from the preset the
+  // downlight's mirror image lies on the panel's upper middle; from the side, above it).
+  await page.evaluate(() => {
+    const api = window.relightStudio;
+    api.camera.position.set(0.6, 2.3, 1.2);
+    api.camera.lookAt(2, 1.4, 0);
+    api.camera.updateMatrixWorld();
+    api.requestRender();
+  });
+  await page.waitForFunction(() => Math.abs(window.relightStudio.lastGlossyView.eye[0] - 0.6) < 1e-3);
+  const side = await glossyShown();
+  assert.deepEqual(side.view.vertices, facing.view.vertices);
+  const change = mean(facing.shown.map((a, i) => Math.abs(a - side.shown[i]) / Math.max(a, side.shown[i])));
+  const brightest = (s) => Math.max(...s.shown);
+  console.log(`metal panel: ${facing.view.count} glossy vertices; brightest ${brightest(facing).toFixed(1)} ` +
+              `cd/m² facing, ${brightest(side).toFixed(1)} from the side; per vertex ${(100 * change).toFixed(0)} % apart; ` +
+              `server ${side.view.serverMs.toFixed(1)} ms`);
+  assert.ok(change > 0.1, `the look follows the eye: ${change}`);
+  assert.deepEqual(await page.evaluate(() => window.relightStudio.clientErrors), []);
 });
