@@ -15,7 +15,11 @@
 // transfer_ms and bounce_ms), or with --materials a live material edit (the albedo of the
 // material on the most vertices changes 5 % a frame, a designer dragging a colour: the studio's
 // approximate frame, then its final one, engine/albedo_edit.h; approximate_ms, final_ms, and
-// first_final_ms for the first edit, solved from nothing), or with --aim every luminaire turned
+// first_approximate_ms, first_final_ms for the first edit, solved from nothing; --material NAME
+// edits that one, and
+// --roughness its roughness instead: the first edit makes it glossy at 0.3, then it moves
+// between 0.3 and 0.35, a designer dragging the slider — the glossy first bounce made again
+// for every luminaire, engine/glossy_first_bounce.h), or with --aim every luminaire turned
 // 1° about its C0 axis, back and forth (its exact direct light, its transfer rotated and, on
 // glossy surfaces, its first glossy bounce made again); only the kind of source that changed
 // is summed again (runtime/relighter.h). With --optimize TARGETS.json: `relight optimize` timed
@@ -50,6 +54,8 @@ struct BenchArgs {
   bool objects = false;
   std::string object;  // with objects: move only this one
   bool materials = false;
+  std::string material;    // with materials: edit this one (else the most used)
+  bool roughness = false;  // with materials: edit its roughness, not its albedo
   bool aim = false;
   std::string optimize;  // TARGETS.json: time `relight optimize` instead
 };
@@ -166,7 +172,19 @@ int run_bench(const BenchArgs& args) {
     fail_input(args.rlt,
                "--materials needs a file with the vertices' materials (precompute again)");
   }
-  const std::size_t edited = args.materials ? most_used_material(relit.transfer()) : 0;
+  if ((!args.material.empty() || args.roughness) && !args.materials) {
+    fail_input(args.rlt, "--material and --roughness need --materials");
+  }
+  std::size_t edited = args.materials ? most_used_material(relit.transfer()) : 0;
+  if (!args.material.empty()) {
+    const std::vector<Material>& materials = relit.scene().materials;
+    const auto named = std::find_if(materials.begin(), materials.end(),
+                                    [&](const Material& m) { return m.name == args.material; });
+    if (named == materials.end() || named->portal) {
+      fail_input(args.rlt, "no material named \"" + args.material + "\" to edit");
+    }
+    edited = static_cast<std::size_t>(named - materials.begin());
+  }
   std::vector<bool> moving(state.objects.size(), args.object.empty());
   if (!args.object.empty()) {
     if (!args.objects) fail_input(args.rlt, "--object needs --objects");
@@ -185,7 +203,12 @@ int run_bench(const BenchArgs& args) {
   // A material edit's two frames: its light reflected once, then converged.
   const auto edit_material = [&](int i) {
     Material& m = state.materials.at(edited);
-    m.albedo = m.albedo * (i % 2 == 0 ? 0.95 : 1 / 0.95);
+    if (args.roughness) {
+      m.glossy = true;
+      m.roughness = i % 2 == 0 ? 0.3 : 0.35;
+    } else {
+      m.albedo = m.albedo * (i % 2 == 0 ? 0.95 : 1 / 0.95);
+    }
     const auto start_edit = std::chrono::steady_clock::now();
     relighter.set_material_bounces(0);
     relighter.set_state(state);
@@ -198,9 +221,13 @@ int run_bench(const BenchArgs& args) {
         std::chrono::duration<double, std::milli>(approximate - start_edit).count());
     final_ms.push_back(std::chrono::duration<double, std::milli>(done - start_edit).count());
   };
-  double first_final_ms = 0;
+  double first_approximate_ms = 0, first_final_ms = 0;
   if (args.materials) {
+    // As the studio does at start (serve/studio_server.cpp): the BRDF's albedo table is built
+    // before the first edit can need it.
+    prepare_metallic_roughness_tables();
     edit_material(0);  // the first edit: its light solved from nothing
+    first_approximate_ms = approximate_ms.front();
     first_final_ms = final_ms.front();
     approximate_ms.clear();
     final_ms.clear();
@@ -334,8 +361,10 @@ int run_bench(const BenchArgs& args) {
   }
   if (args.materials) {
     line["material"] = relit.scene().materials[edited].name;
+    line["edit"] = args.roughness ? "roughness" : "albedo";
     line["approximate_ms"] = median(approximate_ms);
     line["final_ms"] = median(final_ms);
+    line["first_approximate_ms"] = first_approximate_ms;
     line["first_final_ms"] = first_final_ms;
   }
   std::cout << line.dump() << "\n";
@@ -357,6 +386,10 @@ void add_bench_command(CLI::App& app, Action& action) {
   cmd->add_option("--object", args->object, "with --objects: move only this object");
   cmd->add_flag("--materials", args->materials,
                 "edit the albedo of the most used material each frame (approximate and final)");
+  cmd->add_option("--material", args->material,
+                  "with --materials: edit this material (default: the one on the most vertices)");
+  cmd->add_flag("--roughness", args->roughness,
+                "with --materials: edit the roughness (made glossy first) instead of the albedo");
   cmd->add_flag("--aim", args->aim,
                 "turn every luminaire 1 degree about its C0 axis each frame (direct, glossy)");
   cmd->add_option("--optimize", args->optimize,

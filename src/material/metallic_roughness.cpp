@@ -190,6 +190,8 @@ void for_each_reflection_node(Vec3 v, double alpha, int points,
   }
 }
 
+void prepare_metallic_roughness_tables() { (void)SpecularAlbedoTable::get(); }
+
 Rgb specular_directional_albedo(const MetallicRoughness& m, double n_dot_v) {
   const auto [a, b] = SpecularAlbedoTable::get().at(n_dot_v, m.roughness);
   const Rgb f0 = f0_of(m);

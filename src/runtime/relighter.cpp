@@ -92,6 +92,7 @@ Relighter::Relighter(TransferView transfer, const Scene& scene, const RelighterS
 
 void Relighter::make_glossy_bounce(std::span<const Material> materials,
                                    std::span<const float> albedo) {
+  glossy_stale_ = false;
   const std::vector<std::uint32_t>& material_of = transfer_.scene.vertex_material;
   GlossyMaterials glossy = glossy_materials(materials);
   if (glossy.empty() || !runtime_ || !runtime_->can_bounce() || material_of.empty()) {
@@ -197,8 +198,14 @@ void Relighter::set_materials(const std::vector<Material>& materials) {
   edit_dirty_ = true;
   // The glossy surfaces' first bounce as edited: reflected by the edited BRDFs, less what the
   // edited albedo reflects diffusely, bounced by the edited room (engine/glossy_first_bounce.h).
+  // An approximate frame keeps the last one (the edited BRDFs reflect as their diffuse
+  // stand-in meanwhile); the converged frame makes it (relight()).
   if (!glossy_materials(materials).empty() || glossy_bounce_) {
-    make_glossy_bounce(materials, vertex_albedo_);
+    if (material_bounces_ >= 0) {
+      glossy_stale_ = true;
+    } else {
+      make_glossy_bounce(materials, vertex_albedo_);
+    }
     glossy_dirty_ = true;
   }
   if (objects_) {
@@ -253,6 +260,12 @@ void Relighter::update_objects() {
 void Relighter::relight(std::span<float> out, bool include_direct) {
   const std::size_t n = transfer_.receivers;
   if (out.size() != 3 * n) throw std::invalid_argument("Relighter: output size mismatch");
+  if (glossy_stale_ && material_bounces_ < 0) {
+    // A material edit's first frame kept the glossy first bounce from before it: now the
+    // edited one.
+    make_glossy_bounce(state_.materials, vertex_albedo_);
+    glossy_dirty_ = true;
+  }
   if (emitters_) emitters_->update();  // its sampling and bounce, if its state changed
   if (!objects_) {
     if (!albedo_edit_) {

@@ -80,7 +80,7 @@ class Relighter {
   // the scene and the states so far allow it).
   bool sensors_only() const { return sensors_only_; }
   // Whether the last relight() gave the edited materials' converged light (true without edits).
-  bool material_edit_final() const { return edit_final_; }
+  bool material_edit_final() const { return edit_final_ && !glossy_stale_; }
   // What each vertex reflects under the state's materials, 3 per vertex (ρE/π shading).
   std::span<const float> vertex_albedo() const { return vertex_albedo_; }
 
@@ -170,6 +170,9 @@ class Relighter {
   std::vector<float> edit_total_, edit_delta_;  // 3 per receiver
   bool edit_dirty_ = false, edit_final_ = true, edit_solved_ = false;
   bool glossy_dirty_ = false;  // the glossy first bounce was made again since the last relight
+  // A material edit's first frame keeps the glossy first bounce of the materials before it
+  // (made again, a bounce solve per luminaire, for the converged frame).
+  bool glossy_stale_ = false;
   int material_bounces_ = -1;
   bool objects_dirty_ = true;    // placements or E0 changed since the objects' last update
   bool warm_sun_bounce_ = true;  // RelighterSettings::warm_sun_bounce

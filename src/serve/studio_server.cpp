@@ -14,6 +14,7 @@
 #include "common/input_error.h"
 #include "design/optimize.h"
 #include "light/distribution.h"
+#include "material/metallic_roughness.h"
 #include "render/relit_scene_image.h"
 #include "runtime/annual_daylight.h"
 #include "runtime/relit_scene.h"
@@ -151,6 +152,9 @@ struct StudioServer::Impl {
   }
 
   void work() {
+    // The glossy BRDF's albedo table, which a designer's first roughness or metallic edit
+    // needs: built now, while the first clients connect (0.9 s once), not in that edit's frame.
+    prepare_metallic_roughness_tables();
     LightingState last_good = shown.state;
     nlohmann::json shown_document = nlohmann::json::object();  // the worker's own copy
     std::uint32_t frame_number = shown.frame_number;           // only the worker advances it

@@ -492,6 +492,28 @@ TEST_F(TransferCommands, BenchAimTimesALuminaireTurn) {
                          "at a time");
 }
 
+// --materials --roughness --material NAME drags that material's roughness (made glossy by the
+// first edit): both frames timed, the first edit's too; the flags need --materials and a
+// material the scene has.
+TEST_F(TransferCommands, BenchMaterialsTimesARoughnessEdit) {
+  const auto r =
+      run_relight("bench " + quoted(rlt_) + " --materials --roughness --material grey --frames 2");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j.at("mode"), "materials");
+  EXPECT_EQ(j.at("edit"), "roughness");
+  EXPECT_EQ(j.at("material"), "grey");
+  for (const char* key : {"approximate_ms", "final_ms", "first_approximate_ms", "first_final_ms"}) {
+    EXPECT_GT(j.at(key).get<double>(), 0) << key;
+  }
+  EXPECT_LE(j.at("approximate_ms").get<double>(), j.at("final_ms").get<double>());
+  expect_input_error(run_relight("bench " + quoted(rlt_) + " --roughness --frames 1"),
+                     rlt_.string() + ": --material and --roughness need --materials");
+  expect_input_error(
+      run_relight("bench " + quoted(rlt_) + " --materials --material nowhere --frames 1"),
+      rlt_.string() + ": no material named \"nowhere\" to edit");
+}
+
 TEST_F(TransferCommands, PrecomputeOntoUnwritablePathIsBadInput) {
   // Running as root, permissions do not stop a write: use paths no one can create.
   const auto missing = dir_->path() / "no-such-folder" / "out.rlt";
