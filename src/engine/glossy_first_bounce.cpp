@@ -64,7 +64,8 @@ void GlossyFirstBounce::respond(std::span<const float> dir_x, std::span<const fl
     throw std::invalid_argument("GlossyFirstBounce: reflected light and direct light disagree");
   }
   const MirrorReflection* mirrors = mirror != nullptr ? mirrors_ : nullptr;
-  if (mirror != nullptr && mirror->paths.size() != mirror->intensity.size()) {
+  if (mirror != nullptr && ((mirror->channels != 1 && mirror->channels != 3) ||
+                            mirror->paths.size() * mirror->channels != mirror->intensity.size())) {
     throw std::invalid_argument("GlossyFirstBounce: one intensity per mirror path expected");
   }
   // c_r = Σ_{j glossy} G_rj (π f_j(l_j, ω_jr) D_j − ρh_j D'_j).
@@ -102,9 +103,11 @@ void GlossyFirstBounce::respond(std::span<const float> dir_x, std::span<const fl
     for (std::size_t k = 0; k < mirror->paths.size(); ++k) {
       const MirrorPath& path = mirror->paths[k];
       const std::int32_t g = glossy_of_.at(path.vertex);
-      if (path.receiver >= rows || g < 0 || mirror->intensity[k] <= 0) continue;
+      const float* i = &mirror->intensity[k * mirror->channels];
+      const Rgb intensity = mirror->channels == 1 ? Rgb{i[0], i[0], i[0]} : Rgb{i[0], i[1], i[2]};
+      if (path.receiver >= rows || g < 0 || max_component(intensity) <= 0) continue;
       const Rgb e = specular_directional_albedo(glossy_[static_cast<std::size_t>(g)], path.cos_in) *
-                    (static_cast<double>(mirror->intensity[k]) * path.factor);
+                    intensity * path.factor;
       float* c = &once[3 * std::size_t{path.receiver}];
       c[0] += static_cast<float>(e.r);
       c[1] += static_cast<float>(e.g);

@@ -24,7 +24,8 @@
 // Near-mirror vertices (engine/mirror_reflection.h): with the light's mirror paths, a vertex on
 // a mirror plane contributes only its diffuse layer per entry, π f_d(l_j, ω_jr) D_j − ρh_j D'_j,
 // and the specular lobe reaches the receivers as the light's image instead,
-//     c_r += Σ_paths I_k · factor_k · E_s,k(cos θ_y)     (the paths of receiver r);
+//     c_r += Σ_paths I_k · factor_k · E_s,k(cos θ_y)     (the paths of receiver r; for the sun
+//     I_k is the normal illuminance at the mirror, engine/mirror_reflection.h);
 // without them (the sun's light) such a vertex reflects by its whole BRDF as any other.
 // Light arriving at a glossy vertex from elsewhere (interreflections, windows) still leaves
 // it as from a diffuse surface of albedo ρh. Pinned by tests/engine/glossy_first_bounce_test.cpp
@@ -44,10 +45,13 @@
 
 namespace relight {
 
-// A light's paths through the near-mirror planes and its intensity (cd) along each.
+// A light's paths through the near-mirror planes and, along each, its intensity (cd) for a
+// point light or its normal illuminance at y (lx) for the sun: `channels` (1, or 3 for RGB)
+// values per path.
 struct MirrorLight {
   std::span<const MirrorPath> paths;
-  std::span<const float> intensity;  // per path
+  std::span<const float> intensity;
+  std::size_t channels = 1;
 };
 
 class GlossyFirstBounce {

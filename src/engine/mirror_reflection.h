@@ -3,6 +3,7 @@
 // of which both p and receiver x lie, the light's image p' reaches x along the segment x–p'
 // where it first meets the plane, at y, when nothing blocks x–y or y–p:
 //     E_x = I(p → y) · cos θ_x / |x − p'|² · E_s(cos θ_y),
+// (for the sun, parallel light of normal illuminance E_⊥: E_x = E_⊥(y) · cos θ_x · E_s(cos θ_y)),
 // I the light's intensity toward y, θ_x the angle of the arrival at x, |x − p'| the unfolded
 // path, E_s the mirror's specular directional albedo at the incidence θ_y (for a perfect
 // mirror the Fresnel factor F(θ_y); material/metallic_roughness.h) — the image-source form
@@ -31,9 +32,10 @@ namespace relight {
 struct MirrorPath {
   std::uint32_t receiver = 0;
   std::uint32_t vertex = 0;   // the mirror's vertex nearest y: whose BRDF reflects
-  float emit[3] = {0, 0, 0};  // unit direction from the light toward y (world)
-  float factor = 0;           // cos θ_x / |x − p'|², 1/m²
-  float cos_in = 0;           // cos θ_y, the light's incidence on the mirror
+  float emit[3] = {0, 0, 0};  // a point light's unit direction toward y (world)
+  float at[3] = {0, 0, 0};    // y, where the path meets the mirror
+  float factor = 0;  // cos θ_x / |x − p'|² (1/m²) for a point light, cos θ_x for the sun
+  float cos_in = 0;  // cos θ_y, the light's incidence on the mirror
 };
 
 class MirrorReflection {
@@ -51,12 +53,21 @@ class MirrorReflection {
 
   // The paths from a light at `light` to every receiver, receiver by receiver.
   std::vector<MirrorPath> trace(Vec3 light) const;
+  // The paths of parallel light arriving from unit direction `toward` (from the surfaces to
+  // the light: the sun), receiver by receiver. Whether the light reaches y (the window, what
+  // shades it) is the caller's: E_x = E_⊥(y) cos θ_x E_s(cos θ_y), E_⊥ the light's normal
+  // illuminance at y.
+  std::vector<MirrorPath> trace_parallel(Vec3 toward) const;
 
  private:
   const RuntimeScene* scene_;
   std::vector<MirrorPlane> planes_;
   std::vector<std::int32_t> plane_of_;  // per mesh triangle id
   std::vector<std::uint8_t> vertex_;    // per vertex: on a plane's triangle
+
+  // The path to receiver r through plane p along w (unit, from r toward the image) within
+  // `span` (m), if its first hit is the plane's: fills receiver, vertex, at.
+  bool reaches_plane(std::size_t r, std::size_t p, Vec3 w, double span, MirrorPath& out) const;
 };
 
 }  // namespace relight

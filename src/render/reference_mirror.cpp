@@ -30,6 +30,14 @@ std::optional<MirrorLobe> mirror_lobe(const MirrorPlane& plane, double alpha, Ve
   return lobe;
 }
 
+std::optional<MirrorLobe> mirror_sun_lobe(const MirrorPlane& plane, double alpha, Vec3 x,
+                                          Vec3 toward, double radius) {
+  const double cos_in = dot(plane.normal, toward);
+  if (plane.height(x) <= 1e-6 || cos_in <= 0) return std::nullopt;
+  const Frame frame = frame_from_normal(normalize(toward - plane.normal * (2 * cos_in)));
+  return MirrorLobe{frame.n, frame.t, frame.b, std::max(2 * alpha + radius, kMinWidth)};
+}
+
 Vec3 sample_mirror_lobe(const MirrorLobe& lobe, double u1, double u2) {
   // |s|² = β² u / (1 − u): the inverse of P(|s| < r) = r² / (β² + r²).
   const double u = std::min(u1, 1 - 1e-12);

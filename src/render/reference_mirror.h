@@ -14,7 +14,9 @@
 //                                             δ/s_x + δ/s_light),
 // s_x = |x − y0|, s_light = |y0 − p|, y0 where x–p' crosses the plane; density per steradian
 //     q(ω) = p_s(s) / cos³ φ,  p_s(s) = 1 / (π β² (1 + |s|²/β²)²),  φ the angle from d0.
-// Where that ray meets the plane's triangles at y, the light the mirror reflects toward x is
+// The sun (parallel light) likewise, about its mirrored direction with width 2α plus the disc's
+// angular radius. Where that ray meets the plane's triangles at y, the light the mirror
+// reflects toward x is
 // f(l_y, −ω) I cos θ_y / |p − y|² by next-event estimation at y; x counts it with cos θ_x / q
 // and the power heuristic against the cosine sampling that continues the path (Veach 1997
 // §9.2.4), whose own next event at y takes the complementary weight
@@ -38,6 +40,13 @@ struct MirrorLobe {
 // The lobe about the image of a light at `light` in `plane` (material roughness α² = alpha)
 // seen from x; none unless x and the light both lie in front of the plane.
 std::optional<MirrorLobe> mirror_lobe(const MirrorPlane& plane, double alpha, Vec3 x, Vec3 light);
+
+// The lobe about the sun's image in `plane` seen from x (the sun toward unit `toward`, of
+// angular radius `radius`): axis the mirrored direction, width 2α + radius (parallel light: y
+// moving turns only x's direction, the half vector by half as much); none unless x lies in
+// front of the plane and the sun above it.
+std::optional<MirrorLobe> mirror_sun_lobe(const MirrorPlane& plane, double alpha, Vec3 x,
+                                          Vec3 toward, double radius);
 
 // A direction drawn from the lobe with two uniform numbers in [0, 1).
 Vec3 sample_mirror_lobe(const MirrorLobe& lobe, double u1, double u2);

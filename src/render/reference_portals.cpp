@@ -297,18 +297,26 @@ std::int32_t escape_portal(const ExteriorView& view, const Ray& ray, std::uint64
 }
 
 Rgb portal_illuminance(const ExteriorView& view, Vec3 origin, Vec3 n, Pcg32& rng,
-                       std::uint64_t& rays, const NextEventWeight& weight) {
+                       std::uint64_t& rays, const NextEventWeight& weight,
+                       const std::function<double(std::size_t)>& sun_weight) {
   Rgb e;
   for (std::size_t p = 0; p < view.portals.portals.size(); ++p) {
     if (view.portals.portals[p].area() <= 0) continue;
     e += environment_sample(view, p, origin, n, rng, rays, weight);
-    e += sun_sample(view, p, origin, n, rng, rays, weight);
+    const Rgb sun = sun_sample(view, p, origin, n, rng, rays, weight);
+    e += sun_weight ? sun * sun_weight(p) : sun;
   }
   return e;
 }
 
+Rgb portal_sun_illuminance(const ExteriorView& view, std::size_t p, Vec3 origin, Vec3 n, Pcg32& rng,
+                           std::uint64_t& rays, const NextEventWeight& weight) {
+  if (view.portals.portals[p].area() <= 0) return {};
+  return sun_sample(view, p, origin, n, rng, rays, weight);
+}
+
 Rgb escaped_radiance(const ExteriorView& view, const Ray& ray, double brdf_pdf, Pcg32& rng,
-                     std::uint64_t& rays) {
+                     std::uint64_t& rays, const std::function<double(std::size_t)>& sun_weight) {
   ++rays;
   if (view.traced.opaque.occluded(ray)) return {};
   ++rays;
@@ -329,7 +337,8 @@ Rgb escaped_radiance(const ExteriorView& view, const Ray& ray, double brdf_pdf, 
   if (sun && !portal.frost && dot(w, sun->direction) >= sun->cos_angular_radius) {
     ++rays;
     if (!(portal.exterior && portal.exterior->tracer.occluded({ray.origin, w}))) {
-      const double disc = sun->luminance * power_heuristic(brdf_pdf, 1 / sun->solid_angle);
+      const double disc = sun->luminance * power_heuristic(brdf_pdf, 1 / sun->solid_angle) *
+                          (sun_weight ? sun_weight(static_cast<std::size_t>(index)) : 1.0);
       l += portal.tint * Rgb{disc, disc, disc};
     }
   }

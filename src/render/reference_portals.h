@@ -26,6 +26,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -126,15 +127,24 @@ std::int32_t escape_portal(const ExteriorView& view, const Ray& ray, std::uint64
 // the continuous environment and, for a sky with a sun, one sun-cone sample (see above).
 // With a glossy `weight`, the luminance a glossy surface reflects toward its viewer from
 // them, each sample weighted against BRDF sampling (render/reference_weight.h).
+// With `sun_weight`, each portal's sun-cone sample is weighted by sun_weight(portal) too (a
+// second strategy found the same light: render/reference_mirror.h).
 Rgb portal_illuminance(const ExteriorView& view, Vec3 origin, Vec3 n, Pcg32& rng,
-                       std::uint64_t& rays, const NextEventWeight& weight = {});
+                       std::uint64_t& rays, const NextEventWeight& weight = {},
+                       const std::function<double(std::size_t)>& sun_weight = {});
+
+// Portal p's sun-cone sample alone (nothing for a portal without a sun or with frosted glass).
+Rgb portal_sun_illuminance(const ExteriorView& view, std::size_t p, Vec3 origin, Vec3 n, Pcg32& rng,
+                           std::uint64_t& rays, const NextEventWeight& weight = {});
 
 // What a continuation ray drawn by BRDF sampling with density `brdf_pdf` (from a glossy
 // surface) receives from the exterior when it leaves through a portal: the glass's
 // luminance times the BRDF strategy's weight against the area sample of that portal, and the
 // sun disc's (clear glass) against the sun-cone sample (render/reference_weight.h); nothing
 // when it meets an opaque surface or leaves through no portal.
+// With `sun_weight`, the sun disc's part is weighted by sun_weight(portal) too.
 Rgb escaped_radiance(const ExteriorView& view, const Ray& ray, double brdf_pdf, Pcg32& rng,
-                     std::uint64_t& rays);
+                     std::uint64_t& rays,
+                     const std::function<double(std::size_t)>& sun_weight = {});
 
 }  // namespace relight

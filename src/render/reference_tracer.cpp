@@ -83,7 +83,14 @@ struct MirrorArrival {
   // The cosine strategy's power-heuristic weight for the light at `light`.
   double weight(Vec3 light) const {
     if (plane == nullptr) return 1;
-    const std::optional<MirrorLobe> lobe = mirror_lobe(*plane, alpha, from, light);
+    return weight(mirror_lobe(*plane, alpha, from, light));
+  }
+  // ... and for a sun.
+  double sun_weight(const SunDisc& sun) const {
+    if (plane == nullptr) return 1;
+    return weight(mirror_sun_lobe(*plane, alpha, from, sun.direction, sun.angular_radius));
+  }
+  double weight(const std::optional<MirrorLobe>& lobe) const {
     return lobe ? power_heuristic(pdf, mirror_lobe_pdf(*lobe, direction)) : 1;
   }
 };
@@ -138,10 +145,23 @@ bool trace_surface(PathContext& ctx, const Ray& ray, SurfaceHit& out) {
 }
 
 // Daylight through the portals at a surface point (render/reference_portals.h).
-Rgb daylight_illuminance(PathContext& ctx, Vec3 p, Vec3 n, const NextEventWeight& weight = {}) {
+// Per portal, the cosine strategy's weight for its sun at a glossy point reached as `arrival`
+// says; none without a mirror plane.
+std::function<double(std::size_t)> sun_weights(const ReferencePortals& portals,
+                                               const MirrorArrival& arrival) {
+  if (arrival.plane == nullptr) return {};
+  return [&portals, arrival](std::size_t q) {
+    const std::optional<SunDisc>& sun = portals.portals[q].environment.sun();
+    return sun ? arrival.sun_weight(*sun) : 1.0;
+  };
+}
+
+Rgb daylight_illuminance(PathContext& ctx, Vec3 p, Vec3 n, const NextEventWeight& weight = {},
+                         const MirrorArrival& arrival = {}) {
   if (ctx.ref.portals.portals.empty()) return {};
   const ExteriorView view{ctx.ref.mesh, ctx.ref.traced, ctx.ref.portals};
-  return portal_illuminance(view, offset_from_surface(p, n), n, ctx.rng, ctx.rays, weight);
+  return portal_illuminance(view, offset_from_surface(p, n), n, ctx.rng, ctx.rays, weight,
+                            sun_weights(ctx.ref.portals, arrival));
 }
 
 // Near-field emitters at a surface point (render/reference_emitters.h).
@@ -157,7 +177,7 @@ Rgb glossy_next_events(PathContext& ctx, const SurfaceHit& s, Vec3 v,
                        const MirrorArrival& arrival = {}) {
   const NextEventWeight weight{s.glossy ? &*s.glossy : nullptr, s.normal, v};
   return direct_illuminance(ctx, s.position, s.normal, Sources::kAll, weight, arrival) +
-         daylight_illuminance(ctx, s.position, s.normal, weight) +
+         daylight_illuminance(ctx, s.position, s.normal, weight, arrival) +
          emitters_illuminance(ctx, s.position, s.normal, weight);
 }
 
@@ -178,10 +198,12 @@ GlossyStep glossy_step(PathContext& ctx, const SurfaceHit& s, Vec3 v) {
 }
 
 // What a ray drawn by BRDF sampling (density pdf) that met no surface brings from outside.
-Rgb escaped(PathContext& ctx, const Ray& ray, double pdf) {
+// With `arrival` (how the path reached the glossy point the ray left), the sun disc's part is
+// weighted against the mirror lobe at the point before it.
+Rgb escaped(PathContext& ctx, const Ray& ray, double pdf, const MirrorArrival& arrival = {}) {
   if (ctx.ref.portals.portals.empty()) return {};
   const ExteriorView view{ctx.ref.mesh, ctx.ref.traced, ctx.ref.portals};
-  return escaped_radiance(view, ray, pdf, ctx.rng, ctx.rays);
+  return escaped_radiance(view, ray, pdf, ctx.rng, ctx.rays, sun_weights(ctx.ref.portals, arrival));
 }
 
 Vec3 cosine_direction(Vec3 n, Pcg32& rng) {
@@ -189,13 +211,17 @@ Vec3 cosine_direction(Vec3 n, Pcg32& rng) {
   return frame_from_normal(n).to_world(sample_cosine_hemisphere(u1, u2));
 }
 
+// Cone samples of a sun at a near-mirror point found by the lobe about its image: its lobe is
+// as narrow as the disc, so a few (each a pair) keep the estimate's noise down.
+constexpr int kSunSamplesAtMirror = 8;
+
 double mirror_alpha(const ReferenceScene& ref, const MirrorPlane& plane) {
   const double r = ref.glossy.at(static_cast<std::size_t>(plane.group)).roughness;
   return std::max(r * r, 1e-4);  // as the BRDF clamps it
 }
 
-// The luminaires' light reflected by the near-mirror planes onto a surface point, sampled
-// about each luminaire's image (render/reference_mirror.h) and weighted against the cosine
+// The luminaires' and suns' light reflected by the near-mirror planes onto a surface point,
+// sampled about each one's image (render/reference_mirror.h) and weighted against the cosine
 // sampling of the path's continuation from the point.
 Rgb mirror_illuminance(PathContext& ctx, Vec3 p, Vec3 n) {
   const ReferenceScene& ref = ctx.ref;
@@ -226,6 +252,37 @@ Rgb mirror_illuminance(PathContext& ctx, Vec3 p, Vec3 n) {
       e += metallic_roughness_brdf(*s.glossy, s.normal, l, -w) * light *
            (cos_x / q * power_heuristic(q, cos_x / kPi));
     }
+    // The suns behind clear glass, each by its cone sample at y (weighted there against the
+    // mirror's BRDF sampling, as the cosine strategy's next event is).
+    const ExteriorView view{ref.mesh, ref.traced, ref.portals};
+    for (std::size_t q = 0; q < ref.portals.portals.size(); ++q) {
+      const ReferencePortal& portal = ref.portals.portals[q];
+      const std::optional<SunDisc>& sun = portal.environment.sun();
+      if (!sun || portal.frost) continue;
+      const std::optional<MirrorLobe> lobe =
+          mirror_sun_lobe(plane, alpha, origin, sun->direction, sun->angular_radius);
+      if (!lobe) continue;
+      const double u1 = ctx.rng.next_double(), u2 = ctx.rng.next_double();
+      const Vec3 w = sample_mirror_lobe(*lobe, u1, u2);
+      const double cos_x = dot(n, w);
+      if (cos_x <= 0) continue;
+      SurfaceHit s;
+      if (!trace_surface(ctx, {origin, w}, s) || s.mirror != static_cast<std::int32_t>(k) ||
+          !s.glossy) {
+        continue;
+      }
+      // At y the disc is integrated by cone samples alone (no BRDF sample competes: the
+      // cosine strategy's own BRDF continuation takes its weight at x's side).
+      Rgb l;
+      const Vec3 at_y = offset_from_surface(s.position, s.normal);
+      const NextEventWeight reflect{&*s.glossy, s.normal, -w, false};
+      for (int i = 0; i < kSunSamplesAtMirror; ++i) {
+        l += portal_sun_illuminance(view, q, at_y, s.normal, ctx.rng, ctx.rays, reflect);
+      }
+      l = l / kSunSamplesAtMirror;
+      const double pdf = mirror_lobe_pdf(*lobe, w);
+      e += l * (cos_x / pdf * power_heuristic(pdf, cos_x / kPi));
+    }
   }
   return e;
 }
@@ -245,16 +302,17 @@ Rgb incident_luminance(PathContext& ctx, Vec3 origin, Vec3 dir, Continuation how
   Ray ray{origin, dir};
   double pdf = how.brdf_pdf;
   Vec3 from_normal = how.normal;
+  MirrorArrival arrival;  // how the path reached the last glossy point
   for (int depth = 0; depth < ctx.max_depth; ++depth) {
     SurfaceHit s;
     if (!trace_surface(ctx, ray, s)) {
-      if (pdf > 0) result += throughput * escaped(ctx, ray, pdf);
+      if (pdf > 0) result += throughput * escaped(ctx, ray, pdf, arrival);
       break;
     }
+    arrival = {};
     if (s.glossy) {
       // L = Σ next events (weighted) + f cos / p · L_in(l'), l' by BRDF sampling.
       const Vec3 v = -ray.direction;
-      MirrorArrival arrival;
       if (pdf == 0 && s.mirror >= 0) {  // reached by cosine sampling
         const MirrorPlane& plane = ctx.ref.mirror_planes[static_cast<std::size_t>(s.mirror)];
         arrival = {&plane, mirror_alpha(ctx.ref, plane), ray.origin, ray.direction,

@@ -35,13 +35,16 @@ inline constexpr double kDeltaPdf = std::numeric_limits<double>::infinity();
 struct NextEventWeight {
   const MetallicRoughness* glossy = nullptr;  // null: illuminance (weight 1)
   Vec3 n, v;                                  // with glossy: the surface normal and the viewer
+  // False where no BRDF sample continues the path to compete (render/reference_mirror.h):
+  // f alone.
+  bool competes = true;
 
   // The weight of a sample toward l drawn with density light_pdf (kDeltaPdf: a point, or a
   // light that continuation rays never reach).
   Rgb operator()(Vec3 l, double light_pdf) const {
     if (glossy == nullptr) return {1, 1, 1};
     const Rgb f = metallic_roughness_brdf(*glossy, n, l, v);
-    if (light_pdf == kDeltaPdf) return f;
+    if (light_pdf == kDeltaPdf || !competes) return f;
     return f * power_heuristic(light_pdf, metallic_roughness_pdf(*glossy, n, l, v));
   }
 };

@@ -249,7 +249,29 @@ void PortalSetLighting::respond_glossy(const SunGeometry& geometry,
     const Vec3 s = sun.disc.direction;
     const std::vector<float> dx(n, static_cast<float>(-s.x)), dy(n, static_cast<float>(-s.y)),
         dz(n, static_cast<float>(-s.z));
-    glossy_->respond(dx, dy, dz, direct, response);
+    const MirrorReflection* mirrors = glossy_->mirrors();
+    if (mirrors == nullptr) {
+      glossy_->respond(dx, dy, dz, direct, response);
+    } else {
+      // The sun's image in the near-mirror planes (engine/mirror_reflection.h): its normal
+      // illuminance where each path meets the mirror, through the glass and past what shades it.
+      const std::vector<MirrorPath> paths = mirrors->trace_parallel(s);
+      std::vector<float> normal(3 * paths.size());
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, paths.size(), 256), [&](const auto& r) {
+        for (std::size_t k = r.begin(); k != r.end(); ++k) {
+          const MirrorPath& path = paths[k];
+          const Rgb e =
+              sun_irradiance(geometry, std::span(&sun, 1), {path.at[0], path.at[1], path.at[2]},
+                             runtime_->normal(path.vertex), false) /
+              static_cast<double>(path.cos_in);
+          normal[3 * k] = static_cast<float>(e.r);
+          normal[3 * k + 1] = static_cast<float>(e.g);
+          normal[3 * k + 2] = static_cast<float>(e.b);
+        }
+      });
+      const MirrorLight mirror{paths, normal, 3};
+      glossy_->respond(dx, dy, dz, direct, response, &mirror);
+    }
     for (std::size_t i = 0; i < 3 * n; ++i) sun_glossy_[i] += response[i];
   }
 }
