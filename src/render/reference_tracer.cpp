@@ -220,6 +220,32 @@ double mirror_alpha(const ReferenceScene& ref, const MirrorPlane& plane) {
   return std::max(r * r, 1e-4);  // as the BRDF clamps it
 }
 
+// A direction drawn from `lobe` (about a light's image in plane k, seen from `origin` on a
+// surface of normal n) that meets the plane's glossy triangles: where, which way, and what the
+// light found there counts with at x — cos θ_x / q, weighted against the cosine sampling.
+struct ImageSample {
+  SurfaceHit hit;
+  Vec3 w;
+  double weight = 0;
+};
+
+std::optional<ImageSample> sample_image(PathContext& ctx, const std::optional<MirrorLobe>& lobe,
+                                        Vec3 origin, Vec3 n, std::size_t k) {
+  if (!lobe) return std::nullopt;
+  const double u1 = ctx.rng.next_double(), u2 = ctx.rng.next_double();
+  const Vec3 w = sample_mirror_lobe(*lobe, u1, u2);
+  const double cos_x = dot(n, w);
+  if (cos_x <= 0) return std::nullopt;
+  ImageSample out{{}, w, 0};
+  if (!trace_surface(ctx, {origin, w}, out.hit) || out.hit.mirror != static_cast<std::int32_t>(k) ||
+      !out.hit.glossy) {
+    return std::nullopt;
+  }
+  const double q = mirror_lobe_pdf(*lobe, w);
+  out.weight = cos_x / q * power_heuristic(q, cos_x / kPi);
+  return out;
+}
+
 // The luminaires' and suns' light reflected by the near-mirror planes onto a surface point,
 // sampled about each one's image (render/reference_mirror.h) and weighted against the cosine
 // sampling of the path's continuation from the point.
@@ -227,61 +253,41 @@ Rgb mirror_illuminance(PathContext& ctx, Vec3 p, Vec3 n) {
   const ReferenceScene& ref = ctx.ref;
   if (ref.mirror_planes.empty()) return {};
   const Vec3 origin = offset_from_surface(p, n);
+  const ExteriorView view{ref.mesh, ref.traced, ref.portals};
   Rgb e;
   for (std::size_t k = 0; k < ref.mirror_planes.size(); ++k) {
     const MirrorPlane& plane = ref.mirror_planes[k];
     const double alpha = mirror_alpha(ref, plane);
     for (std::size_t j = 0; j < ref.luminaires.size(); ++j) {
-      const std::optional<MirrorLobe> lobe =
-          mirror_lobe(plane, alpha, origin, ref.luminaires[j].position);
-      if (!lobe) continue;
-      const double u1 = ctx.rng.next_double(), u2 = ctx.rng.next_double();
-      const Vec3 w = sample_mirror_lobe(*lobe, u1, u2);
-      const double cos_x = dot(n, w);
-      if (cos_x <= 0) continue;
-      SurfaceHit s;
-      if (!trace_surface(ctx, {origin, w}, s) || s.mirror != static_cast<std::int32_t>(k) ||
-          !s.glossy) {
-        continue;
-      }
+      const std::optional<ImageSample> m = sample_image(
+          ctx, mirror_lobe(plane, alpha, origin, ref.luminaires[j].position), origin, n, k);
+      if (!m) continue;
+      const SurfaceHit& y = m->hit;
       Vec3 l;
       const Rgb light =
-          luminaire_light(ctx, j, offset_from_surface(s.position, s.normal), s.normal, l);
+          luminaire_light(ctx, j, offset_from_surface(y.position, y.normal), y.normal, l);
       if (max_component(light) <= 0) continue;
-      const double q = mirror_lobe_pdf(*lobe, w);
-      e += metallic_roughness_brdf(*s.glossy, s.normal, l, -w) * light *
-           (cos_x / q * power_heuristic(q, cos_x / kPi));
+      e += metallic_roughness_brdf(*y.glossy, y.normal, l, -m->w) * light * m->weight;
     }
-    // The suns behind clear glass, each by its cone sample at y (weighted there against the
-    // mirror's BRDF sampling, as the cosine strategy's next event is).
-    const ExteriorView view{ref.mesh, ref.traced, ref.portals};
+    // The suns behind clear glass. At y the disc is integrated by cone samples alone (no BRDF
+    // sample competes: the cosine strategy's own BRDF continuation takes its weight at x's
+    // side).
     for (std::size_t q = 0; q < ref.portals.portals.size(); ++q) {
       const ReferencePortal& portal = ref.portals.portals[q];
       const std::optional<SunDisc>& sun = portal.environment.sun();
       if (!sun || portal.frost) continue;
-      const std::optional<MirrorLobe> lobe =
-          mirror_sun_lobe(plane, alpha, origin, sun->direction, sun->angular_radius);
-      if (!lobe) continue;
-      const double u1 = ctx.rng.next_double(), u2 = ctx.rng.next_double();
-      const Vec3 w = sample_mirror_lobe(*lobe, u1, u2);
-      const double cos_x = dot(n, w);
-      if (cos_x <= 0) continue;
-      SurfaceHit s;
-      if (!trace_surface(ctx, {origin, w}, s) || s.mirror != static_cast<std::int32_t>(k) ||
-          !s.glossy) {
-        continue;
-      }
-      // At y the disc is integrated by cone samples alone (no BRDF sample competes: the
-      // cosine strategy's own BRDF continuation takes its weight at x's side).
+      const std::optional<ImageSample> m = sample_image(
+          ctx, mirror_sun_lobe(plane, alpha, origin, sun->direction, sun->angular_radius), origin,
+          n, k);
+      if (!m) continue;
+      const SurfaceHit& y = m->hit;
+      const Vec3 at_y = offset_from_surface(y.position, y.normal);
+      const NextEventWeight reflect{&*y.glossy, y.normal, -m->w, false};
       Rgb l;
-      const Vec3 at_y = offset_from_surface(s.position, s.normal);
-      const NextEventWeight reflect{&*s.glossy, s.normal, -w, false};
       for (int i = 0; i < kSunSamplesAtMirror; ++i) {
-        l += portal_sun_illuminance(view, q, at_y, s.normal, ctx.rng, ctx.rays, reflect);
+        l += portal_sun_illuminance(view, q, at_y, y.normal, ctx.rng, ctx.rays, reflect);
       }
-      l = l / kSunSamplesAtMirror;
-      const double pdf = mirror_lobe_pdf(*lobe, w);
-      e += l * (cos_x / pdf * power_heuristic(pdf, cos_x / kPi));
+      e += l * (m->weight / kSunSamplesAtMirror);
     }
   }
   return e;

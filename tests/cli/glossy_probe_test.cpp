@@ -25,6 +25,7 @@
 #include "agreement.h"
 #include "image/image_exr.h"
 #include "run_command.h"
+#include "support/scene_json.h"
 
 namespace relight {
 namespace {
@@ -144,8 +145,8 @@ TEST_F(GlossyRoom, RenderedBlocksWithinFivePercentOfTheReferenceImageOnAverage) 
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const testing::BlockAgreement per_vertex = testing::compare_blocks(read_exr(vertex), b, 8);
   EXPECT_TRUE(per_vertex.finite);
-  std::printf("glossy room image per vertex: mean %.2f %%, worst %.2f %%\n",
-              100 * per_vertex.mean, 100 * per_vertex.worst);
+  std::printf("glossy room image per vertex: mean %.2f %%, worst %.2f %%\n", 100 * per_vertex.mean,
+              100 * per_vertex.worst);
   EXPECT_LT(per_vertex.mean, 0.10);
 }
 
@@ -161,23 +162,14 @@ std::string sun_room() {
   room["luminaires"] = nlohmann::json::array();
   room["materials"]["glass"] = {{"portal", true}};
   nlohmann::json& geometry = room["geometry"];
-  const auto quad = [](std::vector<double> corner, std::vector<double> up, double width,
-                       const char* material) {
-    return nlohmann::json{{"type", "quad"},
-                          {"corner", corner},
-                          {"u", up},
-                          {"v", {width, 0, 0}},
-                          {"material", material}};
-  };
-  // The south wall (z = 4) in pieces around a 2 × 1.4 m window.
-  geometry.erase(
-      std::remove(geometry.begin(), geometry.end(), quad({0, 0, 4}, {0, 2.8, 0}, 5, "white")),
-      geometry.end());
-  geometry.push_back(quad({0, 0, 4}, {0, 0.9, 0}, 5, "white"));
-  geometry.push_back(quad({0, 2.3, 4}, {0, 0.5, 0}, 5, "white"));
-  geometry.push_back(quad({0, 0.9, 4}, {0, 1.4, 0}, 1.5, "white"));
-  geometry.push_back(quad({3.5, 0.9, 4}, {0, 1.4, 0}, 1.5, "white"));
-  geometry.push_back(quad({1.5, 0.9, 4}, {0, 1.4, 0}, 2, "glass"));
+  // The south wall (z = 4) in pieces around the window.
+  geometry.erase(std::remove(geometry.begin(), geometry.end(),
+                             testing::quad({0, 0, 4}, {0, 2.8, 0}, {5, 0, 0}, "white")),
+                 geometry.end());
+  for (const nlohmann::json& piece :
+       testing::wall_around_window(4, 5, 2.8, 1.5, 3.5, 0.9, 2.3, "white", "glass")) {
+    geometry.push_back(piece);
+  }
   room["portals"] = {{{"name", "south"},
                       {"material", "glass"},
                       {"environment",

@@ -27,6 +27,7 @@
 #include "agreement.h"
 #include "math/vec3.h"
 #include "run_command.h"
+#include "support/scene_json.h"
 
 namespace relight {
 namespace {
@@ -148,39 +149,30 @@ std::string sun_room() {
   scene["luminaires"] = nlohmann::json::array();
   scene["materials"]["glass"] = {{"portal", true}};
   nlohmann::json& geometry = scene["geometry"];
-  const auto quad = [](std::vector<double> corner, std::vector<double> up, double width,
-                       const char* material) {
-    return nlohmann::json{{"type", "quad"},
-                          {"corner", corner},
-                          {"u", up},
-                          {"v", {width, 0, 0}},
-                          {"material", material}};
-  };
-  // The south wall (z = 4) in pieces around the window: x 1–3, y 0.8–2.2.
-  geometry.erase(
-      std::remove(geometry.begin(), geometry.end(), quad({0, 0, 4}, {0, 2.8, 0}, 4, "black")),
-      geometry.end());
-  geometry.push_back(quad({0, 0, 4}, {0, 0.8, 0}, 4, "black"));
-  geometry.push_back(quad({0, 2.2, 4}, {0, 0.6, 0}, 4, "black"));
-  geometry.push_back(quad({0, 0.8, 4}, {0, 1.4, 0}, 1, "black"));
-  geometry.push_back(quad({3, 0.8, 4}, {0, 1.4, 0}, 1, "black"));
-  geometry.push_back(quad({1, 0.8, 4}, {0, 1.4, 0}, 2, "glass"));
+  // The south wall (z = 4) in pieces around the window.
+  geometry.erase(std::remove(geometry.begin(), geometry.end(),
+                             testing::quad({0, 0, 4}, {0, 2.8, 0}, {4, 0, 0}, "black")),
+                 geometry.end());
+  for (const nlohmann::json& piece :
+       testing::wall_around_window(4, 4, 2.8, 1, 3, 0.8, 2.2, "black", "glass")) {
+    geometry.push_back(piece);
+  }
   scene["portals"] = {{{"name", "south"},
-                      {"material", "glass"},
-                      {"environment",
-                       {{"type", "cie_sky"},
-                        {"sky_type", 12},
-                        {"horizontal_illuminance", 1},
-                        {"sun", {{"azimuth_deg", 180}, {"altitude_deg", 60}}},
-                        {"sun_illuminance", 60000}}}}};
+                       {"material", "glass"},
+                       {"environment",
+                        {{"type", "cie_sky"},
+                         {"sky_type", 12},
+                         {"horizontal_illuminance", 1},
+                         {"sun", {{"azimuth_deg", 180}, {"altitude_deg", 60}}},
+                         {"sun_illuminance", 60000}}}}};
   scene["sensors"] = {{{"name", "ceiling"},
-                      {"normal", {0, -1, 0}},
-                      {"grid",
-                       {{"corner", {1.25, 2.79, 1.2}},
-                        {"u", {1.5, 0, 0}},
-                        {"v", {0, 0, 0.6}},
-                        {"nu", 3},
-                        {"nv", 3}}}}};
+                       {"normal", {0, -1, 0}},
+                       {"grid",
+                        {{"corner", {1.25, 2.79, 1.2}},
+                         {"u", {1.5, 0, 0}},
+                         {"v", {0, 0, 0.6}},
+                         {"nu", 3},
+                         {"nv", 3}}}}};
   return scene.dump(2);
 }
 
@@ -189,8 +181,8 @@ TEST(MirrorLimit, TheSunsImageOnTheCeilingIsTheClosedForm) {
   const fs::path scene = dir.path() / "sun.json", rlt = dir.path() / "sun.rlt";
   const fs::path probe = dir.path() / "probe.csv", reference = dir.path() / "reference.csv";
   std::ofstream(scene) << sun_room();
-  CommandResult r = run_relight("precompute '" + scene.string() + "' -o '" + rlt.string() +
-                                "' --no-progress");
+  CommandResult r =
+      run_relight("precompute '" + scene.string() + "' -o '" + rlt.string() + "' --no-progress");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   r = run_relight("probe '" + rlt.string() + "' -o '" + probe.string() + "'");
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -202,9 +194,10 @@ TEST(MirrorLimit, TheSunsImageOnTheCeilingIsTheClosedForm) {
   const std::vector<double> truth(9, image);
   const testing::Agreement a = testing::relative_agreement(sensor_lux(probe), truth);
   const testing::Agreement b = testing::relative_agreement(sensor_lux(reference), truth);
-  std::printf("sun's image: closed form %.0f lx; probe mean %.2f %%, worst %.2f %%; reference "
-              "mean %.2f %%, worst %.2f %%\n",
-              image, 100 * a.mean, 100 * a.worst, 100 * b.mean, 100 * b.worst);
+  std::printf(
+      "sun's image: closed form %.0f lx; probe mean %.2f %%, worst %.2f %%; reference "
+      "mean %.2f %%, worst %.2f %%\n",
+      image, 100 * a.mean, 100 * a.worst, 100 * b.mean, 100 * b.worst);
   EXPECT_LT(b.worst, 0.03);
   EXPECT_LT(a.worst, 0.03);
 }
