@@ -39,11 +39,18 @@ MirrorReflection::MirrorReflection(const RuntimeScene& scene,
   }
 }
 
+Vec3 MirrorReflection::origin(std::size_t r) const {
+  // Off the receiver's own surface, as every ray leaving a receiver starts
+  // (engine/receivers.h receiver_ray_points).
+  return offset_from_surface(scene_->ray_point(r), scene_->normal(r));
+}
+
 bool MirrorReflection::reaches_plane(std::size_t r, std::size_t p, Vec3 w, double span,
                                      MirrorPath& out) const {
-  const RayHit hit = scene_->occluders().intersect({scene_->ray_point(r), w, 0, span});
+  const Vec3 x = origin(r);
+  const RayHit hit = scene_->occluders().intersect({x, w, 0, span});
   if (!hit.hit() || plane_of_[hit.triangle] != static_cast<std::int32_t>(p)) return false;
-  const Vec3 y = scene_->ray_point(r) + w * hit.t;
+  const Vec3 y = x + w * hit.t;
   // The mirror's vertex nearest y: the corner of largest barycentric weight.
   const Triangle& t = scene_->opaque_triangle(hit.triangle);
   const double weights[3] = {1 - hit.u - hit.v, hit.u, hit.v};
@@ -78,7 +85,7 @@ std::vector<MirrorPath> receiver_by_receiver(std::size_t receivers, const PathsO
 std::vector<MirrorPath> MirrorReflection::trace(Vec3 light) const {
   return receiver_by_receiver(
       scene_->receivers(), [&](std::size_t r, std::vector<MirrorPath>& out) {
-        const Vec3 x = scene_->ray_point(r), n = scene_->normal(r);
+        const Vec3 x = origin(r), n = scene_->normal(r);
         for (std::size_t p = 0; p < planes_.size(); ++p) {
           const MirrorPlane& plane = planes_[p];
           if (plane.height(x) <= kMinHeight || plane.height(light) <= kMinHeight) continue;
@@ -111,7 +118,7 @@ std::vector<MirrorPath> MirrorReflection::trace(Vec3 light) const {
 std::vector<MirrorPath> MirrorReflection::trace_parallel(Vec3 toward) const {
   return receiver_by_receiver(scene_->receivers(), [&](std::size_t r,
                                                        std::vector<MirrorPath>& out) {
-    const Vec3 x = scene_->ray_point(r), n = scene_->normal(r);
+    const Vec3 x = origin(r), n = scene_->normal(r);
     for (std::size_t p = 0; p < planes_.size(); ++p) {
       const MirrorPlane& plane = planes_[p];
       const double cos_y = dot(plane.normal, toward);

@@ -65,6 +65,8 @@ class MirrorReflection {
   std::vector<std::int32_t> plane_of_;  // per mesh triangle id
   std::vector<std::uint8_t> vertex_;    // per vertex: on a plane's triangle
 
+  // Where paths to receiver r start.
+  Vec3 origin(std::size_t r) const;
   // The path to receiver r through plane p along w (unit, from r toward the image) within
   // `span` (m), if its first hit is the plane's: fills receiver, vertex, at.
   bool reaches_plane(std::size_t r, std::size_t p, Vec3 w, double span, MirrorPath& out) const;
