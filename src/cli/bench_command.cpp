@@ -1,5 +1,5 @@
 // `relight bench SCENE.rlt [--frames N] [--sky | --emitters | --objects [--object NAME] |
-// --materials | --aim | --optimize TARGETS.json]`: times
+// --materials [--material NAME] [--roughness] | --aim | --optimize TARGETS.json]`: times
 // the run-time weighted sum
 // and, in
 // the same run, a plain parallel streaming read of as many bytes, so the ratio
