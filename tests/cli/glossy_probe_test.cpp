@@ -160,24 +160,17 @@ std::string sun_room() {
   nlohmann::json room = nlohmann::json::parse(kRoom);
   room.erase("cameras");
   room["luminaires"] = nlohmann::json::array();
-  room["materials"]["glass"] = {{"portal", true}};
-  nlohmann::json& geometry = room["geometry"];
-  // The south wall (z = 4) in pieces around the window.
-  geometry.erase(std::remove(geometry.begin(), geometry.end(),
-                             testing::quad({0, 0, 4}, {0, 2.8, 0}, {5, 0, 0}, "white")),
-                 geometry.end());
-  for (const nlohmann::json& piece :
-       testing::wall_around_window(4, 5, 2.8, 1.5, 3.5, 0.9, 2.3, "white", "glass")) {
-    geometry.push_back(piece);
-  }
-  room["portals"] = {{{"name", "south"},
-                      {"material", "glass"},
-                      {"environment",
-                       {{"type", "cie_sky"},
-                        {"sky_type", 12},
-                        {"horizontal_illuminance", 12000},
-                        {"sun", {{"azimuth_deg", 180}, {"altitude_deg", 35}}},
-                        {"sun_illuminance", 60000}}}}};
+  testing::open_south_window(room, {.z = 4,
+                                    .width = 5,
+                                    .height = 2.8,
+                                    .x0 = 1.5,
+                                    .x1 = 3.5,
+                                    .y0 = 0.9,
+                                    .y1 = 2.3,
+                                    .wall = "white",
+                                    .sky_lux = 12000,
+                                    .altitude_deg = 35,
+                                    .sun_lux = 60000});
   room["precompute"]["portal_face_size"] = 16;
   return room.dump(2);
 }

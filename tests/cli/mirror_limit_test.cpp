@@ -185,24 +185,17 @@ TEST(MirrorLimit, TheImagesLightBouncesOnFromAWhiteCeiling) {
 std::string sun_room() {
   nlohmann::json scene = nlohmann::json::parse(room(0.05));
   scene["luminaires"] = nlohmann::json::array();
-  scene["materials"]["glass"] = {{"portal", true}};
-  nlohmann::json& geometry = scene["geometry"];
-  // The south wall (z = 4) in pieces around the window.
-  geometry.erase(std::remove(geometry.begin(), geometry.end(),
-                             testing::quad({0, 0, 4}, {0, 2.8, 0}, {4, 0, 0}, "black")),
-                 geometry.end());
-  for (const nlohmann::json& piece :
-       testing::wall_around_window(4, 4, 2.8, 1, 3, 0.8, 2.2, "black", "glass")) {
-    geometry.push_back(piece);
-  }
-  scene["portals"] = {{{"name", "south"},
-                       {"material", "glass"},
-                       {"environment",
-                        {{"type", "cie_sky"},
-                         {"sky_type", 12},
-                         {"horizontal_illuminance", 1},
-                         {"sun", {{"azimuth_deg", 180}, {"altitude_deg", 60}}},
-                         {"sun_illuminance", 60000}}}}};
+  testing::open_south_window(scene, {.z = 4,
+                                     .width = 4,
+                                     .height = 2.8,
+                                     .x0 = 1,
+                                     .x1 = 3,
+                                     .y0 = 0.8,
+                                     .y1 = 2.2,
+                                     .wall = "black",
+                                     .sky_lux = 1,
+                                     .altitude_deg = 60,
+                                     .sun_lux = 60000});
   scene["sensors"] = {{{"name", "ceiling"},
                        {"normal", {0, -1, 0}},
                        {"grid",

@@ -1,7 +1,8 @@
 // Geometry entries of a scene document (docs/scene-format.md), for tests that build scenes in
-// code: one spelling of a box, a quad and a wall with a window.
+// code: one spelling of a box, a quad, a wall with a window and a sunny south window.
 #pragma once
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,35 @@ inline std::vector<nlohmann::json> wall_around_window(double z, double width, do
   return {piece(0, 0, width, y0, wall), piece(0, y1, width, height - y1, wall),
           piece(0, y0, x0, y1 - y0, wall), piece(x1, y0, width - x1, y1 - y0, wall),
           piece(x0, y0, x1 - x0, y1 - y0, glass)};
+}
+
+// A sunny south window in `scene`: its full wall z = `z` (a quad of `wall` from (0, 0, z), up
+// `height`, across `width`) replaced by the wall around a window x0..x1 × y0..y1 of material
+// "glass", the portal "south" to a CIE clear sky (type 12) of `sky_lux` horizontal
+// illuminance with a sun due south at `altitude_deg` of `sun_lux` normal illuminance.
+struct SouthWindow {
+  double z = 4, width = 4, height = 2.8, x0 = 1, x1 = 3, y0 = 0.8, y1 = 2.2;
+  std::string wall;
+  double sky_lux = 12000, altitude_deg = 35, sun_lux = 60000;
+};
+
+inline void open_south_window(nlohmann::json& scene, const SouthWindow& w) {
+  scene["materials"]["glass"] = {{"portal", true}};
+  nlohmann::json& geometry = scene["geometry"];
+  const nlohmann::json whole = quad({0, 0, w.z}, {0, w.height, 0}, {w.width, 0, 0}, w.wall);
+  geometry.erase(std::remove(geometry.begin(), geometry.end(), whole), geometry.end());
+  for (const nlohmann::json& piece :
+       wall_around_window(w.z, w.width, w.height, w.x0, w.x1, w.y0, w.y1, w.wall, "glass")) {
+    geometry.push_back(piece);
+  }
+  scene["portals"] = {{{"name", "south"},
+                       {"material", "glass"},
+                       {"environment",
+                        {{"type", "cie_sky"},
+                         {"sky_type", 12},
+                         {"horizontal_illuminance", w.sky_lux},
+                         {"sun", {{"azimuth_deg", 180}, {"altitude_deg", w.altitude_deg}}},
+                         {"sun_illuminance", w.sun_lux}}}}};
 }
 
 }  // namespace relight::testing
