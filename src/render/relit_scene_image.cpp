@@ -144,11 +144,13 @@ class GlossyShading {
                 [this](const MetallicRoughness& m, Vec3 p, Vec3 n, Vec3 v) {
                   return direct(m, p, n, v);
                 }} {
-    if (glossy_.empty()) return;
+    // A scene without windows has no suns and no sun geometry; with objects, they shadow the
+    // sun.
     if (!lit_.suns().empty()) {
       sun_geometry_.emplace(lit_.sun_geometry());
       sun_geometry_->occluders = occluders_;
     }
+    if (glossy_.empty()) return;
     const ObjectLighting* objects = lit_.objects();
     const std::vector<float> total =
         objects != nullptr
@@ -168,6 +170,17 @@ class GlossyShading {
   GlossyShading& operator=(const GlossyShading&) = delete;
 
   bool empty() const { return glossy_.empty(); }
+
+  // The direct irradiance at p (unit normal n) — luminaires, suns behind clear glass,
+  // emitters, shadowed by the room and the placed objects — as `--direct pixel` takes it.
+  Rgb direct_irradiance(Vec3 p, Vec3 n) const {
+    Rgb e = luminaire_direct_irradiance(occluders_, lights_, p, n);
+    if (sun_geometry_) e += sun_irradiance(*sun_geometry_, lit_.suns(), p, n);
+    if (const EmitterLighting* emitters = lit_.emitters(); emitters != nullptr) {
+      e += emitter_direct_irradiance(emitters->placed(), &occluders_, p, n);
+    }
+    return e;
+  }
 
   // The luminance toward v (unit) at a hit p (normal n) on `triangle` at barycentrics `bary`;
   // none for a Lambertian triangle or an object's.
@@ -288,16 +301,6 @@ ShadedImages render_relit_scene(RelitScene& scene, const Camera& camera, int wid
   const RayTracer& windows = scene.portal_tracer();
   const PinholeCamera pinhole = make_pinhole_camera(camera, width, height);
   const Relighter& lit = scene.relighter();
-  const ObjectLighting* objects = lit.objects();
-  const std::optional<ShownScene> shown =
-      objects != nullptr ? std::optional(shown_with_objects(t, lit.vertex_albedo(), *objects))
-                         : std::nullopt;
-  const RayTracer& visible = shown ? *shown->tracer : room;
-  const std::vector<Vec3>& positions = shown ? shown->positions : t.positions;
-  const std::vector<Triangle>& triangles = shown ? shown->triangles : t.triangles;
-  const std::span<const float> albedo =
-      shown ? std::span<const float>(shown->albedo) : lit.vertex_albedo();
-  const Occluders occluders = objects != nullptr ? objects->occluders() : Occluders(room);
   const auto background = [&](Vec3 origin, Vec3 dir) {
     return window_luminance(lit, windows, origin, dir, true);
   };
@@ -312,18 +315,19 @@ ShadedImages render_relit_scene(RelitScene& scene, const Camera& camera, int wid
     input.vertex_luminance = toward_eye;
     return shade_vertices(pinhole, input);
   }
+  const ObjectLighting* objects = lit.objects();
+  const std::optional<ShownScene> shown =
+      objects != nullptr ? std::optional(shown_with_objects(t, lit.vertex_albedo(), *objects))
+                         : std::nullopt;
+  const RayTracer& visible = shown ? *shown->tracer : room;
+  const std::vector<Vec3>& positions = shown ? shown->positions : t.positions;
+  const std::vector<Triangle>& triangles = shown ? shown->triangles : t.triangles;
+  const std::span<const float> albedo =
+      shown ? std::span<const float>(shown->albedo) : lit.vertex_albedo();
   std::vector<float> indirect = scene.indirect_irradiance();
   if (objects != nullptr) {
     indirect = with_objects(indirect, t.vertex_count, objects->irradiance(false));
   }
-  const std::vector<LuminaireLight> lights = pixel_lights(t.scene, lit);
-  // A scene without windows has no suns and no sun geometry; with objects, they shadow the sun.
-  std::optional<SunGeometry> sun_geometry;
-  if (!lit.suns().empty()) {
-    sun_geometry.emplace(lit.sun_geometry());
-    sun_geometry->occluders = occluders;
-  }
-  const EmitterLighting* emitters = lit.emitters();
   // Glossy room triangles (the state's materials) shade by their BRDF (render/glossy_pixels.h):
   // the exact direct light's highlights and the room's reflection gathered from the relit
   // vertices. Objects' triangles shade as diffuse.
@@ -332,23 +336,15 @@ ShadedImages render_relit_scene(RelitScene& scene, const Camera& camera, int wid
                                    Vec3 p, Vec3 n, Vec3 v) -> std::optional<Rgb> {
     return glossy.at_hit(triangle, bary, p, n, v);
   };
-  return shade_vertices(
-      pinhole, {visible,
-                positions,
-                triangles,
-                albedo,
-                indirect,
-                [&](Vec3 p, Vec3 n) {
-                  Rgb e = luminaire_direct_irradiance(occluders, lights, p, n) +
-                          (sun_geometry ? sun_irradiance(*sun_geometry, lit.suns(), p, n) : Rgb{});
-                  if (emitters != nullptr) {
-                    e += emitter_direct_irradiance(emitters->placed(), &occluders, p, n);
-                  }
-                  return e;
-                },
-                background,
-                glossy_radiance,
-                {}});
+  return shade_vertices(pinhole, {visible,
+                                  positions,
+                                  triangles,
+                                  albedo,
+                                  indirect,
+                                  [&](Vec3 p, Vec3 n) { return glossy.direct_irradiance(p, n); },
+                                  background,
+                                  glossy_radiance,
+                                  {}});
 }
 
 std::vector<float> glossy_vertex_luminance(RelitScene& scene, Vec3 eye, int samples) {
