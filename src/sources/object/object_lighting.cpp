@@ -378,37 +378,37 @@ void ObjectLighting::apply_object_rows(std::span<const float> light, std::span<f
     }
     return;
   }
-  for (const ObjectRows& cone : transfer_.cones) {
+  // A proxy's row is one of the rows summed: its sum is kept for the vertices that take it.
+  const ReceiverProxies& proxies = transfer_.proxies;
+  const std::size_t count = proxies.proxies.size();
+  std::fill(proxy_values_.begin(), proxy_values_.end(), 0.0f);
+  const auto sum_row = [&](const ObjectRows& rows, std::size_t i, std::size_t column,
+                           std::size_t layer, float* target) {
+    float sum[3] = {0, 0, 0};
+    add_row(rows, i, light, sum);
+    for (std::size_t k = 0; k < 3; ++k) target[k] += sum[k];
+    const std::int32_t j = column < proxies.proxy_of.size() ? proxies.proxy_of[column] : -1;
+    if (j >= 0) std::copy_n(sum, 3, &proxy_values_[3 * (layer * count + std::size_t(j))]);
+  };
+  for (std::size_t l = 0; l < transfer_.cones.size(); ++l) {
+    const ObjectRows& cone = transfer_.cones[l];
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, cone.rows(), 1024), [&](const auto& rr) {
       for (std::size_t row = rr.begin(); row != rr.end(); ++row) {
         if (cone.first[row] != cone.first[row + 1]) {
-          add_row(cone, row, light, &out[3 * indexing.solver_row(row)]);
+          sum_row(cone, row, indexing.column(row), l, &out[3 * indexing.solver_row(row)]);
         }
       }
     });
   }
+  const std::size_t base_layer = transfer_.cones.size();
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, objects, 1024), [&](const auto& qr) {
     for (std::size_t q = qr.begin(); q != qr.end(); ++q) {
-      add_row(transfer_.base, q, light, &out[3 * (vertices + q)]);
-    }
-  });
-  // The vertices that take a layer's row from proxies (each object's cones, then the base).
-  const ReceiverProxies& proxies = transfer_.proxies;
-  const std::size_t layers = transfer_.cones.size() + 1, count = proxies.proxies.size();
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 256), [&](const auto& jr) {
-    for (std::size_t j = jr.begin(); j != jr.end(); ++j) {
-      const std::size_t c = proxies.proxies[j];
-      for (std::size_t l = 0; l < layers; ++l) {
-        float* sum = &proxy_values_[3 * (l * count + j)];
-        sum[0] = sum[1] = sum[2] = 0;
-        if (l + 1 < layers) {
-          add_row(transfer_.cones[l], indexing.row(c), light, sum);
-        } else if (c >= vertices) {
-          add_row(transfer_.base, c - vertices, light, sum);
-        }
+      if (transfer_.base.first[q] != transfer_.base.first[q + 1]) {
+        sum_row(transfer_.base, q, vertices + q, base_layer, &out[3 * (vertices + q)]);
       }
     }
   });
+  // The vertices that take a layer's row from proxies (each object's cones, then the base).
   spread_from_proxies(proxies, proxy_layers_, proxy_values_,
                       out.subspan(0, 3 * (vertices + objects)));
 }

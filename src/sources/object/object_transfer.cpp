@@ -1,6 +1,7 @@
 #include "sources/object/object_transfer.h"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 
@@ -167,13 +168,68 @@ bool has_cone_row(const RuntimeScene& room, const PlacedObjects& objects, std::s
          !(column < proxied.size() && proxied[column] != 0);
 }
 
+// Where in a cone's frame the rays that may meet a sphere lie: polar angle θ from the axis
+// within β of the sphere's direction γ (as the cosine range [cos_min, cos_max]) and azimuth
+// within `half_width` of `phi` (sin Δ = sin β / sin γ; every azimuth when the axis is within β
+// of it), β the sphere's angular radius from the origin; `all` when the origin is inside.
+// Conservative by kWindowMargin, so that rays outside are skipped before their direction is
+// computed (the exact test follows for the rest).
+struct SphereWindow {
+  bool all = false, none = false;
+  double cos_min = -1, cos_max = 1, phi = 0, half_width = kPi;
+};
+
+constexpr double kWindowMargin = 1e-6;  // rad
+
+SphereWindow sphere_window(const Frame& frame, Vec3 origin, const BoundingSphere& s) {
+  SphereWindow w;
+  if (s.radius <= 0) {
+    w.none = true;
+    return w;
+  }
+  const Vec3 to = s.centre - origin;
+  const double d = length(to);
+  if (d <= s.radius * (1 + 1e-9)) {
+    w.all = true;
+    return w;
+  }
+  const double beta = std::asin(s.radius / d) + kWindowMargin;
+  const Vec3 b = frame.to_local(to / d);
+  const double gamma = std::acos(std::clamp(b.z, -1.0, 1.0));
+  w.cos_max = std::cos(std::max(0.0, gamma - beta));
+  w.cos_min = std::cos(std::min(kPi, gamma + beta));
+  if (gamma > beta && kPi - gamma > beta) {
+    w.phi = std::atan2(b.y, b.x);
+    w.half_width = std::asin(std::min(1.0, std::sin(beta) / std::sin(gamma))) + kWindowMargin;
+  }
+  return w;
+}
+
+bool in_window(const SphereWindow& w, double cos_t, double phi) {
+  if (w.all) return true;
+  if (w.none || cos_t < w.cos_min - 1e-12 || cos_t > w.cos_max + 1e-12) return false;
+  if (w.half_width >= kPi) return true;
+  double gap = std::fmod(std::abs(phi - w.phi), 2 * kPi);
+  gap = std::min(gap, 2 * kPi - gap);
+  return gap <= w.half_width;
+}
+
+// Whether the ray from `origin` along unit `dir` meets one of `spheres`.
+bool meets_any(Vec3 origin, Vec3 dir, std::span<const BoundingSphere> spheres) {
+  return std::any_of(spheres.begin(), spheres.end(), [&](const BoundingSphere& s) {
+    return s.radius > 0 && ray_near_sphere(origin, dir, s, 0);
+  });
+}
+
 // Calls visit(direction, weight) for each ray of row `row` toward object k's sphere `s`: rays
 // uniformly over the sphere's cone (cosine-distributed over the hemisphere from inside it),
 // weight Ω/N · cos θ / π, as many as the sphere's share asks; none below the cull. The same
-// rays every time for the same row, object and sphere.
+// rays every time for the same row, object and sphere. With `only`, just the rays that meet
+// one of those spheres (the others skipped before their direction is made).
 template <typename Visit>
 void for_each_cone_ray(const ObjectTransferSettings& settings, const Origin& o,
-                       const BoundingSphere& s, std::size_t k, std::size_t row, Visit&& visit) {
+                       const BoundingSphere& s, std::size_t k, std::size_t row, Visit&& visit,
+                       std::span<const BoundingSphere> only = {}) {
   const Vec3 to_centre = s.centre - o.point;
   const double d = length(to_centre);
   const bool inside = d <= s.radius;
@@ -197,18 +253,33 @@ void for_each_cone_ray(const ObjectTransferSettings& settings, const Origin& o,
   Pcg32 rng(kConeSeed + k, row);
   const std::uint32_t s1 = rng.next_u32(), s2 = rng.next_u32();
   const Frame frame = frame_from_normal(axis);
+  constexpr std::size_t kMaxWindows = 32;
+  std::array<SphereWindow, kMaxWindows> windows;
+  const std::size_t window_count = only.size() > kMaxWindows ? 0 : only.size();
+  for (std::size_t i = 0; i < window_count; ++i) {
+    windows[i] = sphere_window(frame, o.point, only[i]);
+  }
   for (int i = 0; i < rays; ++i) {
     const auto index = static_cast<std::uint32_t>(i);
     const double u1 = unit_interval(van_der_corput(index, s1));
     const double u2 = unit_interval(sobol2(index, s2));
-    if (inside) {
-      visit(frame.to_world(sample_cosine_hemisphere(u1, u2)), 1.0 / rays);
+    // The ray's polar angle about the frame's axis and its azimuth (sample_cosine_hemisphere's
+    // mapping inside the sphere).
+    const double cos_t = inside ? std::sqrt(std::max(0.0, 1 - u1)) : 1 - u1 * (1 - cos_alpha);
+    const double phi = 2 * kPi * u2;
+    if (window_count > 0 &&
+        std::none_of(windows.begin(), windows.begin() + window_count,
+                     [&](const SphereWindow& w) { return in_window(w, cos_t, phi); })) {
       continue;
     }
-    const double cos_t = 1 - u1 * (1 - cos_alpha);
+    if (inside) {
+      const Vec3 dir = frame.to_world(sample_cosine_hemisphere(u1, u2));
+      if (only.empty() || meets_any(o.point, dir, only)) visit(dir, 1.0 / rays);
+      continue;
+    }
     const double sin_t = std::sqrt(std::max(0.0, 1 - cos_t * cos_t));
-    const double phi = 2 * kPi * u2;
     const Vec3 dir = frame.to_world({sin_t * std::cos(phi), sin_t * std::sin(phi), cos_t});
+    if (!only.empty() && !meets_any(o.point, dir, only)) continue;
     const double weight = omega / rays * std::max(0.0, dot(o.normal, dir)) / kPi;
     if (weight > 0) visit(dir, weight);
   }
@@ -232,6 +303,32 @@ void add_cone_ray(const RuntimeScene& room, const PlacedObjects& objects, const 
   add_hit(room, objects, before, ray, -weight, row, scratch, chunk);
 }
 
+// One ray of unmoved object k's cone row that may meet a moved object: what changed in
+// add_cone_ray's count of it between `before` and `objects`. k did not move, so its hit and
+// what the base row saw behind it are the same then and now; only whether k is the first
+// object along the ray may differ. One ray against k alone (a miss: counted neither then nor
+// now), then one against each placement up to k's hit, and the room only when that changed.
+void update_cone_ray(const RuntimeScene& room, const PlacedObjects& objects,
+                     const PlacedObjects& before, const Origin& o, std::size_t k, Vec3 dir,
+                     double weight, std::uint32_t row, RowScratch& scratch, Chunk& chunk) {
+  chunk.rays += 3;
+  const Ray ray{o.point, dir};
+  const RayHit hit = objects.own[k].intersect(ray);
+  if (!hit.hit()) return;
+  const auto k_first = [&](const PlacedObjects& placed) {
+    const RayHit h = placed.tracer.intersect({ray.origin, ray.direction, 0, hit.t});
+    return !h.hit() || placed.triangle_object[h.triangle] == k;
+  };
+  const bool now = k_first(objects);
+  if (now == k_first(before)) return;
+  const FirstHit behind = base_hit(room, objects, o, ray);
+  chunk.rays += 2;
+  if (behind.kind != FirstHit::kNothing && behind.hit.t <= hit.t) return;  // the room hides k
+  const double w = now ? weight : -weight;
+  add_hit(room, objects, {FirstHit::kObject, hit}, ray, w, row, scratch, chunk);
+  add_hit(room, objects, behind, ray, -w, row, scratch, chunk);
+}
+
 // Row `row` of object k's cone rows, traced whole; rows of vertices that take their row from
 // proxies stay empty.
 void trace_cone_row(const RuntimeScene& room, const PlacedObjects& objects,
@@ -248,18 +345,11 @@ void trace_cone_row(const RuntimeScene& room, const PlacedObjects& objects,
   scratch.flush(chunk);
 }
 
-// Whether the ray from `origin` along unit `dir` meets one of `spheres`.
-bool meets_any(Vec3 origin, Vec3 dir, std::span<const BoundingSphere> spheres) {
-  return std::any_of(spheres.begin(), spheres.end(), [&](const BoundingSphere& s) {
-    return s.radius > 0 && ray_near_sphere(origin, dir, s, 0);
-  });
-}
-
 // Row `row` of unmoved object k's cone rows, from an origin that did not move, after objects
 // moved from their places in `before` (spheres `changed`: where they were and where they are
 // now): the rays that meet none of `changed` see what they saw before, so only the others are
-// traced, once among the objects before (their contribution taken off the row `previous`)
-// and once as placed now (added). Glass hits of equal portal and direction are merged.
+// traced (update_cone_ray: what changed in their count, added to the row `previous`). Glass
+// hits of equal portal and direction are merged.
 void update_cone_row(const RuntimeScene& room, const PlacedObjects& objects,
                      const PlacedObjects& before, const ObjectTransferSettings& settings,
                      std::size_t k, std::span<const std::uint8_t> proxied,
@@ -274,11 +364,12 @@ void update_cone_row(const RuntimeScene& room, const PlacedObjects& objects,
   const Origin o = origin_of(room, objects, row);
   if (has_cone_row(room, objects, k, proxied, o, row)) {
     const auto out_row = static_cast<std::uint32_t>(row);
-    for_each_cone_ray(settings, o, objects.bounds[k], k, row, [&](Vec3 dir, double weight) {
-      if (!meets_any(o.point, dir, changed)) return;
-      add_cone_ray(room, before, o, k, dir, -weight, out_row, scratch, chunk);
-      add_cone_ray(room, objects, o, k, dir, weight, out_row, scratch, chunk);
-    });
+    for_each_cone_ray(
+        settings, o, objects.bounds[k], k, row,
+        [&](Vec3 dir, double weight) {
+          update_cone_ray(room, objects, before, o, k, dir, weight, out_row, scratch, chunk);
+        },
+        changed);
   }
   // Merge this row's glass hits along the same direction through the same portal.
   std::vector<GlassHit> merged;
