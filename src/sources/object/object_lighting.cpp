@@ -352,7 +352,7 @@ namespace {
 
 // Σ_e values[e] · light[3 column_e ..] over row i of `rows`, added to sum.
 void add_row(const ObjectRows& rows, std::size_t i, std::span<const float> light, float* sum) {
-  for (std::size_t e = rows.first[i]; e < rows.first[i + 1]; ++e) {
+  for (std::size_t e = rows.begin[i]; e < rows.end[i]; ++e) {
     const float* l = &light[3 * std::size_t{rows.columns[e]}];
     sum[0] += rows.values[e] * l[0];
     sum[1] += rows.values[e] * l[1];
@@ -394,7 +394,7 @@ void ObjectLighting::apply_object_rows(std::span<const float> light, std::span<f
     const ObjectRows& cone = transfer_.cones[l];
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, cone.rows(), 1024), [&](const auto& rr) {
       for (std::size_t row = rr.begin(); row != rr.end(); ++row) {
-        if (cone.first[row] != cone.first[row + 1]) {
+        if (!cone.empty(row)) {
           sum_row(cone, row, indexing.column(row), l, &out[3 * indexing.solver_row(row)]);
         }
       }
@@ -403,7 +403,7 @@ void ObjectLighting::apply_object_rows(std::span<const float> light, std::span<f
   const std::size_t base_layer = transfer_.cones.size();
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, objects, 1024), [&](const auto& qr) {
     for (std::size_t q = qr.begin(); q != qr.end(); ++q) {
-      if (transfer_.base.first[q] != transfer_.base.first[q + 1]) {
+      if (!transfer_.base.empty(q)) {
         sum_row(transfer_.base, q, vertices + q, base_layer, &out[3 * (vertices + q)]);
       }
     }

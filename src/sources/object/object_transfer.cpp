@@ -21,9 +21,13 @@ constexpr std::uint64_t kObjectSeed = 0x6f626a726f777321ULL;
 // A row weight this small changes nothing: what a ray added and a later update took off again.
 constexpr float kNegligible = 1e-9f;
 
+// A row size that says the row is as it was (update_cone_row; replace_rows keeps it).
+constexpr std::uint32_t kUnchanged = ~std::uint32_t{0};
+constexpr std::size_t kUnchangedRow = ~std::size_t{0};
+
 // One chunk of rows while it is traced.
 struct Chunk {
-  std::vector<std::uint32_t> row_sizes;
+  std::vector<std::uint32_t> row_sizes;  // or kUnchanged
   std::vector<std::uint32_t> columns;
   std::vector<float> values;
   std::vector<GlassHit> glass;
@@ -361,6 +365,7 @@ void update_cone_row(const RuntimeScene& room, const PlacedObjects& objects,
   const auto hi = std::partition_point(lo, previous.glass.end(),
                                        [&](const GlassHit& g) { return g.row <= row; });
   chunk.glass.insert(chunk.glass.end(), lo, hi);
+  const std::size_t glass_kept = chunk.glass.size();
   const Origin o = origin_of(room, objects, row);
   if (has_cone_row(room, objects, k, proxied, o, row)) {
     const auto out_row = static_cast<std::uint32_t>(row);
@@ -370,6 +375,11 @@ void update_cone_row(const RuntimeScene& room, const PlacedObjects& objects,
           update_cone_ray(room, objects, before, o, k, dir, weight, out_row, scratch, chunk);
         },
         changed);
+  }
+  if (scratch.entries.empty() && chunk.glass.size() == glass_kept) {  // no ray's count changed
+    chunk.glass.resize(glass_from);
+    chunk.row_sizes.push_back(kUnchanged);
+    return;
   }
   // Merge this row's glass hits along the same direction through the same portal.
   std::vector<GlassHit> merged;
@@ -389,7 +399,7 @@ void update_cone_row(const RuntimeScene& room, const PlacedObjects& objects,
   for (const GlassHit& g : merged) {
     if (std::abs(g.weight) > kNegligible) chunk.glass.push_back(g);
   }
-  const std::size_t from = previous.first[row], size = previous.first[row + 1] - from;
+  const std::size_t from = previous.begin[row], size = previous.end[row] - from;
   scratch.flush(chunk, std::span(previous.columns).subspan(from, size),
                 std::span(previous.values).subspan(from, size));
 }
@@ -443,12 +453,23 @@ ObjectRows trace_rows(std::size_t count, const std::vector<std::uint32_t>* rows,
     entries += c.columns.size();
     glass += c.glass.size();
   }
-  out.first.reserve(count + 1);
+  out.begin.reserve(count);
+  out.end.reserve(count);
   out.columns.reserve(entries);
   out.values.reserve(entries);
   out.glass.reserve(glass);
+  out.used = entries;
+  std::size_t next = 0;
   for (const Chunk& c : chunks) {
-    for (const std::uint32_t size : c.row_sizes) out.first.push_back(out.first.back() + size);
+    for (const std::uint32_t size : c.row_sizes) {
+      if (size == kUnchanged) {
+        out.begin.push_back(kUnchangedRow);
+        out.end.push_back(kUnchangedRow);
+        continue;
+      }
+      out.begin.push_back(next);
+      out.end.push_back(next += size);
+    }
     out.columns.insert(out.columns.end(), c.columns.begin(), c.columns.end());
     out.values.insert(out.values.end(), c.values.begin(), c.values.end());
     out.glass.insert(out.glass.end(), c.glass.begin(), c.glass.end());
@@ -457,37 +478,51 @@ ObjectRows trace_rows(std::size_t count, const std::vector<std::uint32_t>* rows,
   return out;
 }
 
-// `rows` with the rows listed in `redo` (ascending) replaced by those of `traced` (in the order
-// of `redo`); glass hits likewise.
-ObjectRows splice(const ObjectRows& rows, const std::vector<std::uint32_t>& redo,
-                  const ObjectRows& traced) {
-  ObjectRows out;
-  out.first.reserve(rows.first.size());
-  out.columns.reserve(rows.columns.size() + traced.columns.size());
-  out.values.reserve(out.columns.capacity());
-  std::size_t next = 0;  // into redo
-  for (std::size_t r = 0; r < rows.rows(); ++r) {
-    const bool again = next < redo.size() && redo[next] == r;
-    const ObjectRows& from = again ? traced : rows;
-    const std::size_t i = again ? next++ : r;
-    const auto lo = static_cast<std::ptrdiff_t>(from.first[i]);
-    const auto hi = static_cast<std::ptrdiff_t>(from.first[i + 1]);
-    out.columns.insert(out.columns.end(), from.columns.begin() + lo, from.columns.begin() + hi);
-    out.values.insert(out.values.end(), from.values.begin() + lo, from.values.begin() + hi);
-    out.first.push_back(out.columns.size());
+// The rows listed in `redo` (ascending) replaced by those of `traced` (in the order of
+// `redo`; kUnchangedRow: kept), their entries appended; glass hits likewise. Packs the rows again
+// when as many entries are unused as used.
+void replace_rows(ObjectRows& rows, const std::vector<std::uint32_t>& redo, ObjectRows traced) {
+  const std::size_t offset = rows.columns.size();
+  rows.columns.insert(rows.columns.end(), traced.columns.begin(), traced.columns.end());
+  rows.values.insert(rows.values.end(), traced.values.begin(), traced.values.end());
+  for (std::size_t i = 0; i < redo.size(); ++i) {
+    const std::size_t r = redo[i];
+    if (traced.begin[i] == kUnchangedRow) continue;
+    rows.used += traced.end[i] - traced.begin[i];
+    rows.used -= rows.end[r] - rows.begin[r];
+    rows.begin[r] = offset + traced.begin[i];
+    rows.end[r] = offset + traced.end[i];
+  }
+  if (rows.columns.size() > 2 * rows.used + 4096) {
+    ObjectRows packed;
+    packed.columns.reserve(rows.used);
+    packed.values.reserve(rows.used);
+    for (std::size_t r = 0; r < rows.rows(); ++r) {
+      const auto lo = static_cast<std::ptrdiff_t>(rows.begin[r]);
+      const auto hi = static_cast<std::ptrdiff_t>(rows.end[r]);
+      packed.begin.push_back(packed.columns.size());
+      packed.columns.insert(packed.columns.end(), rows.columns.begin() + lo,
+                            rows.columns.begin() + hi);
+      packed.values.insert(packed.values.end(), rows.values.begin() + lo, rows.values.begin() + hi);
+      packed.end.push_back(packed.columns.size());
+    }
+    rows.begin = std::move(packed.begin);
+    rows.end = std::move(packed.end);
+    rows.columns = std::move(packed.columns);
+    rows.values = std::move(packed.values);
   }
   // Glass hits stay sorted by row (update_cone_row looks a row's up).
+  if (rows.glass.empty() && traced.glass.empty()) return;
   std::vector<bool> again(rows.rows(), false);
-  for (const std::uint32_t r : redo) again[r] = true;
+  for (std::size_t i = 0; i < redo.size(); ++i) again[redo[i]] = traced.begin[i] != kUnchangedRow;
   std::vector<GlassHit> kept;
   for (const GlassHit& g : rows.glass) {
     if (!again[g.row]) kept.push_back(g);
   }
-  out.glass.reserve(kept.size() + traced.glass.size());
+  rows.glass.clear();
   std::merge(kept.begin(), kept.end(), traced.glass.begin(), traced.glass.end(),
-             std::back_inserter(out.glass),
+             std::back_inserter(rows.glass),
              [](const GlassHit& a, const GlassHit& b) { return a.row < b.row; });
-  return out;
 }
 
 // Whether the cone from `o` toward sphere a may meet sphere b (they overlap as seen from o).
@@ -496,8 +531,11 @@ bool cones_overlap(Vec3 o, const BoundingSphere& a, const BoundingSphere& b) {
   const Vec3 da = a.centre - o, db = b.centre - o;
   const double la = length(da), lb = length(db);
   if (la <= a.radius || lb <= b.radius) return true;
-  const double angle = std::acos(std::clamp(dot(da, db) / (la * lb), -1.0, 1.0));
-  return angle <= std::asin(a.radius / la) + std::asin(b.radius / lb);
+  // The angle between the axes at most the sum of the half-angles (each below 90°), compared
+  // as cosines: cos(α_a + α_b) = cos α_a cos α_b − sin α_a sin α_b.
+  const double sa = a.radius / la, sb = b.radius / lb;
+  const double ca = std::sqrt(1 - sa * sa), cb = std::sqrt(1 - sb * sb);
+  return dot(da, db) / (la * lb) >= ca * cb - sa * sb - 1e-12;
 }
 
 Vec3 column_point(const RuntimeScene& room, const PlacedObjects& objects, std::size_t column) {
@@ -631,7 +669,7 @@ void retrace_object_transfer(ObjectTransfer& t, const RuntimeScene& room,
       whole.push_back(how[row] == 1 ? 1 : 0);
     }
     const ObjectRows& previous = t.cones[k];
-    const ObjectRows traced = trace_rows(
+    ObjectRows traced = trace_rows(
         0, &redo,
         [&](std::size_t i, RowScratch& scratch, Chunk& chunk) {
           const std::size_t row = redo[i];
@@ -643,7 +681,7 @@ void retrace_object_transfer(ObjectTransfer& t, const RuntimeScene& room,
           }
         },
         t.rays, /*by_index=*/true);
-    if (!redo.empty()) t.cones[k] = splice(previous, redo, traced);
+    if (!redo.empty()) replace_rows(t.cones[k], redo, std::move(traced));
     t.retraced_rows += redo.size();
   }
   std::vector<std::uint32_t> redo;
@@ -652,13 +690,13 @@ void retrace_object_transfer(ObjectTransfer& t, const RuntimeScene& room,
       redo.push_back(static_cast<std::uint32_t>(q));
     }
   }
-  const ObjectRows traced = trace_rows(
+  ObjectRows traced = trace_rows(
       0, &redo,
       [&](std::size_t q, RowScratch& scratch, Chunk& chunk) {
         trace_base_row(room, objects, settings, t.proxies, q, scratch, chunk);
       },
       t.rays);
-  if (!redo.empty()) t.base = splice(t.base, redo, traced);
+  if (!redo.empty()) replace_rows(t.base, redo, std::move(traced));
   t.retraced_rows += redo.size();
 }
 

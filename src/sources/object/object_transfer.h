@@ -67,14 +67,19 @@ struct GlassHit {
   float weight = 0;  // signed: + seen now, − no longer seen
 };
 
-// Sparse rows in unified columns.
+// Sparse rows in unified columns. Row i is entries [begin[i], end[i]) of `columns` and
+// `values`; rows need not lie in order nor back to back: a drag appends the rows it retraces
+// and points their rows there (replace_rows), leaving the old entries unused until there are
+// as many unused entries as used ones, when the rows are packed again.
 struct ObjectRows {
-  std::vector<std::size_t> first{0};  // per row, then the end: row i is [first[i], first[i+1])
+  std::vector<std::size_t> begin, end;
   std::vector<std::uint32_t> columns;
   std::vector<float> values;
   std::vector<GlassHit> glass;  // sorted by row
+  std::size_t used = 0;         // entries that rows point at
 
-  std::size_t rows() const { return first.size() - 1; }
+  std::size_t rows() const { return begin.size(); }
+  bool empty(std::size_t row) const { return begin[row] == end[row]; }
 };
 
 // The three numberings of the objects' term: transfer rows — the room's receivers (vertices,
