@@ -33,13 +33,36 @@ constexpr Eigen::Index kRowGrain = 64;
 
 void gather_rgb_row(const Eigen::SparseMatrix<float, Eigen::RowMajor>& gather, Eigen::Index row,
                     std::span<const float> reflected, float (&sum)[3]) {
-  sum[0] = sum[1] = sum[2] = 0;
-  for (Gather::InnerIterator it(gather, row); it; ++it) {
-    const float* l = &reflected[3 * static_cast<std::size_t>(it.index())];
-    sum[0] += it.value() * l[0];
-    sum[1] += it.value() * l[1];
-    sum[2] += it.value() * l[2];
+  // Raw arrays rather than Eigen's iterator: two independent sums per channel let the loads
+  // of the next entry overlap the adds of this one.
+  const auto* columns = gather.innerIndexPtr();
+  const float* values = gather.valuePtr();
+  const auto begin = gather.outerIndexPtr()[row];
+  const auto end = gather.isCompressed() ? gather.outerIndexPtr()[row + 1]
+                                         : begin + gather.innerNonZeroPtr()[row];
+  const float* light = reflected.data();
+  float a0 = 0, a1 = 0, a2 = 0, b0 = 0, b1 = 0, b2 = 0;
+  auto i = begin;
+  for (; i + 1 < end; i += 2) {
+    const float* l = light + 3 * static_cast<std::size_t>(columns[i]);
+    const float* m = light + 3 * static_cast<std::size_t>(columns[i + 1]);
+    const float v = values[i], w = values[i + 1];
+    a0 += v * l[0];
+    a1 += v * l[1];
+    a2 += v * l[2];
+    b0 += w * m[0];
+    b1 += w * m[1];
+    b2 += w * m[2];
   }
+  if (i < end) {
+    const float* l = light + 3 * static_cast<std::size_t>(columns[i]);
+    a0 += values[i] * l[0];
+    a1 += values[i] * l[1];
+    a2 += values[i] * l[2];
+  }
+  sum[0] = a0 + b0;
+  sum[1] = a1 + b1;
+  sum[2] = a2 + b2;
 }
 
 namespace {

@@ -142,6 +142,7 @@ void ObjectLighting::trace_direct(const ObjectLightInputs& in, bool all) {
     return false;
   };
 
+  retraced_.assign(rows, 0);
   // Luminaires: per luminaire and row, what the objects change in its geometry factor (at
   // room receivers with − without the objects; at object vertices the whole factor), kept
   // until the luminaire's position or opening changes or an object moves within reach. A
@@ -169,6 +170,7 @@ void ObjectLighting::trace_direct(const ObjectLightInputs& in, bool all) {
       std::uint64_t rays = 0;
       for (std::size_t u = range.begin(); u != range.end(); ++u) {
         if (!redo(u, stale, near)) continue;
+        retraced_[u] = 1;
         const Vec3 x = point(u), n = normal(u);
         const std::vector<Vec3>& opening = u >= vertices + objects ? sensor_opening : l.opening;
         double f = 0;
@@ -231,6 +233,7 @@ void ObjectLighting::trace_direct(const ObjectLightInputs& in, bool all) {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rows, 256), [&](const auto& range) {
       for (std::size_t u = range.begin(); u != range.end(); ++u) {
         if (!redo(u, all, near_other)) continue;
+        retraced_[u] = 1;
         const Vec3 x = point(u), n = normal(u);
         const bool sensor = u >= vertices + objects;
         Rgb e;
@@ -247,9 +250,11 @@ void ObjectLighting::trace_direct(const ObjectLightInputs& in, bool all) {
     });
   }
 
-  // ΔE_d: the luminaires' factors evaluated for their current output and aim, and the rest.
+  // ΔE_d: the luminaires' factors evaluated for their current output and aim, and the rest;
+  // when the light did not change, only at the rows traced again.
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rows, 1024), [&](const auto& range) {
     for (std::size_t u = range.begin(); u != range.end(); ++u) {
+      if (!all && retraced_[u] == 0) continue;
       Rgb e{other_direct_[3 * u], other_direct_[3 * u + 1], other_direct_[3 * u + 2]};
       for (std::size_t j = 0; j < in.luminaires.size(); ++j) {
         const LuminaireLight& l = in.luminaires[j];

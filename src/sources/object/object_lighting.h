@@ -135,6 +135,7 @@ class ObjectLighting {
   };
   std::vector<LuminaireShadows> luminaire_shadows_;
   std::vector<float> other_direct_;         // the suns' and emitters' part of ΔE_d, likewise
+  std::vector<std::uint8_t> retraced_;      // per unified row: traced again this update
   std::vector<float> source_;               // D, likewise
   std::vector<float> indirect_;             // the bounce, likewise
   std::vector<float> proxy_values_;         // 3 per proxy per layer: each object's cones, the base

@@ -56,12 +56,14 @@ bool segment_near_sphere(Vec3 a, Vec3 b, const BoundingSphere& s, double margin)
   const Vec3 ab = b - a;
   const double len2 = dot(ab, ab);
   const double t = len2 > 0 ? std::clamp(dot(s.centre - a, ab) / len2, 0.0, 1.0) : 0.0;
-  return length(a + ab * t - s.centre) <= s.radius + margin;
+  const Vec3 gap = a + ab * t - s.centre;
+  return dot(gap, gap) <= (s.radius + margin) * (s.radius + margin);
 }
 
 bool ray_near_sphere(Vec3 a, Vec3 d, const BoundingSphere& s, double margin) {
   const double t = std::max(0.0, dot(s.centre - a, d));
-  return length(a + d * t - s.centre) <= s.radius + margin;
+  const Vec3 gap = a + d * t - s.centre;
+  return dot(gap, gap) <= (s.radius + margin) * (s.radius + margin);
 }
 
 PlacedObjects place_objects(std::span<const ObjectMesh> objects,
