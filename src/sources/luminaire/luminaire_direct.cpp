@@ -1,7 +1,10 @@
 #include "sources/luminaire/luminaire_direct.h"
 
+#include <algorithm>
 #include <atomic>
+#include <bit>
 #include <cmath>
+#include <stdexcept>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -61,28 +64,76 @@ LuminousOpening luminaire_opening(const Luminaire& l, const LuminousOpening& fro
           l.size.x, l.size.y, l.size.z};
 }
 
+namespace {
+
+// Whether the opening point at `offset` is seen from `origin` (already off its surface).
+bool sees_opening_point(const Occluders& occluders, Vec3 origin, Vec3 luminaire_position,
+                        Vec3 offset, std::uint64_t& rays) {
+  const Vec3 to_light = luminaire_position + offset - origin;
+  const double span = length(to_light);
+  ++rays;
+  return span <= kLightMargin ||
+         !occluders.occluded({origin, to_light / span, 0, span - kLightMargin});
+}
+
+}  // namespace
+
 DirectFactor direct_factor(const Occluders& occluders, Vec3 p, Vec3 normal, Vec3 luminaire_position,
                            const std::vector<Vec3>& opening_offsets, std::uint64_t& rays) {
   const Vec3 d = p - luminaire_position;
   const double dist = length(d);
   DirectFactor out{dist > 0 ? d / dist : Vec3{0, -1, 0}, 0};
-  const double cos_receiver = -dot(normal, out.direction);
-  if (dist <= kLightMargin || cos_receiver <= 0) return out;
+  const double geometry = direct_geometry(p, normal, luminaire_position);
+  if (geometry <= 0) return out;
   // Visible fraction of the opening, seen from the point.
   const Vec3 origin = offset_from_surface(p, normal);
   int visible = 0;
   for (const Vec3& offset : opening_offsets) {
-    const Vec3 to_light = luminaire_position + offset - origin;
-    const double span = length(to_light);
-    ++rays;
-    if (span <= kLightMargin ||
-        !occluders.occluded({origin, to_light / span, 0, span - kLightMargin})) {
-      ++visible;
+    if (sees_opening_point(occluders, origin, luminaire_position, offset, rays)) ++visible;
+  }
+  out.factor = static_cast<double>(visible) / opening_offsets.size() * geometry;
+  return out;
+}
+
+double direct_geometry(Vec3 p, Vec3 n, Vec3 luminaire_position) {
+  const Vec3 d = p - luminaire_position;
+  const double dist = length(d);
+  if (dist <= kLightMargin) return 0;
+  const double cos_receiver = -dot(n, d / dist);
+  return cos_receiver > 0 ? cos_receiver / (dist * dist) : 0;
+}
+
+OpeningMask visible_opening_points(const Occluders& occluders, Vec3 p, Vec3 n,
+                                   Vec3 luminaire_position,
+                                   const std::vector<Vec3>& opening_offsets,
+                                   const OpeningMask& candidates, std::uint64_t& rays) {
+  if (opening_offsets.size() > kMaxOpeningMask) {
+    throw std::invalid_argument("visible_opening_points: too many opening points");
+  }
+  const Vec3 origin = offset_from_surface(p, n);
+  OpeningMask out{};
+  for (std::size_t i = 0; i < opening_offsets.size(); ++i) {
+    const std::uint64_t bit = std::uint64_t{1} << (i % 64);
+    if ((candidates[i / 64] & bit) != 0 &&
+        sees_opening_point(occluders, origin, luminaire_position, opening_offsets[i], rays)) {
+      out[i / 64] |= bit;
     }
   }
-  const double fraction = static_cast<double>(visible) / opening_offsets.size();
-  out.factor = fraction * cos_receiver / (dist * dist);
   return out;
+}
+
+OpeningMask all_opening_points(std::size_t count) {
+  OpeningMask out{};
+  for (std::size_t i = 0; i < std::min(count, kMaxOpeningMask); ++i) {
+    out[i / 64] |= std::uint64_t{1} << (i % 64);
+  }
+  return out;
+}
+
+int opening_point_count(const OpeningMask& mask) {
+  int count = 0;
+  for (const std::uint64_t word : mask) count += std::popcount(word);
+  return count;
 }
 
 Rgb luminaire_direct_irradiance(const Occluders& occluders, std::span<const LuminaireLight> lights,

@@ -7,6 +7,7 @@
 // direct light is the SH series itself; its mode is kept as "direct": "sh").
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -52,6 +53,24 @@ DirectFactor direct_factor(const Occluders& occluders, Vec3 p, Vec3 n, Vec3 lumi
 // Keeps a shadow ray toward a luminaire from reaching the luminaire (or the surface it sits
 // on): the ray stops this far short of it, m.
 inline constexpr double kLightMargin = 1e-4;
+
+// direct_factor in its two parts, for callers that keep one tracer's visibility and trace
+// another's (movable objects, sources/object/object_lighting.h): the factor is the fraction
+// of the opening's points visible times direct_geometry, and a point is visible when every
+// tracer leaves it so. OpeningMask: one bit per opening point (at most kMaxOpeningMask).
+using OpeningMask = std::array<std::uint64_t, 4>;
+inline constexpr std::size_t kMaxOpeningMask = 256;
+// cos θ / d² at p (0 where direct_factor is 0 whatever the visibility).
+double direct_geometry(Vec3 p, Vec3 n, Vec3 luminaire_position);
+// The points among `candidates` that p sees past `occluders`, traced as direct_factor traces
+// them. Throws std::invalid_argument for more than kMaxOpeningMask points.
+OpeningMask visible_opening_points(const Occluders& occluders, Vec3 p, Vec3 n,
+                                   Vec3 luminaire_position,
+                                   const std::vector<Vec3>& opening_offsets,
+                                   const OpeningMask& candidates, std::uint64_t& rays);
+// Every point of an opening of `count` points.
+OpeningMask all_opening_points(std::size_t count);
+int opening_point_count(const OpeningMask& mask);
 
 // A luminaire as a lighting state sets it, for its exact direct light at any point: at each
 // pixel of an image (render/pixel_direct.h) and at the vertices of movable objects

@@ -158,8 +158,12 @@ void ObjectLighting::trace_direct(const ObjectLightInputs& in, bool all) {
     const bool stale = cache.factor.size() != rows || cache.position != l.position ||
                        cache.opening != l.opening || cache.sensor_opening != sensor_opening;
     if (stale) {
-      cache = {l.position, l.opening, sensor_opening, std::vector<float>(rows, 0.0f),
-               std::vector<float>(rows, std::numeric_limits<float>::quiet_NaN())};
+      cache = {l.position,
+               l.opening,
+               sensor_opening,
+               std::vector<float>(rows, 0.0f),
+               std::vector<float>(rows, std::numeric_limits<float>::quiet_NaN()),
+               std::vector<OpeningMask>(rows)};
     }
     double reach = 0;
     for (const Vec3& o : l.opening) reach = std::max(reach, length(o));
@@ -178,12 +182,24 @@ void ObjectLighting::trace_direct(const ObjectLightInputs& in, bool all) {
           if (placed_.visible(placed_.object_of_vertex(u - vertices))) {
             f = direct_factor(with, x, n, l.position, opening, rays).factor;
           }
-        } else {
+        } else if (opening.size() > kMaxOpeningMask) {
           if (std::isnan(cache.room_factor[u])) {  // the empty room's: traced once
             cache.room_factor[u] =
                 static_cast<float>(direct_factor(without, x, n, l.position, opening, rays).factor);
           }
           f = direct_factor(with, x, n, l.position, opening, rays).factor - cache.room_factor[u];
+        } else if (const double g = direct_geometry(x, n, l.position); g > 0) {
+          // The points the empty room leaves visible, traced once; then only those against
+          // the objects.
+          if (std::isnan(cache.room_factor[u])) {
+            cache.room_visible[u] = visible_opening_points(
+                without, x, n, l.position, opening, all_opening_points(opening.size()), rays);
+            cache.room_factor[u] = 0;
+          }
+          const OpeningMask seen = visible_opening_points(placed_.tracer, x, n, l.position, opening,
+                                                          cache.room_visible[u], rays);
+          f = (opening_point_count(seen) - opening_point_count(cache.room_visible[u])) * g /
+              static_cast<double>(opening.size());
         }
         cache.factor[u] = static_cast<float>(f);
       }

@@ -126,12 +126,14 @@ class ObjectLighting {
   std::vector<float> albedo_;  // 3 per unified row that reflects: room vertices, objects
   std::vector<float> direct_;  // ΔE_d: 3 per unified row (room vertices, objects, sensors)
   // Per luminaire: where its shadow rays started from and ended on, and per unified row what
-  // the objects change in its geometry factor (luminaire_direct.h direct_factor) and the empty
-  // room's factor (NaN until traced).
+  // the objects change in its geometry factor (luminaire_direct.h direct_factor), the empty
+  // room's factor (NaN until traced; 0 once its visible opening points are kept) and the
+  // opening points the empty room leaves visible (only those are traced against the objects).
   struct LuminaireShadows {
     Vec3 position;
     std::vector<Vec3> opening, sensor_opening;
     std::vector<float> factor, room_factor;
+    std::vector<OpeningMask> room_visible;
   };
   std::vector<LuminaireShadows> luminaire_shadows_;
   std::vector<float> other_direct_;         // the suns' and emitters' part of ΔE_d, likewise
