@@ -120,17 +120,18 @@ VertexShadingInput vertex_input(RelitScene& scene, const VertexView& view,
           {}};
 }
 
-// The relit scene's glossy room surfaces as render/glossy_pixels.h shades them: the exact
-// direct light's highlights (luminaires, suns; emitters as the diffuse surface of the same
+// The relit scene's glossy surfaces as render/glossy_pixels.h shades them: the exact direct
+// light's highlights (luminaires, suns; emitters as the diffuse surface of the same
 // hemispherical albedo) and the room's reflection gathered from the relit vertices, for a
-// pixel's hit point or a vertex. With `shown`, the objects as the state places them are seen
-// and shadow (they shade as diffuse).
+// pixel's hit point or a vertex. With `shown`, the objects as the state places them are seen,
+// shadow, and shade by their own materials' BRDFs too.
 class GlossyShading {
  public:
   GlossyShading(RelitScene& scene, const ShownScene* shown)
       : t_(scene.transfer()),
         lit_(scene.relighter()),
         windows_(scene.portal_tracer()),
+        objects_(shown != nullptr ? lit_.objects() : nullptr),
         occluders_(lit_.objects() != nullptr ? lit_.objects()->occluders()
                                              : Occluders(scene.opaque_tracer())),
         lights_(pixel_lights(t_.scene, lit_)),
@@ -182,54 +183,106 @@ class GlossyShading {
     return e;
   }
 
-  // The luminance toward v (unit) at a hit p (normal n) on `triangle` at barycentrics `bary`;
-  // none for a Lambertian triangle or an object's.
+  // The luminance toward v (unit) at a hit p (normal n) on `triangle` (the shown scene's: the
+  // room's, then the objects') at barycentrics `bary`; none for a Lambertian triangle.
   std::optional<Rgb> at_hit(std::uint32_t triangle, const std::array<double, 3>& bary, Vec3 p,
                             Vec3 n, Vec3 v) const {
-    if (glossy_.empty() || triangle >= t_.triangle_material.size()) return std::nullopt;
-    const std::int32_t g = glossy_.index.at(t_.triangle_material[triangle]);
-    if (g < 0) return std::nullopt;
-    // The base colour times the vertices' texture values (scene/surface_texture.h).
-    MetallicRoughness brdf = glossy_.brdf[static_cast<std::size_t>(g)];
-    if (!texture_.empty()) {
-      Rgb at;
-      for (std::size_t k = 0; k < 3; ++k) {
-        at += vertex_texture_at(texture_, t_.triangles[triangle][k]) * bary[k];
+    if (glossy_.empty()) return std::nullopt;
+    std::optional<MetallicRoughness> brdf;
+    if (triangle < t_.triangles.size()) {
+      if (triangle >= t_.triangle_material.size()) return std::nullopt;
+      const std::int32_t g = glossy_.index.at(t_.triangle_material[triangle]);
+      if (g < 0) return std::nullopt;
+      // The base colour times the vertices' texture values (scene/surface_texture.h).
+      brdf = glossy_.brdf[static_cast<std::size_t>(g)];
+      if (!texture_.empty()) {
+        Rgb at;
+        for (std::size_t k = 0; k < 3; ++k) {
+          at += vertex_texture_at(texture_, t_.triangles[triangle][k]) * bary[k];
+        }
+        brdf->albedo = brdf->albedo * at;
       }
-      brdf.albedo = brdf.albedo * at;
+    } else if (objects_ != nullptr &&
+               triangle - t_.triangles.size() < objects_->placed().triangles.size()) {
+      const Triangle& tri = objects_->placed().triangles[triangle - t_.triangles.size()];
+      brdf = object_brdf(tri[0]);  // an object's triangle is of one material
+      if (!brdf) return std::nullopt;
+      Rgb at;
+      for (std::size_t k = 0; k < 3; ++k) at += object_texture(tri[k]) * bary[k];
+      brdf->albedo = brdf->albedo * at;
+    } else {
+      return std::nullopt;
     }
     // A stream per hit point: images are deterministic whatever the threads do.
     const std::uint64_t seed = std::hash<double>{}(p.x * 7.0 + p.y * 131.0 + p.z * 1031.0);
-    return glossy_pixel_radiance(pixels_, brdf, p, n, v, kGlossySamples, seed);
+    return glossy_pixel_radiance(pixels_, *brdf, p, n, v, kGlossySamples, seed);
   }
 
-  // Per vertex of the shown scene (3 each): the luminance of a glossy room vertex toward
-  // `eye`, with `samples` BRDF samples of the room's reflection; NaN elsewhere.
+  // Per vertex of the shown scene (3 each): the luminance of a glossy vertex (the room's, then
+  // the shown objects') toward `eye`, with `samples` BRDF samples of the room's reflection;
+  // NaN elsewhere.
   std::vector<float> vertex_luminance(Vec3 eye, int samples) const {
     std::vector<float> out(pixels_.positions.size() * 3, std::numeric_limits<float>::quiet_NaN());
+    if (glossy_.empty()) return out;
     const std::vector<std::uint32_t>& material = t_.view.scene.vertex_material;
-    if (glossy_.empty() || material.size() < t_.vertex_count) return out;
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, t_.vertex_count, 64), [&](const auto& r) {
-      for (std::size_t v = r.begin(); v != r.end(); ++v) {
-        if (material[v] == kNoMaterial) continue;
-        const std::int32_t g = glossy_.index.at(material[v]);
-        if (g < 0) continue;
-        MetallicRoughness brdf = glossy_.brdf[static_cast<std::size_t>(g)];
-        brdf.albedo = brdf.albedo * vertex_texture_at(texture_, v);
-        const Vec3 p = t_.positions[v], n = t_.view.scene.receiver_normals[v];
-        const Vec3 to_eye = eye - p;
-        const double d = length(to_eye);
-        if (!(d > 0) || dot(to_eye, n) <= 0) continue;  // seen from behind: as diffuse
-        const Rgb l = glossy_pixel_radiance(pixels_, brdf, p, n, to_eye / d, samples, v);
-        out[3 * v] = static_cast<float>(l.r);
-        out[3 * v + 1] = static_cast<float>(l.g);
-        out[3 * v + 2] = static_cast<float>(l.b);
-      }
-    });
+    const std::size_t room = material.size() < t_.vertex_count ? 0 : t_.vertex_count;
+    const std::size_t objects = objects_ != nullptr ? objects_->placed().vertex_count() : 0;
+    tbb::parallel_for(
+        tbb::blocked_range<std::size_t>(0, t_.vertex_count + objects, 64), [&](const auto& r) {
+          for (std::size_t v = r.begin(); v != r.end(); ++v) {
+            std::optional<MetallicRoughness> brdf;
+            Vec3 p, n;
+            if (v < t_.vertex_count) {
+              if (v >= room || material[v] == kNoMaterial) continue;
+              const std::int32_t g = glossy_.index.at(material[v]);
+              if (g < 0) continue;
+              brdf = glossy_.brdf[static_cast<std::size_t>(g)];
+              brdf->albedo = brdf->albedo * vertex_texture_at(texture_, v);
+              p = t_.positions[v];
+              n = t_.view.scene.receiver_normals[v];
+            } else {
+              const std::size_t q = v - t_.vertex_count;
+              const PlacedObjects& placed = objects_->placed();
+              if (!placed.visible(placed.object_of_vertex(q))) continue;
+              brdf = object_brdf(q);
+              if (!brdf) continue;
+              brdf->albedo = brdf->albedo * object_texture(q);
+              p = placed.positions[q];
+              n = placed.normals[q];
+            }
+            const Vec3 to_eye = eye - p;
+            const double d = length(to_eye);
+            if (!(d > 0) || dot(to_eye, n) <= 0) continue;  // seen from behind: as diffuse
+            const Rgb l = glossy_pixel_radiance(pixels_, *brdf, p, n, to_eye / d, samples, v);
+            out[3 * v] = static_cast<float>(l.r);
+            out[3 * v + 1] = static_cast<float>(l.g);
+            out[3 * v + 2] = static_cast<float>(l.b);
+          }
+        });
     return out;
   }
 
  private:
+  // The BRDF of object vertex q (PlacedObjects order) when its material is glossy; none for
+  // a Lambertian one or a file from before the objects kept their materials.
+  std::optional<MetallicRoughness> object_brdf(std::size_t q) const {
+    const PlacedObjects& placed = objects_->placed();
+    const std::size_t k = placed.object_of_vertex(q);
+    const std::vector<std::uint32_t>& material = objects_->meshes()[k].vertex_material;
+    const std::size_t v = q - placed.first_vertex[k];
+    if (v >= material.size()) return std::nullopt;
+    const std::int32_t g = glossy_.index.at(material[v]);
+    if (g < 0) return std::nullopt;
+    return glossy_.brdf[static_cast<std::size_t>(g)];
+  }
+  // Object vertex q's base colour texture value (1 without a texture).
+  Rgb object_texture(std::size_t q) const {
+    const PlacedObjects& placed = objects_->placed();
+    const std::size_t k = placed.object_of_vertex(q);
+    return vertex_texture_at(std::span<const float>(objects_->meshes()[k].texture),
+                             q - placed.first_vertex[k]);
+  }
+
   // The shell through a window; the sun disc is exact in direct().
   Rgb outside(Vec3 origin, Vec3 dir) const {
     const RayHit hit = windows_.intersect({origin, dir});
@@ -260,6 +313,7 @@ class GlossyShading {
   const TransferFile& t_;
   const Relighter& lit_;
   const RayTracer& windows_;
+  const ObjectLighting* objects_;  // the objects shown (null: none)
   const Occluders occluders_;
   const std::vector<LuminaireLight> lights_;
   std::optional<SunGeometry> sun_geometry_;
@@ -328,9 +382,9 @@ ShadedImages render_relit_scene(RelitScene& scene, const Camera& camera, int wid
   if (objects != nullptr) {
     indirect = with_objects(indirect, t.vertex_count, objects->irradiance(false));
   }
-  // Glossy room triangles (the state's materials) shade by their BRDF (render/glossy_pixels.h):
-  // the exact direct light's highlights and the room's reflection gathered from the relit
-  // vertices. Objects' triangles shade as diffuse.
+  // Glossy triangles, the room's and the objects' (the state's materials), shade by their BRDF
+  // (render/glossy_pixels.h): the exact direct light's highlights and the room's reflection
+  // gathered from the relit vertices.
   const GlossyShading glossy(scene, shown ? &*shown : nullptr);
   const auto glossy_radiance = [&](std::uint32_t triangle, const std::array<double, 3>& bary,
                                    Vec3 p, Vec3 n, Vec3 v) -> std::optional<Rgb> {
@@ -350,9 +404,7 @@ ShadedImages render_relit_scene(RelitScene& scene, const Camera& camera, int wid
 std::vector<float> glossy_vertex_luminance(RelitScene& scene, Vec3 eye, int samples) {
   const VertexView view = make_vertex_view(scene);
   const GlossyShading glossy(scene, view.shown ? &*view.shown : nullptr);
-  std::vector<float> out = glossy.vertex_luminance(eye, samples);
-  out.resize(3 * scene.transfer().vertex_count);  // the room's vertices
-  return out;
+  return glossy.vertex_luminance(eye, samples);
 }
 
 }  // namespace relight

@@ -23,11 +23,12 @@ ShadedImages render_relit_scene(RelitScene& scene, const Camera& camera, int wid
 std::vector<Rgb> relit_scene_luminance(RelitScene& scene, std::span<const Ray> rays,
                                        bool with_suns);
 
-// The luminance (cd/m², 3 per room vertex) each glossy room vertex sends toward `eye` under the
-// state's materials — its luminaires' and suns' highlights exact, the room's reflection by
-// `samples` BRDF samples of the relit vertices (render/glossy_pixels.h) — and NaN at the other
-// vertices (and at glossy ones seen from behind): what render_relit_scene interpolates without
-// pixel_direct, and the studio's view-dependent shading (RLGV).
+// The luminance (cd/m², 3 per vertex: the room's, then the movable objects' in their order)
+// each glossy vertex sends toward `eye` under the state's materials — its luminaires' and suns'
+// highlights exact, the room's reflection by `samples` BRDF samples of the relit vertices
+// (render/glossy_pixels.h) — and NaN at the other vertices (and at glossy ones seen from
+// behind or of hidden objects): what render_relit_scene interpolates without pixel_direct, and
+// the studio's view-dependent shading (RLGV).
 std::vector<float> glossy_vertex_luminance(RelitScene& scene, Vec3 eye, int samples);
 
 }  // namespace relight

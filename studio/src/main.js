@@ -18,7 +18,7 @@ import { Markers } from './markers.js';
 import { MaterialPanel } from './materials.js';
 import { ObjectPanel, ObjectsView } from './objects.js';
 import { OptimizePanel } from './optimize.js';
-import { decodeFrame, decodeGeometry, decodeGlossyView, decodeObjects, halfToFloat, messages } from './protocol.js';
+import { decodeFrame, decodeGeometry, decodeGlossyView, decodeObjects, halfToFloat, messages, splitGlossyView } from './protocol.js';
 import { Sensors } from './sensors.js';
 import { StateStore, canonical } from './state.js';
 import { notice } from './ui.js';
@@ -258,7 +258,9 @@ function onBinary(tag, buffer) {
     } else if (tag === 'RLGV') {
       if (!session.geometry) throw new Error('RLGV before RLGE');
       const g = decodeGlossyView(buffer);
-      viewer.setGlossyView(g);
+      const parts = splitGlossyView(g, viewer.geometry.vertexCount);
+      viewer.setGlossyView(parts.room);
+      objectsView.setGlossyView(parts.objects);
       api.glossyViews++;
       api.lastGlossyView = { frame: g.frame, count: g.count, eye: g.eye, serverMs: g.serverMs, vertices: Array.from(g.vertices) };
     } else {
@@ -539,6 +541,16 @@ Object.assign(api, {
   requestRender: () => viewer.requestRender(),
   // The radiance shown at vertex v (cd/m², R G B), glossy views applied.
   shownRadiance: (v) => [0, 1, 2].map((c) => halfToFloat(viewer.lighting.array[4 * v + c])),
+  // The radiance shown at object vertex q (hello order), glossy views applied; with
+  // `fromFrame`, the last frame's there.
+  objectRadiance: (q, fromFrame = false) => {
+    const items = objectsView.items;
+    let k = 0, first = 0;
+    while (k + 1 < items.length && q >= first + items[k].o.vertices) first += items[k++].o.vertices;
+    const at = fromFrame ? 4 * q : 4 * (q - first);
+    const src = fromFrame ? objectsView.lastFrameHalfs : items[k].lighting.array;
+    return [0, 1, 2].map((c) => halfToFloat(src[at + c]));
+  },
   // The sensor readings of the frame shown (lx, every set's points back to back).
   sensorReadings: () => Array.from(sensors.values),
   // Emitter i's marker on the canvas (CSS px), object i's base centre, and any world point's.

@@ -200,6 +200,8 @@ export class ObjectsView {
     this.hello = hello;
     this._clearMeshes();
     this.items = (hello.objects || []).map((o) => ({ o, mesh: null, lighting: null, box: null, outline: null }));
+    this.glossy = null;
+    this.lastFrameHalfs = null;
     this.selected = null;
     this.hovered = null;
     this.drag = null;
@@ -265,6 +267,47 @@ export class ObjectsView {
       it.lighting.array.set(frame.objectHalfs.subarray(at, at + n));
       it.lighting.needsUpdate = true;
       at += n;
+    }
+    this.lastFrameHalfs = frame.objectHalfs;
+    this._writeGlossy(false);
+  }
+
+  // Glossy object vertices shaded toward the eye (the objects' part of a decoded RLGV, object
+  // vertices in hello order): their radiance replaces the frame's now and in the frames that
+  // follow, until the next RLGV — as the viewer does for the room's.
+  setGlossyView(glossy) {
+    const total = this.items.reduce((n, it) => n + it.o.vertices, 0);
+    for (const q of glossy.vertices) {
+      if (q >= total) throw new Error(`RLGV: object vertex ${q} of ${total}`);
+    }
+    this._writeGlossy(true); // the last view's vertices go back to the frame's radiance
+    this.glossy = glossy;
+    this._writeGlossy(false);
+    this.viewer.requestRender();
+  }
+
+  // Writes the glossy view's radiance into the objects' lighting, or with `restore` the last
+  // frame's radiance at the same vertices.
+  _writeGlossy(restore) {
+    if (!this.glossy || !this.items.length || !this.items[0].lighting) return;
+    if (restore && !this.lastFrameHalfs) return;
+    const first = [];
+    let n = 0;
+    for (const it of this.items) {
+      first.push(n);
+      n += it.o.vertices;
+    }
+    const { vertices, halfs } = this.glossy;
+    let k = 0;
+    for (let i = 0; i < vertices.length; i++) {
+      const q = vertices[i];
+      while (k + 1 < first.length && first[k + 1] <= q) k++; // vertices are ascending
+      const it = this.items[k];
+      const v = q - first[k];
+      for (let c = 0; c < 3; c++) {
+        it.lighting.array[4 * v + c] = restore ? this.lastFrameHalfs[4 * q + c] : halfs[3 * i + c];
+      }
+      it.lighting.needsUpdate = true;
     }
   }
 

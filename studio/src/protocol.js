@@ -137,6 +137,19 @@ export function decodeGlossyView(buffer) {
   };
 }
 
+// A decoded RLGV in two: the room's vertices (indices below `roomVertices`) and the movable
+// objects' (indices from `roomVertices` on, given as object vertex numbers in hello order).
+export function splitGlossyView(glossy, roomVertices) {
+  const part = (keep, offset) => {
+    const at = [];
+    glossy.vertices.forEach((v, i) => { if (keep(v)) at.push(i); });
+    const halfs = new Uint16Array(3 * at.length);
+    at.forEach((i, j) => halfs.set(glossy.halfs.subarray(3 * i, 3 * i + 3), 3 * j));
+    return { ...glossy, count: at.length, vertices: Uint32Array.from(at, (i) => glossy.vertices[i] - offset), halfs };
+  };
+  return { room: part((v) => v < roomVertices, 0), objects: part((v) => v >= roomVertices, roomVertices) };
+}
+
 // IEEE 754 binary16 bits → number.
 export function halfToFloat(h) {
   const sign = h & 0x8000 ? -1 : 1;

@@ -305,6 +305,35 @@ test('R, Shift+R and the slider turn the cabinet; the server places it turned', 
   assert.deepEqual(await objectState(), {});
 });
 
+test('the cabinet made metal is shaded toward the eye: RLGV lists its vertices after the room vertices', async () => {
+  await page.evaluate((a) => window.relightStudio.setState({
+    materials: { red: { albedo: a, metallic: 1, roughness: 0.3 } } }), kAlbedo);
+  await page.waitForFunction(() => {
+    const api = window.relightStudio;
+    return api.lastState?.final === true && api.state().materials?.red?.metallic === 1 &&
+           api.lastGlossyView?.frame === api.lastState.frame && api.lastGlossyView.count > 0;
+  });
+  const seen = await page.evaluate(() => {
+    const api = window.relightStudio;
+    const V = api.viewer.geometry.vertexCount;
+    const g = api.lastGlossyView;
+    const mine = g.vertices.filter((v) => v >= V);
+    return { count: g.count, objectVertices: mine.length, total: api.objects.items[0].o.vertices,
+             shown: mine.map((v) => api.objectRadiance(v - V)),
+             frame: mine.map((v) => api.objectRadiance(v - V, true)) };
+  });
+  assert.equal(seen.count, seen.objectVertices, 'only the cabinet is glossy');
+  assert.ok(seen.objectVertices > 0.3 * seen.total, `${seen.objectVertices} of ${seen.total} cabinet vertices face the eye`);
+  const apart = mean(seen.shown.map((s, i) => Math.abs(luminance(s) - luminance(seen.frame[i])) /
+                                         Math.max(luminance(s), luminance(seen.frame[i]), 1e-6)));
+  console.log(`metal cabinet: ${seen.objectVertices} of ${seen.total} vertices shaded toward the eye; ` +
+              `${(100 * apart).toFixed(0)} % apart from the frame's diffuse radiance per vertex`);
+  assert.ok(apart > 0.05, `the view's radiance replaced the frame's: ${apart}`);
+  assert.ok(seen.shown.every((s) => s.every(Number.isFinite)));
+  await browser.afterNewFrame(page, () => page.evaluate(() => window.relightStudio.setState({})));
+  await browser.settled(page);
+});
+
 test('no page errors or console errors', () => {
   assert.deepEqual(studio.problems, []);
 });
