@@ -86,6 +86,7 @@ Relighter::Relighter(TransferView transfer, const Scene& scene, const RelighterS
       throw std::invalid_argument("Relighter: the transfer's objects are not the scene's");
     }
     objects_.emplace(*runtime_, transfer_.objects);
+    objects_->set_materials(scene.materials);
     room_light_.assign(3 * transfer_.receivers, 0.0f);
   }
 }

@@ -80,6 +80,7 @@ void ObjectLighting::set_albedo(std::span<const float> room_albedo,
   }
   std::copy(placed_.albedo.begin(), placed_.albedo.end(),
             albedo_.begin() + static_cast<std::ptrdiff_t>(room_albedo.size()));
+  set_materials(materials);
 }
 
 bool ObjectLighting::set_state(std::span<const MovablePlacement> placements) {
@@ -329,6 +330,7 @@ void ObjectLighting::update(const ObjectLightInputs& in, bool light_changed) {
   std::copy(direct_.begin(), direct_.end(), source_.begin());
   apply_object_rows(static_light_, source_, false);
   if (in.glass) add_glass_light(in.glass, source_);
+  if (glossy_) add_glossy_reflection(in, source_);
   // ΔE = D + [G + C; H] · ρ ΔE over room vertices and object vertices; sensors gathered once:
   // the objects' rows applied once per sweep, the room's G row by row.
   const auto& g = room.gather().matrix;
@@ -387,7 +389,6 @@ void ObjectLighting::apply_object_rows(std::span<const float> light, std::span<f
                                        bool sensors_only) {
   const RuntimeScene& room = *room_;
   const std::size_t vertices = room.vertex_count(), receivers = room.receivers();
-  const std::size_t objects = placed_.vertex_count();
   const ObjectIndexing indexing(room, placed_);
   // Every object's cone rows (rows of different objects are the same receivers: one object at
   // a time), then the base rows. Sensors take no rows from proxies.
@@ -399,14 +400,25 @@ void ObjectLighting::apply_object_rows(std::span<const float> light, std::span<f
     }
     return;
   }
+  for_object_rows([&](const ObjectRows& rows, std::size_t i, std::size_t,
+                      float* sum) { add_row(rows, i, light, sum); },
+                  out);
+}
+
+template <typename RowSum>
+void ObjectLighting::for_object_rows(const RowSum& row_sum, std::span<float> out) {
+  const RuntimeScene& room = *room_;
+  const std::size_t vertices = room.vertex_count(), receivers = room.receivers();
+  const std::size_t objects = placed_.vertex_count();
+  const ObjectIndexing indexing(room, placed_);
   // A proxy's row is one of the rows summed: its sum is kept for the vertices that take it.
   const ReceiverProxies& proxies = transfer_.proxies;
   const std::size_t count = proxies.proxies.size();
   std::fill(proxy_values_.begin(), proxy_values_.end(), 0.0f);
-  const auto sum_row = [&](const ObjectRows& rows, std::size_t i, std::size_t column,
-                           std::size_t layer, float* target) {
+  const auto sum_row = [&](const ObjectRows& rows, std::size_t i, std::size_t row,
+                           std::size_t column, std::size_t layer, float* target) {
     float sum[3] = {0, 0, 0};
-    add_row(rows, i, light, sum);
+    row_sum(rows, i, row, sum);
     for (std::size_t k = 0; k < 3; ++k) target[k] += sum[k];
     const std::int32_t j = column < proxies.proxy_of.size() ? proxies.proxy_of[column] : -1;
     if (j >= 0) std::copy_n(sum, 3, &proxy_values_[3 * (layer * count + std::size_t(j))]);
@@ -416,7 +428,7 @@ void ObjectLighting::apply_object_rows(std::span<const float> light, std::span<f
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, cone.rows(), 1024), [&](const auto& rr) {
       for (std::size_t row = rr.begin(); row != rr.end(); ++row) {
         if (!cone.empty(row)) {
-          sum_row(cone, row, indexing.column(row), l, &out[3 * indexing.solver_row(row)]);
+          sum_row(cone, row, row, indexing.column(row), l, &out[3 * indexing.solver_row(row)]);
         }
       }
     });
@@ -425,13 +437,90 @@ void ObjectLighting::apply_object_rows(std::span<const float> light, std::span<f
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, objects, 1024), [&](const auto& qr) {
     for (std::size_t q = qr.begin(); q != qr.end(); ++q) {
       if (!transfer_.base.empty(q)) {
-        sum_row(transfer_.base, q, vertices + q, base_layer, &out[3 * (vertices + q)]);
+        sum_row(transfer_.base, q, receivers + q, vertices + q, base_layer,
+                &out[3 * (vertices + q)]);
       }
     }
   });
   // The vertices that take a layer's row from proxies (each object's cones, then the base).
   spread_from_proxies(proxies, proxy_layers_, proxy_values_,
                       out.subspan(0, 3 * (vertices + objects)));
+}
+
+void ObjectLighting::add_glossy_reflection(const ObjectLightInputs& in, std::span<float> out) {
+  const RuntimeScene& room = *room_;
+  const std::size_t vertices = room.vertex_count(), receivers = room.receivers();
+  const std::size_t objects = placed_.vertex_count(), lights = in.luminaires.size();
+  // Per glossy object vertex and luminaire: the irradiance (as ΔE_d has it: the luminaire's
+  // factor through room and objects) and the direction toward the luminaire.
+  std::vector<Rgb> irradiance(objects * lights);
+  std::vector<Vec3> toward(objects * lights);
+  bool any = false;
+  for (std::size_t q = 0; q < objects; ++q) {
+    if (!object_brdf_[q] || !placed_.visible(placed_.object_of_vertex(q))) continue;
+    const Vec3 x = placed_.ray_points[q];
+    for (std::size_t j = 0; j < lights; ++j) {
+      const LuminaireLight& l = in.luminaires[j];
+      const float f = luminaire_shadows_[j].factor[vertices + q];
+      const Vec3 d = x - l.position;
+      const double dist = length(d);
+      if (f == 0 || dist <= 0 || max_component(l.rgb) <= 0) continue;
+      irradiance[q * lights + j] =
+          l.rgb * (l.distribution->intensity(l.frame.to_photometric(d / dist)) * f);
+      toward[q * lights + j] = d / -dist;
+      any = true;
+    }
+  }
+  if (!any) return;
+  for_object_rows(
+      [&](const ObjectRows& rows, std::size_t i, std::size_t row, float* sum) {
+        const Vec3 receiver =
+            row < receivers ? room.ray_point(row) : placed_.ray_points[row - receivers];
+        for (std::size_t e = rows.begin[i]; e < rows.end[i]; ++e) {
+          if (rows.columns[e] < vertices) continue;
+          const std::size_t q = rows.columns[e] - vertices;
+          if (!object_brdf_[q]) continue;
+          const Vec3 n = placed_.normals[q];
+          Vec3 v = receiver - placed_.positions[q];
+          const double d = length(v);
+          if (!(d > 0) || dot(n, v) <= 0) continue;
+          v = v / d;
+          Rgb glossy, diffuse;
+          for (std::size_t j = 0; j < lights; ++j) {
+            const Rgb& e_j = irradiance[q * lights + j];
+            if (max_component(e_j) <= 0) continue;
+            glossy +=
+                metallic_roughness_brdf(*object_brdf_[q], n, toward[q * lights + j], v) * e_j * kPi;
+            diffuse += e_j;
+          }
+          const float* rho = &albedo_[3 * (vertices + q)];
+          const Rgb change{glossy.r - rho[0] * diffuse.r, glossy.g - rho[1] * diffuse.g,
+                           glossy.b - rho[2] * diffuse.b};
+          sum[0] += rows.values[e] * static_cast<float>(change.r);
+          sum[1] += rows.values[e] * static_cast<float>(change.g);
+          sum[2] += rows.values[e] * static_cast<float>(change.b);
+        }
+      },
+      out);
+}
+
+void ObjectLighting::set_materials(std::span<const Material> materials) {
+  object_brdf_.clear();
+  for (const ObjectMesh& mesh : meshes_) {
+    for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+      std::optional<MetallicRoughness> brdf;
+      if (v < mesh.vertex_material.size()) {
+        const Material& m = materials[mesh.vertex_material[v]];  // validated on read
+        if (m.glossy && !m.portal) {
+          brdf = metallic_roughness_of(m);
+          brdf->albedo = brdf->albedo * vertex_texture_at(std::span<const float>(mesh.texture), v);
+        }
+      }
+      object_brdf_.push_back(brdf);
+    }
+  }
+  glossy_ = std::any_of(object_brdf_.begin(), object_brdf_.end(),
+                        [](const auto& b) { return b.has_value(); });
 }
 
 void ObjectLighting::add_glass_light(const GlassLuminance& glass, std::span<float> out) {

@@ -16,14 +16,16 @@
 //   D  = ΔE_d + [C; H] · ρE0 + light through windows the objects gain or hide,
 //   ΔE = D + [G + C; H] · ρ ΔE,
 //
-// the second bounced with engine/bounce_solver.h (warm-started from the last frame: an object
+// (glossy object vertices reflecting the luminaires' part of ΔE_d by their BRDF toward each
+// receiver in place of their diffuse stand-in: set_materials), the second bounced with
+// engine/bounce_solver.h (warm-started from the last frame: an object
 // dragged a little takes a bounce or two), the objects' rows applied once per sweep, rows
 // that vertices take from proxies (receiver_proxies.h) spread from the proxies' values. E0 being
 // the empty room's converged light (E0 = E0_d + G ρ E0), E0 + ΔE solves the room with its objects
 // exactly as the stored estimator would. Sensors are gathered once from the converged light.
 //
-// Pinned by tests/runtime/object_transfer_test.cpp and
-// tests/render/object_accuracy_test.cpp.
+// Pinned by tests/runtime/object_transfer_test.cpp, tests/render/object_accuracy_test.cpp
+// and tests/cli/glossy_object_test.cpp.
 #pragma once
 
 #include <functional>
@@ -34,6 +36,7 @@
 #include <vector>
 
 #include "engine/runtime_scene.h"
+#include "material/metallic_roughness.h"
 #include "math/placement.h"
 #include "scene/scene.h"
 #include "sources/luminaire/luminaire_direct.h"
@@ -87,6 +90,11 @@ class ObjectLighting {
   // objects' vertices their materials' (engine/material_reflectance.h; objects from files
   // without their vertices' materials keep theirs).
   void set_albedo(std::span<const float> room_albedo, std::span<const Material> materials);
+  // The objects' glossy materials (the scene's or a state's): an object vertex of a glossy
+  // material reflects the luminaires' direct light toward each receiver by its BRDF in the
+  // objects' rows (what the diffuse stand-in reflected taken out, as the room's glossy first
+  // bounce does: engine/glossy_first_bounce.h); the rest of its light as the stand-in.
+  void set_materials(std::span<const Material> materials);
 
   // Adds ΔE to `out` (3 per room receiver); without direct light, ΔE less ΔE_d (what
   // renderers that trace direct light per pixel, through the objects, still need).
@@ -112,6 +120,13 @@ class ObjectLighting {
   void apply_object_rows(std::span<const float> light, std::span<float> out, bool sensors_only);
   // out += the light through windows that the objects' rows gain or hide.
   void add_glass_light(const GlassLuminance& glass, std::span<float> out);
+  // out += what glossy object vertices reflect of the luminaires toward each receiver by
+  // their BRDF, less what their diffuse stand-in reflects of it (set_materials).
+  void add_glossy_reflection(const ObjectLightInputs& in, std::span<float> out);
+  // out (3 per solver row) += row_sum(rows, i, transfer row, sum) over every object row, rows
+  // of vertices that take them from proxies spread from the proxies' sums.
+  template <typename RowSum>
+  void for_object_rows(const RowSum& row_sum, std::span<float> out);
 
   const RuntimeScene* room_;
   ObjectTransferSettings settings_;
@@ -124,6 +139,8 @@ class ObjectLighting {
   std::vector<std::uint32_t> moved_;
   std::optional<PlacedObjects> lit_;
   std::vector<float> albedo_;  // 3 per unified row that reflects: room vertices, objects
+  std::vector<std::optional<MetallicRoughness>> object_brdf_;  // per object vertex, if glossy
+  bool glossy_ = false;                                        // any object vertex glossy
   std::vector<float> direct_;  // ΔE_d: 3 per unified row (room vertices, objects, sensors)
   // Per luminaire: where its shadow rays started from and ended on, and per unified row what
   // the objects change in its geometry factor (luminaire_direct.h direct_factor), the empty
