@@ -11,15 +11,25 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "agreement.h"
 #include "image/image_exr.h"
 #include "run_command.h"
+#include "support/scene_json.h"
 
 namespace relight {
 namespace {
 
 namespace fs = std::filesystem;
+
+// `document` (a scene without geometry) in a 4 × 2.6 × 4 m room of quads, written to `path`.
+void write_in_room(const char* document, const std::string& floor, const std::string& ceiling,
+                   const std::string& walls, const fs::path& path) {
+  nlohmann::json scene = nlohmann::json::parse(document);
+  scene["geometry"] = testing::quad_room(4, 2.6, 4, floor, ceiling, walls);
+  std::ofstream(path) << scene.dump(2);
+}
 using testing::CommandResult;
 using testing::run_relight;
 using testing::TempDir;
@@ -31,14 +41,6 @@ const char* kRoom = R"({
     "ceiling": {"albedo": [0.8, 0.8, 0.8]},
     "steel": {"albedo": [0.8, 0.8, 0.82], "metallic": 1, "roughness": 0.3}
   },
-  "geometry": [
-    {"type": "quad", "corner": [0, 0, 0], "u": [0, 0, 4], "v": [4, 0, 0], "material": "floor"},
-    {"type": "quad", "corner": [0, 2.6, 0], "u": [4, 0, 0], "v": [0, 0, 4], "material": "ceiling"},
-    {"type": "quad", "corner": [0, 0, 0], "u": [0, 2.6, 0], "v": [0, 0, 4], "material": "wall"},
-    {"type": "quad", "corner": [4, 0, 0], "u": [0, 0, 4], "v": [0, 2.6, 0], "material": "wall"},
-    {"type": "quad", "corner": [0, 0, 4], "u": [0, 2.6, 0], "v": [4, 0, 0], "material": "wall"},
-    {"type": "quad", "corner": [0, 0, 0], "u": [4, 0, 0], "v": [0, 2.6, 0], "material": "wall"}
-  ],
   "objects": [
     {"name": "cabinet", "geometry": [{"type": "box", "min": [1.0, 0, 1.0], "max": [1.8, 1.2, 1.5], "material": "steel"}]}
   ],
@@ -58,7 +60,7 @@ TEST(GlossyObject, MovedSteelCabinetRendersWithinFivePercentOfTheReferenceImage)
   const TempDir dir;
   const fs::path scene = dir.path() / "room.json", state = dir.path() / "state.json",
                  rlt = dir.path() / "room.rlt";
-  std::ofstream(scene) << kRoom;
+  write_in_room(kRoom, "floor", "ceiling", "wall", scene);
   std::ofstream(state) << kState;
   CommandResult r =
       run_relight("precompute '" + scene.string() + "' -o '" + rlt.string() + "' --no-progress");
@@ -105,14 +107,6 @@ const char* kPanelRoom = R"({
     "floor": {"albedo": [0.5, 0.5, 0.5]},
     "steel": {"albedo": [0.9, 0.9, 0.9], "metallic": 1, "roughness": 0.4}
   },
-  "geometry": [
-    {"type": "quad", "corner": [0, 0, 0], "u": [0, 0, 4], "v": [4, 0, 0], "material": "floor"},
-    {"type": "quad", "corner": [0, 2.6, 0], "u": [4, 0, 0], "v": [0, 0, 4], "material": "dim"},
-    {"type": "quad", "corner": [0, 0, 0], "u": [0, 2.6, 0], "v": [0, 0, 4], "material": "dim"},
-    {"type": "quad", "corner": [4, 0, 0], "u": [0, 0, 4], "v": [0, 2.6, 0], "material": "dim"},
-    {"type": "quad", "corner": [0, 0, 4], "u": [0, 2.6, 0], "v": [4, 0, 0], "material": "dim"},
-    {"type": "quad", "corner": [0, 0, 0], "u": [4, 0, 0], "v": [0, 2.6, 0], "material": "dim"}
-  ],
   "objects": [
     {"name": "panel", "geometry": [{"type": "box", "min": [2.49, 0.7, 1.5], "max": [2.51, 1.7, 2.5], "material": "steel"}]}
   ],
@@ -132,7 +126,7 @@ TEST(GlossyObject, AMovedSteelPanelThrowsASpotsReflectionOntoTheFloorAsTheRefere
   const fs::path scene = dir.path() / "panel.json", state = dir.path() / "state.json",
                  rlt = dir.path() / "panel.rlt", probe = dir.path() / "probe.csv",
                  reference = dir.path() / "reference.csv";
-  std::ofstream(scene) << kPanelRoom;
+  write_in_room(kPanelRoom, "floor", "dim", "dim", scene);
   std::ofstream(state) << kPanelState;
   CommandResult r =
       run_relight("precompute '" + scene.string() + "' -o '" + rlt.string() + "' --no-progress");

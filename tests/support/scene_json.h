@@ -1,5 +1,6 @@
 // Geometry entries of a scene document (docs/scene-format.md), for tests that build scenes in
-// code: one spelling of a box, a quad, a wall with a window and a sunny south window.
+// code: one spelling of a box, a quad, a room of quads, a wall with a window and a sunny south
+// window.
 #pragma once
 
 #include <algorithm>
@@ -27,6 +28,19 @@ inline nlohmann::json quad(Vec3 corner, Vec3 u, Vec3 v, const std::string& mater
           {"u", {u.x, u.y, u.z}},
           {"v", {v.x, v.y, v.z}},
           {"material", material}};
+}
+
+// A room 0..width × 0..height × 0..depth of six quads facing in: the floor, the ceiling, and
+// the walls x = 0, x = width, z = depth, z = 0.
+inline std::vector<nlohmann::json> quad_room(double width, double height, double depth,
+                                             const std::string& floor, const std::string& ceiling,
+                                             const std::string& walls) {
+  return {quad({0, 0, 0}, {0, 0, depth}, {width, 0, 0}, floor),
+          quad({0, height, 0}, {width, 0, 0}, {0, 0, depth}, ceiling),
+          quad({0, 0, 0}, {0, height, 0}, {0, 0, depth}, walls),
+          quad({width, 0, 0}, {0, 0, depth}, {0, height, 0}, walls),
+          quad({0, 0, depth}, {0, height, 0}, {width, 0, 0}, walls),
+          quad({0, 0, 0}, {width, 0, 0}, {0, height, 0}, walls)};
 }
 
 // The wall z = `z` of a room 0..width × 0..height seen from inside (facing −z), in pieces
