@@ -65,13 +65,15 @@ void run_reference(const Scene& scene_file, const ReferenceRequest& request) {
   for (const Portal& portal : scene.portals) {
     environments.push_back(load_environment(portal.environment));
   }
-  const ReferenceScene ref =
+  ReferenceScene ref =
       make_reference_scene(scene, mesh, traced, luminaires, std::move(environments),
                            place_emitters(scene.emitters, state.emitters), exterior);
+  if (scene.environment) light_with_environment(ref, load_environment(*scene.environment));
   ReferenceSettings settings;
   settings.spp = request.spp;
   settings.seed = request.seed;
   settings.progress = request.progress;
+  settings.max_bounces = request.max_bounces;
 
   // Validate the camera before spending time on sensors.
   std::optional<Camera> camera;
@@ -122,6 +124,10 @@ void add_reference_command(CLI::App& app, Action& action) {
   cmd->add_option("--state", args->state,
                   "lighting state JSON (luminaires, windows, emitters) to trace the scene under");
   cmd->add_option("--sensors-out", args->sensors_out, "write sensor illuminance CSV here");
+  cmd->add_option("--max-bounces", args->request.max_bounces,
+                  "longest path counted: 1 = direct light only, 2 = one more reflection, ...; "
+                  "0 (default) = no limit")
+      ->check(CLI::Range(0, 1000));
   add_view_options(*cmd, args->view);
   cmd->add_flag("!--no-progress", args->request.progress, "no progress bar");
   cmd->callback([args, &action] {

@@ -22,6 +22,7 @@ struct ImageOutput {
 struct ReferenceRequest {
   int spp = 64;
   std::uint64_t seed = 1;
+  int max_bounces = 0;  // ReferenceSettings::max_bounces
   std::optional<std::filesystem::path> sensors_out;
   bool sensors = true;                // estimate sensors (and print statistics)
   std::optional<std::string> camera;  // scene camera name; first camera when absent

@@ -27,17 +27,6 @@ Rgb grey(double v) {
   return {v, v, v};
 }
 
-// Compass rotation of the map: a map direction at azimuth A is seen at A + rotate_deg.
-struct MapRotation {
-  double c = 1, s = 0;
-  explicit MapRotation(double rotate_deg)
-      : c(std::cos(radians(rotate_deg))), s(std::sin(radians(rotate_deg))) {}
-  // World → map frame (azimuth − rotate_deg).
-  Vec3 to_map(Vec3 d) const { return {d.x * c + d.z * s, d.y, d.z * c - d.x * s}; }
-  // Map → world frame (azimuth + rotate_deg).
-  Vec3 to_world(Vec3 d) const { return {d.x * c - d.z * s, d.y, d.z * c + d.x * s}; }
-};
-
 Rgb map_lookup(const EquirectMap& map, const MapRotation& rot, double scale, Vec3 dir) {
   const EquirectTexel t = equirect_texel(map.width, map.height, rot.to_map(dir));
   return map.texels[static_cast<std::size_t>(t.j) * map.width + t.i] * scale;

@@ -44,6 +44,7 @@
 //           Σ L·Ω over the cube equals Σ L·Ω over the map to rounding.
 #pragma once
 
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -60,6 +61,17 @@ namespace relight {
 struct EquirectMap {
   int width = 0, height = 0;
   std::vector<Rgb> texels;
+};
+
+// Compass rotation of a map: a map direction at azimuth A is seen at A + rotate_deg.
+struct MapRotation {
+  double c = 1, s = 0;
+  explicit MapRotation(double rotate_deg)
+      : c(std::cos(rotate_deg * (kPi / 180))), s(std::sin(rotate_deg * (kPi / 180))) {}
+  // World → map frame (azimuth − rotate_deg).
+  Vec3 to_map(Vec3 d) const { return {d.x * c + d.z * s, d.y, d.z * c - d.x * s}; }
+  // Map → world frame (azimuth + rotate_deg).
+  Vec3 to_world(Vec3 d) const { return {d.x * c - d.z * s, d.y, d.z * c + d.x * s}; }
 };
 
 enum class EnvironmentKind { kUniform, kMap, kSky };

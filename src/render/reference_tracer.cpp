@@ -27,8 +27,17 @@ struct PathContext {
   const ReferenceScene& ref;
   Pcg32 rng;
   int max_depth;
+  // Surfaces a path from a sensor or a seen point may still reflect at (max_bounces − 1).
+  int hits = std::numeric_limits<int>::max();
   std::uint64_t rays = 0;
 };
+
+PathContext path_context(const ReferenceScene& ref, const ReferenceSettings& settings,
+                         std::uint64_t stream) {
+  PathContext ctx{ref, Pcg32(settings.seed, stream), settings.max_depth};
+  if (settings.max_bounces > 0) ctx.hits = settings.max_bounces - 1;
+  return ctx;
+}
 
 // Which luminaires a direct estimate covers: sensors evaluate point sources once and
 // average the ones with openings over their samples.
@@ -171,6 +180,63 @@ Rgb emitters_illuminance(PathContext& ctx, Vec3 p, Vec3 n, const NextEventWeight
                              ctx.rng, ctx.rays, weight);
 }
 
+// Whether a ray from `origin` along w leaves the scene: no surface, no portal glass.
+bool leaves_scene(PathContext& ctx, const Ray& ray) {
+  ctx.rays += 2;
+  return !ctx.ref.traced.opaque.occluded(ray) && !ctx.ref.traced.portals.occluded(ray);
+}
+
+// The weight of a next-event sample toward w of density light_pdf at a point of normal n
+// against the continuation from it: the BRDF's at a glossy point (f times the weight, as
+// `weight` gives it), the cosine density's at a Lambertian one.
+Rgb open_weight(const NextEventWeight& weight, Vec3 n, Vec3 w, double light_pdf) {
+  if (weight.glossy != nullptr) return weight(w, light_pdf);
+  const double h = power_heuristic(light_pdf, std::max(0.0, dot(n, w)) / kPi);
+  return {h, h, h};
+}
+
+// The top-level environment at a surface point by next-event estimation (see the header).
+Rgb open_illuminance(PathContext& ctx, Vec3 p, Vec3 n, const NextEventWeight& weight = {}) {
+  const ReferenceScene& ref = ctx.ref;
+  if (!ref.open_environment) return {};
+  const Vec3 origin = offset_from_surface(p, n);
+  Rgb e;
+  const EnvironmentSampler::Sample s =
+      ref.open_sampler->sample(ctx.rng.next_double(), ctx.rng.next_double());
+  if (const double c = dot(n, s.direction);
+      s.pdf > 0 && c > 0 && leaves_scene(ctx, {origin, s.direction})) {
+    e += ref.open_environment->diffuse_radiance(s.direction) *
+         open_weight(weight, n, s.direction, s.pdf) * (c / s.pdf);
+  }
+  if (const std::optional<SunDisc>& sun = ref.open_environment->sun()) {
+    const double cos_a = 1 - ctx.rng.next_double() * (1 - sun->cos_angular_radius);
+    const double sin_a = std::sqrt(std::max(0.0, 1 - cos_a * cos_a));
+    const double phi = 2 * kPi * ctx.rng.next_double();
+    const Vec3 w = normalize(frame_from_normal(sun->direction)
+                                 .to_world({std::cos(phi) * sin_a, std::sin(phi) * sin_a, cos_a}));
+    if (const double c = dot(n, w); c > 0 && leaves_scene(ctx, {origin, w})) {
+      e +=
+          open_weight(weight, n, w, 1 / sun->solid_angle) * (sun->luminance * sun->solid_angle * c);
+    }
+  }
+  return e;
+}
+
+// What a continuation ray drawn with density `pdf` that met no surface finds of the top-level
+// environment, weighted against its next-event estimate.
+Rgb open_escape(PathContext& ctx, const Ray& ray, double pdf) {
+  const ReferenceScene& ref = ctx.ref;
+  if (!ref.open_environment || pdf <= 0 || !leaves_scene(ctx, ray)) return {};
+  const Vec3 w = normalize(ray.direction);
+  Rgb l =
+      ref.open_environment->diffuse_radiance(w) * power_heuristic(pdf, ref.open_sampler->pdf(w));
+  if (const std::optional<SunDisc>& sun = ref.open_environment->sun();
+      sun && dot(w, sun->direction) >= sun->cos_angular_radius) {
+    l += Rgb{1, 1, 1} * (sun->luminance * power_heuristic(pdf, 1 / sun->solid_angle));
+  }
+  return l;
+}
+
 // What a glossy surface reflects toward v from every light by next-event estimation, each
 // sample weighted against the BRDF sample that continues the path (render/reference_weight.h).
 Rgb glossy_next_events(PathContext& ctx, const SurfaceHit& s, Vec3 v,
@@ -178,7 +244,8 @@ Rgb glossy_next_events(PathContext& ctx, const SurfaceHit& s, Vec3 v,
   const NextEventWeight weight{s.glossy ? &*s.glossy : nullptr, s.normal, v};
   return direct_illuminance(ctx, s.position, s.normal, Sources::kAll, weight, arrival) +
          daylight_illuminance(ctx, s.position, s.normal, weight, arrival) +
-         emitters_illuminance(ctx, s.position, s.normal, weight);
+         emitters_illuminance(ctx, s.position, s.normal, weight) +
+         open_illuminance(ctx, s.position, s.normal, weight);
 }
 
 // A continuation of a path at glossy surface s seen from v: the BRDF-sampled direction, its
@@ -313,8 +380,13 @@ Rgb incident_luminance(PathContext& ctx, Vec3 origin, Vec3 dir, Continuation how
     SurfaceHit s;
     if (!trace_surface(ctx, ray, s)) {
       if (pdf > 0) result += throughput * escaped(ctx, ray, pdf, arrival);
+      // The top-level environment: a glossy continuation's density, or the cosine density.
+      result += throughput *
+                open_escape(ctx, ray,
+                            pdf > 0 ? pdf : std::max(0.0, dot(from_normal, ray.direction)) / kPi);
       break;
     }
+    if (depth >= ctx.hits) break;  // --max-bounces: no more reflections
     arrival = {};
     if (s.glossy) {
       // L = Σ next events (weighted) + f cos / p · L_in(l'), l' by BRDF sampling.
@@ -340,7 +412,8 @@ Rgb incident_luminance(PathContext& ctx, Vec3 origin, Vec3 dir, Continuation how
     const Rgb e = direct_illuminance(ctx, s.position, s.normal) +
                   daylight_illuminance(ctx, s.position, s.normal) +
                   emitters_illuminance(ctx, s.position, s.normal) +
-                  mirror_illuminance(ctx, s.position, s.normal);
+                  open_illuminance(ctx, s.position, s.normal) +
+                  (depth + 1 < ctx.hits ? mirror_illuminance(ctx, s.position, s.normal) : Rgb{});
     result += throughput * lambertian_radiance(s.albedo, e);
     throughput = throughput * s.albedo;
     const double survive = std::min(1.0, max_component(s.albedo));
@@ -358,7 +431,7 @@ Rgb incident_luminance(PathContext& ctx, Vec3 origin, Vec3 dir, Continuation how
 Rgb indirect_sample(PathContext& ctx, Vec3 p, Vec3 n) {
   return incident_luminance(ctx, offset_from_surface(p, n), cosine_direction(n, ctx.rng), {0, n}) *
              kPi +
-         mirror_illuminance(ctx, p, n);
+         (ctx.hits >= 1 ? mirror_illuminance(ctx, p, n) : Rgb{});
 }
 
 }  // namespace
@@ -368,7 +441,7 @@ ReferenceScene make_reference_scene(const Scene& scene, const PreparedMesh& mesh
                                     const std::vector<PlacedLuminaire>& luminaires,
                                     std::vector<Environment> environments, PlacedEmitters emitters,
                                     const std::vector<std::vector<ExteriorObject>>& exterior) {
-  ReferenceScene ref{mesh, traced, luminaires, {}, {}, {}, {}, {}, {}, {}, {}};
+  ReferenceScene ref{mesh, traced, luminaires, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
   ref.emitters = make_reference_emitters(std::move(emitters));
   ref.portals = make_reference_portals(scene, mesh, std::move(environments), exterior);
   for (std::size_t j = 0; j < luminaires.size(); ++j) {
@@ -402,6 +475,11 @@ ReferenceScene make_reference_scene(const Scene& scene, const PreparedMesh& mesh
   return ref;
 }
 
+void light_with_environment(ReferenceScene& ref, Environment environment) {
+  ref.open_sampler.emplace(environment);
+  ref.open_environment = std::move(environment);
+}
+
 std::vector<Rgb> reference_sensor_illuminance(const Scene& scene, const ReferenceScene& ref,
                                               const ReferenceSettings& settings,
                                               ReferenceStats* stats) {
@@ -417,7 +495,7 @@ std::vector<Rgb> reference_sensor_illuminance(const Scene& scene, const Referenc
   Progress progress("reference sensors", points.size(), settings.progress);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size()), [&](const auto& range) {
     for (std::size_t i = range.begin(); i != range.end(); ++i) {
-      PathContext ctx{ref, Pcg32(settings.seed, i), settings.max_depth};
+      PathContext ctx = path_context(ref, settings, i);
       // Point sources once (exact); luminaires with an opening, daylight and the reflected
       // light averaged over the samples.
       const Rgb direct = direct_illuminance(ctx, points[i].p, points[i].n, Sources::kPoints);
@@ -426,6 +504,7 @@ std::vector<Rgb> reference_sensor_illuminance(const Scene& scene, const Referenc
         sampled += direct_illuminance(ctx, points[i].p, points[i].n, Sources::kOpenings) +
                    daylight_illuminance(ctx, points[i].p, points[i].n) +
                    emitters_illuminance(ctx, points[i].p, points[i].n) +
+                   open_illuminance(ctx, points[i].p, points[i].n) +
                    indirect_sample(ctx, points[i].p, points[i].n);
       }
       result[i] = direct + sampled / settings.spp;
@@ -454,7 +533,7 @@ ReferenceImages reference_render(const PinholeCamera& camera, const ReferenceSce
     for (int y = rows.begin(); y != rows.end(); ++y) {
       for (int x = 0; x < w; ++x) {
         const std::size_t index = static_cast<std::size_t>(y) * w + x;
-        PathContext ctx{ref, Pcg32(settings.seed, kPixelStreams + index), settings.max_depth};
+        PathContext ctx = path_context(ref, settings, kPixelStreams + index);
         Rgb e_sum, l_sum;
         int covered = 0, exterior = 0;
         for (int s = 0; s < settings.spp; ++s) {
@@ -464,7 +543,14 @@ ReferenceImages reference_render(const PinholeCamera& camera, const ReferenceSce
           if (!trace_surface(ctx, ray, hit)) {
             // Looking out through a portal: the environment, sun disc included.
             const std::int32_t p = escape_portal(view, ray, ctx.rays);
-            if (p == kNoPortal) continue;
+            if (p == kNoPortal) {
+              // Or out of the scene: the top-level environment.
+              if (ref.open_environment && leaves_scene(ctx, ray)) {
+                l_sum += ref.open_environment->radiance(ray.direction);
+                ++exterior;
+              }
+              continue;
+            }
             const ReferencePortal& portal = ref.portals.portals[static_cast<std::size_t>(p)];
             l_sum += through_glass(portal, ray.origin, ray.direction, true, ctx.rng, ctx.rays);
             ++exterior;
@@ -473,6 +559,7 @@ ReferenceImages reference_render(const PinholeCamera& camera, const ReferenceSce
           const Rgb e = direct_illuminance(ctx, hit.position, hit.normal) +
                         daylight_illuminance(ctx, hit.position, hit.normal) +
                         emitters_illuminance(ctx, hit.position, hit.normal) +
+                        open_illuminance(ctx, hit.position, hit.normal) +
                         indirect_sample(ctx, hit.position, hit.normal);
           e_sum += e;
           if (hit.glossy) {

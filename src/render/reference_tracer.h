@@ -30,13 +30,20 @@
 // Near-mirrors (render/reference_mirror.h): wherever E is estimated, each luminaire's light
 // reflected by each near-mirror plane is also sampled about the luminaire's image, weighted by
 // the power heuristic against the cosine sampling that otherwise finds it.
+// A top-level environment (issue 15): wherever the luminaires get a next-event estimate, one
+// direction drawn from the environment's sampler (and one from a sky's sun cone) that must
+// leave the scene, weighted by the power heuristic against the continuation (cosine at a
+// Lambertian point, the BRDF at a glossy one), which adds what it finds outside with the
+// complementary weight; camera rays that leave the scene see it.
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "engine/mirror_planes.h"
 #include "image/image.h"
+#include "light/environment_sampling.h"
 #include "light/luminaire_frame.h"
 #include "material/metallic_roughness.h"
 #include "math/rgb.h"
@@ -54,6 +61,10 @@ struct ReferenceSettings {
   std::uint64_t seed = 1;
   int max_depth = 1000;  // safety bound; Russian roulette ends paths long before
   bool progress = true;
+  // The longest path counted, in reflections plus one (issue 15): 1 = direct light only (at a
+  // sensor light straight from its sources, at a pixel the surface seen lit directly), 2 =
+  // one more reflection, …; 0 = no limit.
+  int max_bounces = 0;
 };
 
 // Everything the tracer reads; built once per scene.
@@ -82,7 +93,15 @@ struct ReferenceScene {
   // luminaire's image (render/reference_mirror.h).
   std::vector<MirrorPlane> mirror_planes;
   std::vector<std::int32_t> triangle_mirror;
+  // A top-level environment (issue 15) and its sampler (light/environment_sampling.h): seen by
+  // every ray that leaves the scene without meeting a surface or portal glass; none: light
+  // comes from outside only through portals.
+  std::optional<Environment> open_environment;
+  std::optional<EnvironmentSampler> open_sampler;
 };
+
+// Lights `ref` with a top-level environment from now on.
+void light_with_environment(ReferenceScene& ref, Environment environment);
 
 // `environments`: one per scene portal, in order (see make_reference_portals); may stay
 // empty only for a scene without portals.

@@ -177,6 +177,10 @@ struct Scene {
   std::vector<SensorSet> sensors;
   std::vector<Camera> cameras;
   std::vector<Portal> portals;
+  // A top-level environment (issue 15): lights the scene from infinity wherever its geometry
+  // does not block it (a showroom under a sky or a captured map). So far only `relight
+  // reference` lights it; the precompute refuses such a scene.
+  std::optional<EnvironmentSpec> environment;
   std::vector<ExteriorGeometry> exterior;
   std::vector<Emitter> emitters;
   std::vector<MovableObject> objects;

@@ -540,7 +540,7 @@ Scene scene_from_json(const nlohmann::json& document, const fs::path& file,
   const JsonNode root(document, file.string(), "/");
   root.expect_keys({"description", "materials", "geometry", "luminaires", "sensors", "cameras",
                     "portals", "exterior", "emitters", "objects", "precompute",
-                    "maintenance_factor"});
+                    "maintenance_factor", "environment"});
   Loader loader;
   loader.scene.file = file;
   loader.base_dir = file.has_parent_path() ? file.parent_path() : fs::path(".");
@@ -556,6 +556,9 @@ Scene scene_from_json(const nlohmann::json& document, const fs::path& file,
   if (const auto n = root.find("sensors")) loader.load_sensors(*n);
   if (const auto n = root.find("cameras")) loader.load_cameras(*n);
   if (const auto n = root.find("portals")) loader.load_portals(*n);
+  if (const auto n = root.find("environment")) {
+    loader.scene.environment = parse_environment(*n, loader.base_dir, embedded == nullptr);
+  }
   if (const auto n = root.find("exterior")) loader.load_exterior(*n);
   if (const auto n = root.find("emitters")) loader.load_emitters(*n);
   if (const auto n = root.find("objects")) loader.load_objects(*n);

@@ -3,6 +3,7 @@
 #include <array>
 #include <chrono>
 
+#include "common/input_error.h"
 #include "engine/gather_operator.h"
 #include "engine/transfer_blocks.h"
 #include "sources/object/object_mesh.h"
@@ -37,6 +38,11 @@ std::vector<std::uint32_t> triangle_portals(const Scene& scene, const PreparedMe
 }  // namespace
 
 Precomputed precompute_transfer(const Scene& scene, const PrecomputeOptions& options) {
+  if (scene.environment) {
+    fail_input(scene.file.string() + ":/environment",
+               "a top-level environment is lit only by relight reference so far; the transfer "
+               "does not carry it yet (issue 15)");
+  }
   Precomputed out;
   out.sh_order = scene.precompute.sh_order;
   out.direct_mode = scene.precompute.direct;

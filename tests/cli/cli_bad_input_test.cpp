@@ -1,7 +1,11 @@
 // The exit-code contract: bad input or arguments exit 2 with exactly one line
 // "error: FILE[:LINE|JSON-PATH]: reason" on stderr, never a crash.
+#include <filesystem>
+#include <vector>
+
 #include <gtest/gtest.h>
 
+#include "math/vec3.h"
 #include "run_command.h"
 
 namespace relight {
@@ -24,6 +28,40 @@ std::string room_with(const std::string& distribution) {
   std::string s = kRoom;
   s.replace(s.find("\"type\": \"DIST\""), 14, distribution);
   return s;
+}
+
+// A top-level environment (issue 15): a bad one gets its JSON path; `relight reference` lights
+// a good one (here an open floor under a uniform sky: an up-facing sensor reads π L), and
+// `relight precompute`, which does not carry it yet, refuses the scene rather than drop it.
+TEST(CliBadInput, TopLevelEnvironment) {
+  TempDir dir;
+  const std::string floor = R"({
+  "materials": { "grey": { "albedo": [0.5, 0.5, 0.5] } },
+  "geometry": [ { "type": "quad", "corner": [-50, 0, -50], "u": [0, 0, 100], "v": [100, 0, 0],
+                  "material": "grey" } ],
+  "sensors": [ { "name": "up", "points": [[0, 0, 0]] } ],
+  "environment": ENV
+})";
+  const auto with = [&](const std::string& env) {
+    std::string s = floor;
+    return s.replace(s.find("ENV"), 3, env);
+  };
+  const auto bad = dir.write("bad.json", with(R"({ "type": "uniform", "luminance": "bright" })"));
+  expect_input_error(run_relight("info '" + bad.string() + "'"),
+                     bad.string() + ":/environment/luminance:");
+  const auto good = dir.write("good.json", with(R"({ "type": "uniform", "luminance": 1000 })"));
+  const auto csv = dir.path() / "e.csv";
+  const testing::CommandResult r =
+      run_relight("reference '" + good.string() + "' --spp 4096 --max-bounces 1 --sensors-out '" +
+                  csv.string() + "' --no-progress");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::vector<double> lux = testing::sensor_lux(csv);
+  ASSERT_EQ(lux.size(), 1u);
+  EXPECT_NEAR(lux[0], 1000 * kPi, 0.02 * 1000 * kPi);
+  expect_input_error(run_relight("precompute '" + good.string() + "' -o '" +
+                                 (dir.path() / "x.rlt").string() + "' --no-progress"),
+                     good.string() + ":/environment: a top-level environment is lit only by");
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "x.rlt"));
 }
 
 TEST(CliBadInput, MalformedJson) {
