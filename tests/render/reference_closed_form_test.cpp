@@ -8,6 +8,7 @@
 #include "light/luminaire_frame.h"
 #include "render/reference_tracer.h"
 #include "scene/scene_loader.h"
+#include "support/scene_json.h"
 #include "trace/traced_scene.h"
 
 namespace relight {
@@ -73,18 +74,7 @@ TEST_P(ClosedSphere, EverySensorWithinTwoPercentOfDirectOverOneMinusRho) {
                     {"points", {{u.x * r, u.y * r, u.z * r}}},
                     {"normal", {-u.x, -u.y, -u.z}}});
   }
-  const json scene = {{"materials", {{"wall", {{"albedo", {rho, rho, rho}}}}}},
-                      {"geometry",
-                       {{{"type", "sphere"},
-                         {"center", {0, 0, 0}},
-                         {"radius", radius},
-                         {"normals", "inward"},
-                         {"material", "wall"}}}},
-                      {"luminaires",
-                       {{{"name", "centre"},
-                         {"position", {0, 0, 0}},
-                         {"distribution", {{"type", "isotropic"}, {"candela", intensity}}}}}},
-                      {"sensors", sets}};
+  const json scene = testing::closed_sphere(rho, radius, intensity, sets);
   const std::vector<Rgb> e = trace_sensors(scene, 16384);
   const double expected = intensity / (r * r) / (1 - rho);
   for (std::size_t i = 0; i < e.size(); ++i) {

@@ -151,19 +151,9 @@ TEST(ReferenceEnvironment, ASmallBrightSourceInAMapLightsAndShadowsAsItsClosedFo
 
 TEST(ReferenceEnvironment, MaxBouncesCutsAClosedSpheresSeriesAfterNTerms) {
   const double rho = 0.6, radius = 2.0, intensity = 100.0, r = radius * 0.999;
-  const json scene = {
-      {"materials", {{"wall", {{"albedo", {rho, rho, rho}}}}}},
-      {"geometry",
-       {{{"type", "sphere"},
-         {"center", {0, 0, 0}},
-         {"radius", radius},
-         {"normals", "inward"},
-         {"material", "wall"}}}},
-      {"luminaires",
-       {{{"name", "centre"},
-         {"position", {0, 0, 0}},
-         {"distribution", {{"type", "isotropic"}, {"candela", intensity}}}}}},
-      {"sensors", {{{"name", "wall"}, {"points", {{r, 0, 0}}}, {"normal", {-1, 0, 0}}}}}};
+  const json scene =
+      testing::closed_sphere(rho, radius, intensity,
+                             {{{"name", "wall"}, {"points", {{r, 0, 0}}}, {"normal", {-1, 0, 0}}}});
   // E = E_d (1 + ρ + … + ρ^(N−1)) with E_d = I / r².
   for (const int n : {1, 2, 3}) {
     const std::vector<Rgb> e = trace_sensors(scene, 4096, n);

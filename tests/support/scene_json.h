@@ -1,6 +1,6 @@
 // Geometry entries of a scene document (docs/scene-format.md), for tests that build scenes in
-// code: one spelling of a box, a quad, a room of quads, a wall with a window and a sunny south
-// window.
+// code: one spelling of a box, a quad, a room of quads, a closed sphere, a wall with a window
+// and a sunny south window.
 #pragma once
 
 #include <algorithm>
@@ -41,6 +41,25 @@ inline std::vector<nlohmann::json> quad_room(double width, double height, double
           quad({width, 0, 0}, {0, 0, depth}, {0, height, 0}, walls),
           quad({0, 0, depth}, {0, height, 0}, {width, 0, 0}, walls),
           quad({0, 0, 0}, {width, 0, 0}, {0, height, 0}, walls)};
+}
+
+// A closed sphere of albedo `rho` (normals inward) with an isotropic luminaire of `candela`
+// at its centre, the origin, and the sensor sets `sensors`: every point of its wall gets
+// E_d = I / R² directly and E_d / (1 − ρ) in all.
+inline nlohmann::json closed_sphere(double rho, double radius, double candela,
+                                    const nlohmann::json& sensors) {
+  return {{"materials", {{"wall", {{"albedo", {rho, rho, rho}}}}}},
+          {"geometry",
+           {{{"type", "sphere"},
+             {"center", {0, 0, 0}},
+             {"radius", radius},
+             {"normals", "inward"},
+             {"material", "wall"}}}},
+          {"luminaires",
+           {{{"name", "centre"},
+             {"position", {0, 0, 0}},
+             {"distribution", {{"type", "isotropic"}, {"candela", candela}}}}}},
+          {"sensors", sensors}};
 }
 
 // The wall z = `z` of a room 0..width × 0..height seen from inside (facing −z), in pieces
