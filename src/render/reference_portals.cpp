@@ -46,18 +46,6 @@ PortalPoint sample_portal_point(const PreparedMesh& mesh, const ReferencePortal&
   return {point_on_triangle(mesh, triangle, r * (1 - s), r * s), geometric_normal(mesh, triangle)};
 }
 
-// Two directions in the cone of the sun disc, each uniform in it (pdf 1 / solid_angle)
-// and mirror images of each other about its axis (antithetic: their cosines to any normal
-// sum to 2·cos α·cos θ_s, so the pair's estimate hardly varies where both are unoccluded).
-std::array<Vec3, 2> sample_sun_directions(const SunDisc& sun, Pcg32& rng) {
-  const double cos_a = 1 - rng.next_double() * (1 - sun.cos_angular_radius);
-  const double sin_a = std::sqrt(std::max(0.0, 1 - cos_a * cos_a));
-  const double phi = 2 * kPi * rng.next_double();
-  const double x = std::cos(phi) * sin_a, y = std::sin(phi) * sin_a;
-  const Frame frame = frame_from_normal(sun.direction);
-  return {normalize(frame.to_world({x, y, cos_a})), normalize(frame.to_world({-x, -y, cos_a}))};
-}
-
 // One area sample of portal p's continuous environment (the estimator in the header).
 Rgb environment_sample(const ExteriorView& view, std::size_t p, Vec3 origin, Vec3 n, Pcg32& rng,
                        std::uint64_t& rays, const NextEventWeight& weight) {
@@ -102,6 +90,15 @@ Rgb sun_sample(const ExteriorView& view, std::size_t p, Vec3 origin, Vec3 n, Pcg
 }
 
 }  // namespace
+
+std::array<Vec3, 2> sample_sun_directions(const SunDisc& sun, Pcg32& rng) {
+  const double cos_a = 1 - rng.next_double() * (1 - sun.cos_angular_radius);
+  const double sin_a = std::sqrt(std::max(0.0, 1 - cos_a * cos_a));
+  const double phi = 2 * kPi * rng.next_double();
+  const double x = std::cos(phi) * sin_a, y = std::sin(phi) * sin_a;
+  const Frame frame = frame_from_normal(sun.direction);
+  return {normalize(frame.to_world({x, y, cos_a})), normalize(frame.to_world({-x, -y, cos_a}))};
+}
 
 ReferencePortals make_reference_portals(const Scene& scene, const PreparedMesh& mesh,
                                         std::vector<Environment> environments,

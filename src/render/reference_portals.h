@@ -25,6 +25,7 @@
 //    across the disc, the only noise of a sunlit point.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -121,6 +122,12 @@ struct ExteriorView {
 // The portal through which `ray` leaves the scene: the first portal triangle along it when
 // no opaque surface lies anywhere on it; kNoPortal otherwise. Counts the rays it casts.
 std::int32_t escape_portal(const ExteriorView& view, const Ray& ray, std::uint64_t& rays);
+
+// Two directions in the cone of the sun disc, each uniform in it (pdf 1 / solid_angle) and
+// mirror images of each other about its axis (antithetic: their cosines to any normal sum to
+// 2·cos α·cos θ_s, so the pair's estimate hardly varies where both are unoccluded). The
+// portals' sun samples and the top-level environment's (reference_tracer.cpp) use it.
+std::array<Vec3, 2> sample_sun_directions(const SunDisc& sun, Pcg32& rng);
 
 // Illuminance (lux per channel) at `origin` (already off the surface) on a plane of unit
 // normal n from the environments seen through the portals: per portal one area sample of

@@ -209,14 +209,12 @@ Rgb open_illuminance(PathContext& ctx, Vec3 p, Vec3 n, const NextEventWeight& we
          open_weight(weight, n, s.direction, s.pdf) * (c / s.pdf);
   }
   if (const std::optional<SunDisc>& sun = ref.open_environment->sun()) {
-    const double cos_a = 1 - ctx.rng.next_double() * (1 - sun->cos_angular_radius);
-    const double sin_a = std::sqrt(std::max(0.0, 1 - cos_a * cos_a));
-    const double phi = 2 * kPi * ctx.rng.next_double();
-    const Vec3 w = normalize(frame_from_normal(sun->direction)
-                                 .to_world({std::cos(phi) * sin_a, std::sin(phi) * sin_a, cos_a}));
-    if (const double c = dot(n, w); c > 0 && leaves_scene(ctx, {origin, w})) {
-      e +=
-          open_weight(weight, n, w, 1 / sun->solid_angle) * (sun->luminance * sun->solid_angle * c);
+    // The antithetic pair of the portals' sun samples, half each.
+    for (const Vec3& w : sample_sun_directions(*sun, ctx.rng)) {
+      if (const double c = dot(n, w); c > 0 && leaves_scene(ctx, {origin, w})) {
+        e += open_weight(weight, n, w, 1 / sun->solid_angle) *
+             (0.5 * sun->luminance * sun->solid_angle * c);
+      }
     }
   }
   return e;

@@ -78,6 +78,22 @@ TEST(ReferenceEnvironment, AnOpenFloorUnderAUniformEnvironmentIsLitOnceAndReflec
       luminance(e[0]), luminance(e[2]), up, down, luminance(direct[2]));
 }
 
+// The open floor under a CIE clear sky (type 12) of 10,000 lx horizontal illuminance with a
+// 60,000 lx sun at 40°: facing up, the sky's 10,000 lx plus the sun's 60,000 · sin 40°.
+TEST(ReferenceEnvironment, AnOpenFloorUnderASkyWithASunGetsBoth) {
+  json document = open_floor();
+  document["environment"] = {{"type", "cie_sky"},
+                             {"sky_type", 12},
+                             {"horizontal_illuminance", 10000},
+                             {"sun", {{"azimuth_deg", 180}, {"altitude_deg", 40}}},
+                             {"sun_illuminance", 60000}};
+  const std::vector<Rgb> e = trace_sensors(document, 16384);
+  const double up = 10000 + 60000 * std::sin(40 * kPi / 180);
+  std::printf("sky and sun: up %.0f, %.0f lx (closed form %.0f)\n", luminance(e[0]),
+              luminance(e[1]), up);
+  for (int i = 0; i < 2; ++i) EXPECT_NEAR(luminance(e[i]), up, 0.01 * up) << i;
+}
+
 // The same floor made of satin metal (F0 0.8, roughness 0.3): its luminance toward v is L
 // times its directional albedo, so the sensor looking down reads π L times the hemispherical
 // albedo — next events weighted against the BRDF's continuation, each light counted once.

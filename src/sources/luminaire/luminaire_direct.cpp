@@ -144,7 +144,7 @@ Rgb luminaire_direct_irradiance(const Occluders& occluders, std::span<const Lumi
     if (max_component(l.rgb) <= 0) continue;
     const DirectFactor f = direct_factor(occluders, p, n, l.position, l.opening, rays);
     if (f.factor <= 0) continue;
-    e += l.rgb * (l.distribution->intensity(l.frame.to_photometric(f.direction)) * f.factor);
+    e += luminaire_irradiance(l, f.direction, f.factor);
   }
   return e;
 }

@@ -83,6 +83,13 @@ struct LuminaireLight {
   std::vector<Vec3> opening;  // sample offsets on the luminous opening
 };
 
+// Luminaire l's irradiance (lux per channel) at a point whose geometry factor toward it is
+// `factor` (DirectFactor::factor, V · cos θ / d²) along unit `direction` (from the luminaire
+// to the point): colour × dimmer × I(direction) × factor.
+inline Rgb luminaire_irradiance(const LuminaireLight& l, Vec3 direction, double factor) {
+  return l.rgb * (l.distribution->intensity(l.frame.to_photometric(direction)) * factor);
+}
+
 // Direct irradiance (lux per channel) at p with unit normal n from `lights`.
 Rgb luminaire_direct_irradiance(const Occluders& occluders, std::span<const LuminaireLight> lights,
                                 Vec3 p, Vec3 n);

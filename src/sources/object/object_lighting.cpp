@@ -280,7 +280,7 @@ void ObjectLighting::trace_direct(const ObjectLightInputs& in, bool all) {
         const Vec3 d = point(u) - l.position;
         const double dist = length(d);
         if (dist <= 0) continue;
-        e += l.rgb * (l.distribution->intensity(l.frame.to_photometric(d / dist)) * f);
+        e += luminaire_irradiance(l, d / dist, f);
       }
       put(direct_, u, e);
     }
@@ -465,8 +465,7 @@ void ObjectLighting::add_glossy_reflection(const ObjectLightInputs& in, std::spa
       const Vec3 d = x - l.position;
       const double dist = length(d);
       if (f == 0 || dist <= 0 || max_component(l.rgb) <= 0) continue;
-      irradiance[q * lights + j] =
-          l.rgb * (l.distribution->intensity(l.frame.to_photometric(d / dist)) * f);
+      irradiance[q * lights + j] = luminaire_irradiance(l, d / dist, f);
       toward[q * lights + j] = d / -dist;
       any = true;
     }
