@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "math/frame.h"
 #include "math/legendre.h"
 
 namespace relight {
@@ -355,6 +356,23 @@ double sky_relative_horizontal_illuminance(int sky_type, Vec3 sun_dir, int n_zen
   const Vec3 sun = normalize(sun_dir);
   return relative_horizontal_illuminance(tabulate(dome, sun, normaliser(dome, sun)), n_zenith,
                                          n_azimuth);
+}
+
+Vec3 sun_disc_direction(const SunDisc& disc, double x, double y) {
+  const Frame frame = frame_from_normal(disc.direction);
+  const double t = disc.tan_angular_radius;
+  return normalize(frame.to_world({x * t, y * t, 1}));
+}
+
+std::vector<Vec3> sun_disc_spiral(const SunDisc& disc, int count) {
+  const double golden = kPi * (3 - std::sqrt(5.0));
+  std::vector<Vec3> out;
+  out.reserve(static_cast<std::size_t>(std::max(count, 0)));
+  for (int i = 0; i < count; ++i) {
+    const double radius = std::sqrt((i + 0.5) / count), a = golden * i;
+    out.push_back(sun_disc_direction(disc, radius * std::cos(a), radius * std::sin(a)));
+  }
+  return out;
 }
 
 SunDisc make_sun_disc(Vec3 direction, double normal_illuminance) {

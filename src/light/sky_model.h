@@ -107,6 +107,14 @@ struct SunDisc {
 SunDisc make_sun_disc(Vec3 direction, double normal_illuminance);
 // Its luminance in the unit direction dir: disc.luminance inside the disc, 0 outside.
 double sun_disc_luminance(const SunDisc& disc, Vec3 dir);
+// The direction of the disc at tangent-plane offset (x, y) · tan r from its centre, |(x, y)| ≤ 1
+// on the disc.
+Vec3 sun_disc_direction(const SunDisc& disc, double x, double y);
+// `count` directions spread evenly over the disc's area (a Vogel spiral): point i at radius
+// √((i + ½)/count) and angle i times the golden angle. The exact sun traces them for a
+// penumbra (sources/portal/portal_sun.h); the visibility cuts spread the disc's light over
+// them (light/environment_clusters.h).
+std::vector<Vec3> sun_disc_spiral(const SunDisc& disc, int count);
 
 // ---- A complete sky: dome, ground, optional sun ----------------------------------------
 

@@ -1,51 +1,13 @@
 #include "math/direction_tree.h"
 
+#include "math/point_grid.h"
+
 #include <algorithm>
 #include <bit>
 #include <cmath>
 #include <stdexcept>
-#include <unordered_map>
 
 namespace relight {
-
-namespace {
-
-// Cells of a uniform 3-D grid over [−1, 1]³, for neighbours within `cell` of a point.
-struct PointGrid {
-  double cell;
-  int side;
-  std::unordered_map<std::int64_t, std::vector<std::uint32_t>> cells;
-
-  std::int64_t key(int x, int y, int z) const {
-    return (static_cast<std::int64_t>(x) * side + y) * side + z;
-  }
-  int coordinate(double v) const {
-    return std::clamp(static_cast<int>((v + 1) / cell), 0, side - 1);
-  }
-  PointGrid(const std::vector<Vec3>& points, double c)
-      : cell(c), side(static_cast<int>(std::ceil(2 / c)) + 1) {
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      const Vec3 p = points[i];
-      cells[key(coordinate(p.x), coordinate(p.y), coordinate(p.z))].push_back(
-          static_cast<std::uint32_t>(i));
-    }
-  }
-  template <typename Visit>
-  void near(Vec3 p, const Visit& visit) const {
-    const int x = coordinate(p.x), y = coordinate(p.y), z = coordinate(p.z);
-    for (int dx = -1; dx <= 1; ++dx) {
-      for (int dy = -1; dy <= 1; ++dy) {
-        for (int dz = -1; dz <= 1; ++dz) {
-          const auto it = cells.find(key(x + dx, y + dy, z + dz));
-          if (it == cells.end()) continue;
-          for (const std::uint32_t j : it->second) visit(j);
-        }
-      }
-    }
-  }
-};
-
-}  // namespace
 
 std::vector<Vec3> repulsed_directions(std::size_t count, int iterations) {
   if (count < 4) throw std::invalid_argument("repulsed_directions: at least 4 directions");
@@ -96,9 +58,6 @@ DirectionTree build_direction_tree(std::vector<Vec3> directions) {
   if (n < 2 || !std::has_single_bit(n)) {
     throw std::invalid_argument("direction tree: the directions' count must be a power of two");
   }
-  DirectionTree tree;
-  tree.axis.assign(2 * n, {0, 0, 0});
-  tree.cos_half_angle.assign(2 * n, 1.0);
   // Recursive median splits, in place: node k covers [lo, hi) of `directions`.
   struct Span {
     std::size_t node, lo, hi;
@@ -128,7 +87,18 @@ DirectionTree build_direction_tree(std::vector<Vec3> directions) {
     stack.push_back({2 * s.node, s.lo, mid});
     stack.push_back({2 * s.node + 1, mid, s.hi});
   }
-  tree.leaves = std::move(directions);
+  return direction_tree_over_leaves(std::move(directions));
+}
+
+DirectionTree direction_tree_over_leaves(std::vector<Vec3> leaves) {
+  const std::size_t n = leaves.size();
+  if (n < 2 || !std::has_single_bit(n)) {
+    throw std::invalid_argument("direction tree: the directions' count must be a power of two");
+  }
+  DirectionTree tree;
+  tree.axis.assign(2 * n, {0, 0, 0});
+  tree.cos_half_angle.assign(2 * n, 1.0);
+  tree.leaves = std::move(leaves);
   // Axes and cones, leaves up.
   for (std::size_t i = 0; i < n; ++i) tree.axis[n + i] = tree.leaves[i];
   for (std::size_t k = n - 1; k >= 1; --k) {

@@ -40,5 +40,8 @@ struct DirectionTree {
 
 // Throws std::invalid_argument unless directions.size() is a power of two ≥ 2.
 DirectionTree build_direction_tree(std::vector<Vec3> directions);
+// The tree whose leaves are `leaves` in this order (a built tree's, as a file stores them): the
+// nodes' axes and cones. Throws as build_direction_tree.
+DirectionTree direction_tree_over_leaves(std::vector<Vec3> leaves);
 
 }  // namespace relight

@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "math/frame.h"
-
 namespace relight {
 
 namespace {
@@ -63,23 +61,14 @@ bool may_cross_glass(const GlassBounds& g, Vec3 s, double tan_spread, const Vec3
 PortalSun make_portal_sun(std::uint32_t portal, const SunDisc& disc, Rgb illuminance,
                           std::shared_ptr<const RayTracer> exterior) {
   PortalSun sun{portal, disc, illuminance, std::move(exterior), {}};
-  const Frame frame = frame_from_normal(disc.direction);
-  const double t = disc.tan_angular_radius;
-  // A direction of the disc at tangent-plane offset (x, y) · tan r from its centre.
-  const auto direction = [&](double x, double y) {
-    return normalize(frame.to_world({x * t, y * t, 1}));
-  };
   for (int i = 0; i < kSunRimDirections; ++i) {
     const double a = 2 * kPi * i / kSunRimDirections;
-    sun.directions[static_cast<std::size_t>(i)] = direction(std::cos(a), std::sin(a));
+    sun.directions[static_cast<std::size_t>(i)] =
+        sun_disc_direction(disc, std::cos(a), std::sin(a));
   }
-  // The penumbra: a Vogel spiral, equal areas of the disc.
-  const double golden = kPi * (3 - std::sqrt(5.0));
-  for (int i = 0; i < kSunPenumbraDirections; ++i) {
-    const double radius = std::sqrt((i + 0.5) / kSunPenumbraDirections), a = golden * i;
-    sun.directions[static_cast<std::size_t>(kSunRimDirections) + static_cast<std::size_t>(i)] =
-        direction(radius * std::cos(a), radius * std::sin(a));
-  }
+  // The penumbra: equal areas of the disc.
+  const std::vector<Vec3> spiral = sun_disc_spiral(disc, kSunPenumbraDirections);
+  std::copy(spiral.begin(), spiral.end(), sun.directions.begin() + kSunRimDirections);
   return sun;
 }
 

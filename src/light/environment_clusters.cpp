@@ -1,0 +1,103 @@
+#include "light/environment_clusters.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "math/equirect.h"
+
+namespace relight {
+
+namespace {
+
+// The mean spacing of N uniform directions.
+double leaf_spacing(const DirectionTree& tree) {
+  return std::sqrt(4 * kPi / static_cast<double>(tree.leaf_count()));
+}
+
+// M += L · w · ω.
+void add_moment(RgbMoment& m, Rgb l, double w, Vec3 d) {
+  const double c[3] = {d.x, d.y, d.z};
+  for (int i = 0; i < 3; ++i) {
+    m.r[i] += static_cast<float>(l.r * w * c[i]);
+    m.g[i] += static_cast<float>(l.g * w * c[i]);
+    m.b[i] += static_cast<float>(l.b * w * c[i]);
+  }
+}
+
+// Gives L·Ω·ω of every part of an equirectangular grid of W × H texels, each split into k × k
+// parts, to the nearest leaf; `radiance(u, v)` the radiance at map coordinates (u, v) and
+// `to_world` the part's direction in the world frame.
+template <typename Radiance, typename ToWorld>
+void deposit_grid(int width, int height, int k, const Radiance& radiance, const ToWorld& to_world,
+                  const PointGrid& leaves, std::vector<RgbMoment>& node, std::size_t n) {
+  const int w = width * k, h = height * k;
+  for (int j = 0; j < h; ++j) {
+    const double omega = equirect_row_solid_angle(w, h, j);
+    for (int i = 0; i < w; ++i) {
+      const double u = (i + 0.5) / w, v = (j + 0.5) / h;
+      const Rgb l = radiance(i / k, j / k, u, v);
+      if (l.r == 0 && l.g == 0 && l.b == 0) continue;
+      const Vec3 d = to_world(equirect_direction(u, v));
+      add_moment(node[n + leaves.nearest(d)], l, omega, d);
+    }
+  }
+}
+
+}  // namespace
+
+PointGrid leaf_grid(const DirectionTree& tree) {
+  return PointGrid(tree.leaves, 2 * leaf_spacing(tree));
+}
+
+std::vector<RgbMoment> environment_moments(const Environment& env, const DirectionTree& tree,
+                                           const PointGrid& leaves) {
+  const std::size_t n = tree.leaf_count();
+  const double spacing = leaf_spacing(tree);
+  std::vector<RgbMoment> node(2 * n);
+  switch (env.kind) {
+    case EnvironmentKind::kUniform:
+      for (std::size_t i = 0; i < n; ++i) {
+        add_moment(node[n + i], env.uniform_radiance, 4 * kPi / static_cast<double>(n),
+                   tree.leaves[i]);
+      }
+      break;
+    case EnvironmentKind::kMap: {
+      const EquirectMap& map = *env.map;
+      // The parts at most half the spacing across, in azimuth at the equator and in elevation.
+      const double texel = std::max(2 * kPi / map.width, kPi / map.height);
+      const int k = std::max(1, static_cast<int>(std::ceil(texel / (0.5 * spacing))));
+      const MapRotation rotation(env.rotate_deg);
+      deposit_grid(
+          map.width, map.height, k,
+          [&](int i, int j, double, double) {
+            return map.texels[static_cast<std::size_t>(j) * map.width + i] * env.scale;
+          },
+          [&](Vec3 d) { return rotation.to_world(d); }, leaves, node, n);
+      break;
+    }
+    case EnvironmentKind::kSky: {
+      const int height = static_cast<int>(std::ceil(kPi / (0.25 * spacing)));
+      deposit_grid(
+          2 * height, height, 1,
+          [&](int, int, double u, double v) {
+            return env.diffuse_radiance(equirect_direction(u, v));
+          },
+          [](Vec3 d) { return d; }, leaves, node, n);
+      if (const std::optional<SunDisc>& sun = env.sun()) {
+        constexpr int kSpiral = 64;
+        const double share = sun->integrated_luminance() / kSpiral;
+        for (const Vec3& d : sun_disc_spiral(*sun, kSpiral)) {
+          add_moment(node[n + leaves.nearest(d)], Rgb{1, 1, 1}, share, d);
+        }
+      }
+      break;
+    }
+  }
+  for (std::size_t k = n - 1; k >= 1; --k) {
+    node[k] = node[2 * k];
+    node[k] += node[2 * k + 1];
+  }
+  return node;
+}
+
+}  // namespace relight

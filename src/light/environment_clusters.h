@@ -1,0 +1,63 @@
+// An environment clustered on the visibility cuts' direction tree (issue 15; Iwasaki et al.,
+// Cyberworlds, §V, Eq. 3: the capture paper, papers/003): per node k of the tree the first
+// moment of the environment's radiance over the directions its leaves stand for,
+//     M_k = ∫_{cell(k)} L(ω) ω dω   (per linear Rec.709 channel; cd/m² · sr),
+// where a leaf's cell is its Voronoi cell on the sphere (the directions nearer to it than to
+// any other leaf: math/point_grid.h nearest) and an inner node's the union of its leaves'.
+// With a binary visibility cut at a point of normal n (sources/cuts/self_visibility.h),
+//     E = Σ_{k visible} n · M_k
+// is the irradiance there, exact on every node whose leaves' visibility agrees and whose
+// directions lie above the surface: the cosine is integrated with the light, not sampled at
+// the leaves. The paper's Eq. 3 clusters V·cos instead and multiplies by ∫ L; the renderers
+// multiply n · M_k by the BRDF toward the eye at the node's mean direction.
+//
+// Quadrature, so that Σ_leaves M_k = ∫ L ω dω:
+//  * uniform: L · (4π/N) · ω_i per leaf i (the leaves' cells are equal to within the
+//    repulsion's spread).
+//  * map: every texel split into k × k parts of exact solid angle, k the least for which a
+//    part is at most half the leaves' spacing across, each part's L·Ω·ω given to the leaf
+//    nearest its centre. A texel finer than that is given whole.
+//  * sky: the dome and ground on an equirectangular grid at a quarter of the leaves' spacing
+//    (midpoint values, exact solid angles), the sun disc's ∫L dω spread equally over 64
+//    directions of its area (light/sky_model.h sun_disc_spiral), each given to its nearest leaf
+//    with its own direction: a sun near a cell's edge shares its light between two leaves.
+// Pinned by tests/light/environment_clusters_test.cpp.
+#pragma once
+
+#include <vector>
+
+#include "light/environment.h"
+#include "math/direction_tree.h"
+#include "math/point_grid.h"
+#include "math/rgb.h"
+
+namespace relight {
+
+// ∫ L ω dω per channel, in single precision (the run time sums it per receiver).
+struct RgbMoment {
+  float r[3] = {0, 0, 0}, g[3] = {0, 0, 0}, b[3] = {0, 0, 0};
+
+  RgbMoment& operator+=(const RgbMoment& o) {
+    for (int i = 0; i < 3; ++i) {
+      r[i] += o.r[i];
+      g[i] += o.g[i];
+      b[i] += o.b[i];
+    }
+    return *this;
+  }
+  // n · M per channel: the irradiance the moment's directions give a surface of normal n.
+  Rgb irradiance(Vec3 n) const {
+    return {n.x * r[0] + n.y * r[1] + n.z * r[2], n.x * g[0] + n.y * g[1] + n.z * g[2],
+            n.x * b[0] + n.y * b[1] + n.z * b[2]};
+  }
+};
+
+// The nearest-leaf lookup of a tree: a PointGrid over its leaves at cells of twice their
+// spacing.
+PointGrid leaf_grid(const DirectionTree& tree);
+
+// M_k per heap node k (index 0 unused, leaves N … 2N − 1).
+std::vector<RgbMoment> environment_moments(const Environment& env, const DirectionTree& tree,
+                                           const PointGrid& leaves);
+
+}  // namespace relight

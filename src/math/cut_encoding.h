@@ -1,0 +1,86 @@
+// Binary visibility cuts of the direction tree stored many to an array (issue 15; Iwasaki et
+// al., Cyberworlds, §V.A.2, Fig. 5: the capture paper, papers/003). A cut lists its nodes in
+// leaf order and every root-to-leaf path holds exactly one of them, so a node is known from
+// the leaf where it starts and its height h (edges down to a leaf: 0 … 15 for 2¹⁵ leaves): it
+// is node (N + leaf) >> h of the heap (math/direction_tree.h), and the next node starts 2^h
+// leaves on. The paper's height encoding keeps h in 4 bits and the node's visibility in 1 bit;
+// the previous methods (Akerlund et al. 2007; Cheslack-Postava et al. 2008) keep the node's
+// 2-byte index instead of its height, which `index_encoded_bytes` sizes for comparison
+// (17 bits a node against 5).
+//
+// Storage: heights two a byte, low nibble first; visibility bits eight a byte, lowest bit
+// first; both indexed by the node's place among all the cuts' nodes; cut c's nodes are
+// [first[c], first[c + 1]). A cut's value of a node is rounded to 0 or 1 when appended: cuts
+// of binary visibility made at a threshold below ½ (math/direction_cut.h) merge only nodes
+// whose leaves agree to within it, and a merged node takes its majority's value.
+// Pinned by tests/math/cut_encoding_test.cpp.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "math/direction_cut.h"
+#include "math/direction_tree.h"
+
+namespace relight {
+
+inline constexpr int kMaxCutHeight = 15;  // 4 bits
+
+// Height-encoded binary cuts as stored (a file's sections or a HeightCuts).
+struct HeightCutsView {
+  std::uint32_t leaf_count = 0;           // N, a power of two ≤ 2^15
+  std::span<const std::uint64_t> first;   // per cut, into the nodes; cuts + 1 entries
+  std::span<const std::uint8_t> heights;  // 4 bits a node
+  std::span<const std::uint8_t> visible;  // 1 bit a node
+
+  std::size_t cut_count() const { return first.empty() ? 0 : first.size() - 1; }
+  std::uint64_t node_count() const { return first.empty() ? 0 : first.back(); }
+  int height(std::uint64_t node) const {
+    const std::uint8_t b = heights[node >> 1];
+    return (node & 1) != 0 ? b >> 4 : b & 0xF;
+  }
+  bool is_visible(std::uint64_t node) const {
+    return ((visible[node >> 3] >> (node & 7)) & 1) != 0;
+  }
+  // Calls visit(heap_node, height) for every visible node of cut c, in leaf order.
+  template <typename Visit>
+  void for_each_visible(std::size_t c, const Visit& visit) const {
+    std::uint64_t leaf = 0;
+    for (std::uint64_t k = first[c]; k < first[c + 1]; ++k) {
+      const int h = height(k);
+      if (is_visible(k)) visit(static_cast<std::uint32_t>((leaf_count + leaf) >> h), h);
+      leaf += std::uint64_t{1} << h;
+    }
+  }
+  // Bytes of the height encoding: heights, visibility bits and the cuts' starts.
+  std::uint64_t bytes() const;
+};
+
+// Throws std::invalid_argument when the view's sizes disagree (a damaged file): the starts
+// not increasing from 0, the heights or bits not one per node, a height above log2 N, or a
+// cut whose heights do not cover the N leaves exactly.
+void check_height_cuts(const HeightCutsView& cuts);
+
+struct HeightCuts {
+  std::uint32_t leaf_count = 0;
+  std::vector<std::uint64_t> first;
+  std::vector<std::uint8_t> heights;
+  std::vector<std::uint8_t> visible;
+
+  HeightCutsView view() const { return {leaf_count, first, heights, visible}; }
+};
+
+// An empty store for cuts of `tree`; throws std::invalid_argument when it has more than 2^15
+// leaves.
+HeightCuts make_height_cuts(const DirectionTree& tree);
+
+// Appends `cut`, each value rounded to 0 or 1. Throws std::invalid_argument when its nodes are
+// not a cut of the store's tree in leaf order.
+void append_cut(HeightCuts& cuts, const DirectionCut& cut);
+
+// Bytes of the same cuts with each node's position as a 2-byte heap index instead of its
+// height: 17 bits a node, and the cuts' starts.
+std::uint64_t index_encoded_bytes(const HeightCutsView& cuts);
+
+}  // namespace relight
