@@ -202,6 +202,18 @@ void precompute_and_write(const Scene& scene, const nlohmann::json& document,
                (t.indirect.f16.empty() ? 4 : 2)) /
             double(std::max<std::size_t>(1, p.receivers.size())));
   }
+  if (!p.cuts.empty()) {
+    // The cuts' sizes (issue 15): height encoded as stored, and with 2-byte node indices.
+    const HeightCutsView svc = p.cuts.self_visibility.view();
+    const double receivers = static_cast<double>(std::max<std::size_t>(1, p.receivers.size()));
+    std::printf(
+        "  self-visibility cuts: %zu directions, %.3g nodes (%.0f a receiver), %.1f kB (%.1f "
+        "bytes a receiver); index encoded %.1f kB (%.1f %%)\n",
+        p.cuts.directions.size(), double(svc.node_count()), double(svc.node_count()) / receivers,
+        double(svc.bytes()) / 1e3, double(svc.bytes()) / receivers,
+        double(index_encoded_bytes(svc)) / 1e3,
+        100.0 * double(svc.bytes()) / double(index_encoded_bytes(svc)));
+  }
   for (std::size_t i = 0; i < p.objects.size(); ++i) {
     const ObjectMesh& o = p.objects[i];
     std::printf("  object \"%s\": %zu vertices, %zu triangles, %.1f kB stored, %.3f s\n",

@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.h"
+#include "cli/max_bounces.h"
 #include "common/input_error.h"
 #include "render/sensor_report.h"
 #include "render/task_check.h"
@@ -21,6 +22,7 @@ namespace {
 struct ProbeArgs {
   std::string rlt, state, output;
   bool check = false;
+  int max_bounces = 0;
 };
 
 const char* verdict(bool pass) {
@@ -69,8 +71,11 @@ void print_checks(RelitScene& relit) {
 }
 
 int run_probe(const ProbeArgs& args) {
-  RelitScene relit(args.rlt, args.state.empty() ? std::nullopt
-                                                : std::optional<std::filesystem::path>(args.state));
+  RelitScene relit(
+      args.rlt,
+      args.state.empty() ? std::nullopt : std::optional<std::filesystem::path>(args.state),
+      max_bounces_settings(args.max_bounces));
+  check_max_bounces(relit.scene(), args.max_bounces, args.rlt);
   const Scene& scene = relit.scene();
   if (scene.sensor_count() == 0) fail_input(args.rlt, "the scene has no sensors");
   const std::vector<Rgb> e = relit.sensor_irradiance();
@@ -93,6 +98,7 @@ void add_probe_command(CLI::App& app, Action& action) {
   CLI::App* cmd = app.add_subcommand("probe", "Sensor illuminance of a precomputed scene");
   cmd->add_option("scene", args->rlt, "precomputed .rlt file")->required();
   cmd->add_option("--state", args->state, "lighting state JSON (default: the scene's own)");
+  add_max_bounces_option(*cmd, args->max_bounces);
   cmd->add_option("-o,--output", args->output, "sensor CSV to write");
   cmd->add_flag("--check", args->check,
                 "check each task area's Em, U0 and UGR (maintained values; EN 12464-1)");

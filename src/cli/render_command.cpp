@@ -1,4 +1,5 @@
-// `relight render SCENE.rlt [--state STATE.json] [--camera NAME] [--width W --height H]
+// `relight render SCENE.rlt [--state STATE.json] [--max-bounces 1] [--camera NAME] [--width W
+// --height H]
 //   [--exposure EV] [--false-color lux|luminance [--range MIN:MAX]] -o IMAGE.png|IMAGE.exr`
 // Relights the precomputed scene and renders per-vertex radiance (Gouraud-equivalent).
 #include <chrono>
@@ -8,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.h"
+#include "cli/max_bounces.h"
 #include "cli/view_args.h"
 #include "render/relit_scene_image.h"
 #include "render/vertex_shading.h"
@@ -19,14 +21,18 @@ namespace {
 
 struct RenderArgs {
   std::string rlt, state, direct = "vertex";
+  int max_bounces = 0;
   ViewArgs view;
 };
 
 int run_render(const RenderArgs& args) {
   const auto start = std::chrono::steady_clock::now();
   const DisplayOptions display = display_options(args.view);
-  RelitScene relit(args.rlt, args.state.empty() ? std::nullopt
-                                                : std::optional<std::filesystem::path>(args.state));
+  RelitScene relit(
+      args.rlt,
+      args.state.empty() ? std::nullopt : std::optional<std::filesystem::path>(args.state),
+      max_bounces_settings(args.max_bounces));
+  check_max_bounces(relit.scene(), args.max_bounces, args.rlt);
   const TransferFile& t = relit.transfer();
   const Camera camera = choose_camera(
       t.scene,
@@ -53,6 +59,7 @@ void add_render_command(CLI::App& app, Action& action) {
   CLI::App* cmd = app.add_subcommand("render", "Render a precomputed scene under a lighting state");
   cmd->add_option("scene", args->rlt, "precomputed .rlt file")->required();
   cmd->add_option("--state", args->state, "lighting state JSON (default: the scene's own)");
+  add_max_bounces_option(*cmd, args->max_bounces);
   add_view_options(*cmd, args->view);
   cmd->add_option("--direct", args->direct,
                   "vertex: per-vertex radiance interpolated (Gouraud, default); pixel: direct "

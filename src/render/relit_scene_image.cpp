@@ -3,6 +3,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <optional>
 
 #include "engine/material_reflectance.h"
@@ -63,7 +64,13 @@ constexpr int kGlossySamples = 64;
 Rgb window_luminance(const Relighter& lit, const RayTracer& windows, Vec3 origin, Vec3 dir,
                      bool with_suns) {
   const RayHit hit = windows.intersect({origin, dir});
-  if (!hit.hit()) return Rgb{};
+  if (!hit.hit()) {
+    // Past the scene: the top-level environment, if any (its sun disc included).
+    const EnvironmentLighting* env = lit.environment();
+    return env != nullptr && env->environment() != nullptr
+               ? env->environment()->radiance(normalize(dir))
+               : Rgb{};
+  }
   Rgb l = lit.shell(hit.triangle).radiance(dir);
   if (!with_suns) return l;
   for (const PortalSun& sun : lit.suns()) {
@@ -165,6 +172,11 @@ class GlossyShading {
     for (std::size_t i = 0; i < total.size(); ++i) {
       vertex_radiance_[i] = static_cast<float>(lambertian_radiance(albedo[i], total[i]));
     }
+    // Direct light alone (`--max-bounces 1`): what the room reflects toward a glossy surface
+    // is a second bounce.
+    if (const EnvironmentLighting* env = lit_.environment(); env != nullptr && !env->bounces()) {
+      std::fill(vertex_radiance_.begin(), vertex_radiance_.end(), 0.0f);
+    }
     pixels_.vertex_radiance = vertex_radiance_;
   }
   GlossyShading(const GlossyShading&) = delete;
@@ -215,7 +227,14 @@ class GlossyShading {
     }
     // A stream per hit point: images are deterministic whatever the threads do.
     const std::uint64_t seed = std::hash<double>{}(p.x * 7.0 + p.y * 131.0 + p.z * 1031.0);
-    return glossy_pixel_radiance(pixels_, *brdf, p, n, v, kGlossySamples, seed);
+    Rgb l = glossy_pixel_radiance(pixels_, *brdf, p, n, v, kGlossySamples, seed);
+    // The top-level environment through the cuts of the room triangle's vertices.
+    if (triangle < t_.triangles.size()) {
+      for (std::size_t k = 0; k < 3; ++k) {
+        l += environment_reflection(t_.triangles[triangle][k], *brdf, v) * bary[k];
+      }
+    }
+    return l;
   }
 
   // Per vertex of the shown scene (3 each): the luminance of a glossy vertex (the room's, then
@@ -253,7 +272,8 @@ class GlossyShading {
             const Vec3 to_eye = eye - p;
             const double d = length(to_eye);
             if (!(d > 0) || dot(to_eye, n) <= 0) continue;  // seen from behind: as diffuse
-            const Rgb l = glossy_pixel_radiance(pixels_, *brdf, p, n, to_eye / d, samples, v);
+            Rgb l = glossy_pixel_radiance(pixels_, *brdf, p, n, to_eye / d, samples, v);
+            if (v < t_.vertex_count) l += environment_reflection(v, *brdf, to_eye / d);
             out[3 * v] = static_cast<float>(l.r);
             out[3 * v + 1] = static_cast<float>(l.g);
             out[3 * v + 2] = static_cast<float>(l.b);
@@ -263,6 +283,17 @@ class GlossyShading {
   }
 
  private:
+  // The top-level environment's light that room vertex v reflects toward v_out (unit) by
+  // `brdf`, through its self-visibility cut (sources/cuts/environment_lighting.h); 0 without
+  // an environment. The BRDF samples of glossy_pixel_radiance see no environment past the
+  // scene (outside()), so it is counted once.
+  Rgb environment_reflection(std::size_t v, const MetallicRoughness& brdf, Vec3 v_out) const {
+    const EnvironmentLighting* env = lit_.environment();
+    if (env == nullptr) return {};
+    const Vec3 n = t_.view.scene.receiver_normals[v];
+    return env->reflected(v, [&](Vec3 l) { return metallic_roughness_brdf(brdf, n, l, v_out); });
+  }
+
   // The BRDF of object vertex q (PlacedObjects order) when its material is glossy; none for
   // a Lambertian one or a file from before the objects kept their materials.
   std::optional<MetallicRoughness> object_brdf(std::size_t q) const {

@@ -22,6 +22,7 @@ LightingState default_lighting_state(const Scene& scene) {
   for (const Emitter& e : scene.emitters) s.emitters.push_back(emitter_state(e));
   s.objects.resize(scene.objects.size());
   s.materials = scene.materials;
+  s.environment = scene.environment;
   return s;
 }
 
@@ -166,7 +167,16 @@ void apply_portal(PortalState& s, const Scene& scene, const JsonNode& node,
 void apply_lighting_state(LightingState& state, const Scene& scene, const nlohmann::json& document,
                           const std::string& where, const std::filesystem::path& base_dir) {
   const JsonNode root(document, where, "/");
-  root.expect_keys({"luminaires", "portals", "exterior", "emitters", "objects", "materials"});
+  root.expect_keys(
+      {"luminaires", "portals", "exterior", "emitters", "objects", "materials", "environment"});
+  if (const auto e = root.find("environment")) {
+    if (!scene.environment) {
+      e->fail(
+          "the scene has no top-level environment: its transfer has no visibility cuts to "
+          "light one (add \"environment\" to the scene and run relight precompute)");
+    }
+    state.environment = parse_environment(*e, base_dir);
+  }
   if (state.materials.size() != scene.materials.size()) state.materials = scene.materials;
   if (const auto materials = root.find("materials")) {
     if (!materials->is_object())
@@ -261,6 +271,7 @@ Scene scene_with_state(const Scene& scene, const LightingState& state) {
     out.portals[p].tint = state.portals[p].tint;
     out.portals[p].frost_deg = state.portals[p].frost_deg;
   }
+  out.environment = state.environment;
   return out;
 }
 

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -25,6 +26,9 @@ struct LightingState {
   // The scene's materials with the state's edits (albedo, metallic, roughness; issue 13),
   // scene order. Window glass is not edited here (its look is its portal's tint and frost).
   std::vector<Material> materials;
+  // The top-level environment (issue 15): swapped, rotated or its sky changed; present exactly
+  // when the scene has one.
+  std::optional<EnvironmentSpec> environment;
 };
 
 LightingState default_lighting_state(const Scene& scene);
@@ -42,9 +46,10 @@ LightingState maintained_state(LightingState state, double mf);
 
 // The scene as `state` lights it, for code that reads a Scene (the reference tracer): each
 // luminaire's aim, C0, distribution, colour and dimmer (0 when off), each portal's environment,
-// tint and frost; the movable objects placed into `geometry` (hidden ones left out, the
-// scene's `objects` then empty). Emitters and exterior objects keep the scene's geometry: their
-// placements are the state's (place_emitters, placed_exterior); the materials as edited.
+// tint and frost, the top-level environment; the movable objects placed into `geometry` (hidden
+// ones left out, the scene's `objects` then empty). Emitters and exterior objects keep the scene's
+// geometry: their placements are the state's (place_emitters, placed_exterior); the materials as
+// edited.
 Scene scene_with_state(const Scene& scene, const LightingState& state);
 
 }  // namespace relight

@@ -34,6 +34,7 @@ std::optional<RuntimeScene> make_runtime_scene(const TransferView& transfer, con
                                                bool sensors_only,
                                                std::shared_ptr<const SensorImportance> solved) {
   if (scene.portals.empty() && scene.emitters.empty() && scene.objects.empty() &&
+      !scene.environment &&
       (glossy_materials(scene.materials).empty() || transfer.scene.gather_rows.empty())) {
     return std::nullopt;
   }
@@ -72,6 +73,17 @@ Relighter::Relighter(TransferView transfer, const Scene& scene, const RelighterS
   if (!scene.emitters.empty()) {
     emitters_.emplace(transfer_.nearfield, *runtime_, scene, settings.emitters);
     terms_.push_back({&*emitters_, {}});
+  }
+  if (scene.environment) {
+    if (transfer_.cuts.directions.empty()) {
+      throw std::invalid_argument(
+          "Relighter: a scene with a top-level environment needs visibility cuts in its "
+          "transfer (run relight precompute again)");
+    }
+    environment_.emplace(transfer_.cuts, *runtime_);
+    environment_->set_bounce(settings.environment_bounce);
+    environment_->set_environment(state_.environment);
+    terms_.push_back({&*environment_, {}});
   }
   for (Term& term : terms_) {
     for (PartialSum& sum : term.sums) sum.values.assign(3 * transfer_.receivers, 0.0f);
@@ -140,11 +152,16 @@ void Relighter::add_glossy(std::span<float> out) const {
 }
 
 void Relighter::set_state(const LightingState& state) {
-  const bool changed[3] = {luminaires_.set_state(state.luminaires),
-                           portals_.set_state(state.portals),
-                           emitters_ && emitters_->set_state(state.emitters)};
-  for (std::size_t t = 0; t < terms_.size(); ++t) {
-    if (changed[t]) terms_[t].sums[0].valid = terms_[t].sums[1].valid = false;
+  const auto invalidate = [this](const SourceTerm* source) {
+    for (Term& term : terms_) {
+      if (term.source == source) term.sums[0].valid = term.sums[1].valid = false;
+    }
+  };
+  if (luminaires_.set_state(state.luminaires)) invalidate(&luminaires_);
+  if (portals_.set_state(state.portals)) invalidate(&portals_);
+  if (emitters_ && emitters_->set_state(state.emitters)) invalidate(&*emitters_);
+  if (environment_ && environment_->set_environment(state.environment)) {
+    invalidate(&*environment_);
   }
   if (objects_ && objects_->set_state(state.objects)) objects_dirty_ = true;
   // A state made without materials (LightingState{} filled by hand) keeps the scene's.
@@ -153,6 +170,14 @@ void Relighter::set_state(const LightingState& state) {
   set_materials(materials);
   state_ = state;
   state_.materials = materials;
+}
+
+void Relighter::set_environment_bounce(bool bounce) {
+  if (!environment_) return;
+  environment_->set_bounce(bounce);
+  for (Term& term : terms_) {
+    if (term.source == &*environment_) term.sums[0].valid = term.sums[1].valid = false;
+  }
 }
 
 void Relighter::set_materials(const std::vector<Material>& materials) {
@@ -295,7 +320,7 @@ void Relighter::relight(std::span<float> out, bool include_direct) {
   objects_->add_to_room(out, include_direct);
 }
 
-void Relighter::sum_block(std::size_t b, std::size_t slot, const std::array<bool, 3>& redo,
+void Relighter::sum_block(std::size_t b, std::size_t slot, const std::array<bool, kMaxTerms>& redo,
                           std::span<float> out) {
   const std::size_t n = transfer_.receivers;
   const std::size_t base = b * kBlock;
@@ -324,7 +349,7 @@ bool Relighter::sum_terms(std::size_t slot, std::span<float> out) {
   // Each kind of source keeps its own sum (per direct mode), recomputed only after a change
   // to it: a frame in which only the sky moves reads the portals' transfer, not the
   // luminaires', and the other way round.
-  std::array<bool, 3> redo{};
+  std::array<bool, kMaxTerms> redo{};
   bool any = false;
   for (std::size_t t = 0; t < terms_.size(); ++t) {
     redo[t] = !terms_[t].sums[slot].valid;

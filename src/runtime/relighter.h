@@ -20,6 +20,7 @@
 #include "math/sh_window.h"
 #include "runtime/lighting_state.h"
 #include "scene/scene.h"
+#include "sources/cuts/environment_lighting.h"
 #include "sources/luminaire/luminaire_lighting.h"
 #include "sources/nearfield/emitter_lighting.h"
 #include "sources/object/object_lighting.h"
@@ -42,6 +43,9 @@ struct RelighterSettings {
   // glossy materials, whose light at the sensors depends on the whole room's, and from the
   // first state that edits materials on.
   bool sensors_only = false;
+  // The top-level environment's interreflection added (sources/cuts/environment_lighting.h);
+  // false: its direct light alone (`--max-bounces 1`).
+  bool environment_bounce = true;
   // The sensors' importance already solved for this transfer (another Relighter's: see
   // sensor_importance()), taken instead of solving it again.
   std::shared_ptr<const SensorImportance> sensor_importance;
@@ -104,6 +108,13 @@ class Relighter {
     return objects_ ? objects_->take_warnings() : std::vector<std::string>{};
   }
 
+  // The top-level environment's term, when the scene has one (its cuts, clusters and the
+  // glossy reflection toward an eye: sources/cuts/environment_lighting.h).
+  const EnvironmentLighting* environment() const { return environment_ ? &*environment_ : nullptr; }
+  // Whether the environment's interreflection is added (the default) or its direct light
+  // alone, as `relight reference --max-bounces 1` traces it.
+  void set_environment_bounce(bool bounce);
+
   // The near-field emitters' term, when the scene has emitters (their placement for exact
   // direct light per pixel, the last sampling).
   const EmitterLighting* emitters() const { return emitters_ ? &*emitters_ : nullptr; }
@@ -124,6 +135,7 @@ class Relighter {
   std::size_t last_frame_bytes() const { return last_frame_bytes_; }
 
  private:
+  static constexpr std::size_t kMaxTerms = 4;
   struct PartialSum {
     std::vector<float> values;  // 3 per receiver
     bool valid = false;
@@ -137,7 +149,7 @@ class Relighter {
   // when its state changed; returns whether any was.
   bool sum_terms(std::size_t slot, std::span<float> out);
   // sum_terms for block b: the terms in `redo` summed again, then out over the block.
-  void sum_block(std::size_t b, std::size_t slot, const std::array<bool, 3>& redo,
+  void sum_block(std::size_t b, std::size_t slot, const std::array<bool, kMaxTerms>& redo,
                  std::span<float> out);
   // total = every term's light with direct, corrected by the material edit; returns whether
   // it changed since the last call.
@@ -159,7 +171,9 @@ class Relighter {
   PortalSetLighting portals_;
   LightingState state_;
   std::optional<EmitterLighting> emitters_;
-  std::vector<Term> terms_;  // luminaires, portals, emitters (when any)
+  std::optional<EnvironmentLighting> environment_;
+  // luminaires, portals, emitters (when any), the top-level environment (when any)
+  std::vector<Term> terms_;
   std::optional<ObjectLighting> objects_;
   std::vector<float> room_light_;  // with objects: every term's light, direct included (E0)
   // Material edits: the bounce settings, the vertices' albedo under the state's materials,

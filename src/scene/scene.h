@@ -131,6 +131,22 @@ struct Camera {
   double fov_deg = 60;  // vertical field of view
 };
 
+// The visibility cuts of a top-level environment (issue 15; Iwasaki et al., Cyberworlds, §V.A:
+// the capture paper, papers/003): `directions` leaves of the direction tree (a power of two
+// ≤ 32,768), binary self-visibility cuts at every receiver merging nodes whose leaves agree to
+// within `threshold` (a fraction below ½; 0: only nodes whose leaves all agree, exact),
+// visibility cut fields of each movable object sampled on `sphere_count` concentric spheres
+// of 6 · sphere_points² points between inner_radius and outer_radius times its bounding
+// sphere's radius. Defaults: the paper's; it gives no threshold, 0 keeps every edge.
+struct CutsSettings {
+  int directions = 32768;
+  int sphere_count = 32;
+  int sphere_points = 32;
+  double inner_radius = 1.2;
+  double outer_radius = 10;
+  double threshold = 0;
+};
+
 struct PrecomputeSettings {
   double max_edge = 0.25;  // m: mesh subdivision bound for per-vertex transfer
   int sh_order = 8;        // SH bands for indirect luminaire transfer (l < sh_order)
@@ -163,6 +179,8 @@ struct PrecomputeSettings {
   // Occluders within this distance (m) shadow the near-field transfer; 0: a quarter of the
   // diagonal of the scene's bounding box.
   double nearfield_shadow_distance = 0;
+  // Built when the scene has a top-level environment.
+  CutsSettings cuts;
 };
 
 struct Bounds {
@@ -178,8 +196,8 @@ struct Scene {
   std::vector<Camera> cameras;
   std::vector<Portal> portals;
   // A top-level environment (issue 15): lights the scene from infinity wherever its geometry
-  // does not block it (a showroom under a sky or a captured map). So far only `relight
-  // reference` lights it; the precompute refuses such a scene.
+  // does not block it (a showroom under a sky or a captured map): through the visibility cuts
+  // (src/sources/cuts/) at run time, exactly in `relight reference`.
   std::optional<EnvironmentSpec> environment;
   std::vector<ExteriorGeometry> exterior;
   std::vector<Emitter> emitters;

@@ -424,7 +424,7 @@ struct Loader {
     p.expect_keys({"max_edge", "sh_order", "crease_deg", "gather_rays", "sensor_gather_rays",
                    "tolerance", "max_bounces", "direct", "portal_face_size", "portal_sh_order",
                    "portal_samples_per_cell", "nearfield_sh_order", "nearfield_directions",
-                   "nearfield_interreflection", "nearfield_shadow_distance", "storage"});
+                   "nearfield_interreflection", "nearfield_shadow_distance", "storage", "cuts"});
     PrecomputeSettings& s = scene.precompute;
     if (const auto n = p.find("max_edge")) s.max_edge = n->positive();
     if (const auto n = p.find("sh_order")) s.sh_order = n->integer_in(1, 32);
@@ -469,6 +469,36 @@ struct Loader {
     if (const auto n = p.find("portal_sh_order")) s.portal_sh_order = n->integer_in(1, 16);
     if (const auto n = p.find("portal_samples_per_cell")) {
       s.portal_samples_per_cell = n->integer_in(1, 1024);
+    }
+    if (const auto c = p.find("cuts")) load_cuts(*c, s.cuts);
+  }
+
+  static void load_cuts(const JsonNode& c, CutsSettings& s) {
+    c.expect_keys({"directions", "sphere_count", "sphere_points", "inner_radius", "outer_radius",
+                   "threshold"});
+    if (const auto n = c.find("directions")) {
+      s.directions = n->integer_in(4, 1 << 15);
+      if ((s.directions & (s.directions - 1)) != 0) {
+        n->fail("directions must be a power of two (the leaves of a complete binary tree)");
+      }
+    }
+    if (const auto n = c.find("sphere_count")) s.sphere_count = n->integer_in(1, 256);
+    if (const auto n = c.find("sphere_points")) s.sphere_points = n->integer_in(1, 256);
+    if (const auto n = c.find("inner_radius")) {
+      s.inner_radius = n->positive();
+      if (s.inner_radius < 1) n->fail("inner_radius must be at least 1 (the bounding sphere)");
+    }
+    if (const auto n = c.find("outer_radius")) {
+      s.outer_radius = n->positive();
+      if (s.outer_radius < s.inner_radius) n->fail("outer_radius must be at least inner_radius");
+    }
+    if (const auto n = c.find("threshold")) {
+      s.threshold = n->number_at_least(0);
+      if (s.threshold >= 0.5) {
+        n->fail(
+            "threshold must be below 0.5 (the fraction of a node's directions whose "
+            "visibility may differ from the rest)");
+      }
     }
   }
 };

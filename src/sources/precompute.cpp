@@ -38,10 +38,10 @@ std::vector<std::uint32_t> triangle_portals(const Scene& scene, const PreparedMe
 }  // namespace
 
 Precomputed precompute_transfer(const Scene& scene, const PrecomputeOptions& options) {
-  if (scene.environment) {
+  if (scene.environment && !scene.objects.empty()) {
     fail_input(scene.file.string() + ":/environment",
-               "a top-level environment is lit only by relight reference so far; the transfer "
-               "does not carry it yet (issue 15)");
+               "movable objects under a top-level environment need their visibility cut fields, "
+               "which are not built yet (issue 15): only relight reference lights such a scene");
   }
   Precomputed out;
   out.sh_order = scene.precompute.sh_order;
@@ -91,6 +91,11 @@ Precomputed precompute_transfer(const Scene& scene, const PrecomputeOptions& opt
   out.portals = std::move(portals.transfers);
   out.warnings = std::move(portals.warnings);
   out.nearfield = std::move(nearfield.result);
+  if (scene.environment) {
+    out.cuts =
+        precompute_cuts(scene.precompute.cuts, out.receivers, ray_points, traced, options.progress);
+    out.phases.push_back({"self-visibility cuts", out.cuts.seconds, out.cuts.rays});
+  }
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
     const auto start = std::chrono::steady_clock::now();
     out.objects.push_back(prepare_object(scene, scene.objects[i]));

@@ -17,6 +17,7 @@
 #include "engine/source_precompute.h"
 #include "scene/mesh_preparation.h"
 #include "scene/scene.h"
+#include "sources/cuts/cuts_precompute.h"
 #include "sources/luminaire/luminaire_precompute.h"
 #include "sources/nearfield/nearfield_precompute.h"
 #include "sources/object/object_mesh.h"
@@ -62,6 +63,9 @@ struct Precomputed {
   // of an object's light is traced at run time (sources/object/object_lighting.h).
   std::vector<ObjectMesh> objects;
   std::vector<double> object_seconds;
+  // The top-level environment's visibility cuts (sources/cuts/cuts_precompute.h); empty
+  // without one.
+  CutsTransfer cuts;
   std::vector<PhaseTiming> phases;
   std::vector<std::string> warnings;  // e.g. portals too large for their shells (§6)
 };

@@ -11,6 +11,7 @@
 #include "light/photometric_web.h"
 #include "math/sh.h"
 #include "scene/scene_loader.h"
+#include "sources/cuts/cuts_sections.h"
 #include "sources/luminaire/luminaire_sections.h"
 #include "sources/nearfield/nearfield_sections.h"
 #include "sources/object/object_sections.h"
@@ -251,7 +252,7 @@ void write_transfer_file(const fs::path& file, const Precomputed& p, const Scene
     photometry[j] = d.contents ? *d.contents : read_file(d.file, kMaxPhotometryFileBytes);
     photometry_files.push_back({{"luminaire", j}, {"file", d.file.string()}});
   }
-  const nlohmann::json metadata = {
+  nlohmann::json metadata = {
       {"photometry", photometry_files},
       {"portal_sh_order", p.portal_sh_order},
       {"nearfield_sh_order", p.nearfield.sh_order},
@@ -270,6 +271,14 @@ void write_transfer_file(const fs::path& file, const Precomputed& p, const Scene
       {"triangles", p.mesh.triangles.size()},
       {"luminaires", p.luminaires.size()},
       {"phases", phases}};
+  if (!p.cuts.empty()) {
+    const HeightCutsView svc = p.cuts.self_visibility.view();
+    metadata["cuts"] = {{"directions", p.cuts.directions.size()},
+                        {"threshold", p.cuts.threshold},
+                        {"self_visibility_nodes", svc.node_count()},
+                        {"self_visibility_bytes", svc.bytes()},
+                        {"index_encoded_bytes", index_encoded_bytes(svc)}};
+  }
 
   std::vector<float> positions, normals, albedo;
   for (std::size_t v = 0; v < p.receivers.vertex_count; ++v) {
@@ -305,6 +314,8 @@ void write_transfer_file(const fs::path& file, const Precomputed& p, const Scene
   write_gather_sections(w, p.gather, blocked.gather_entries, blocked.ranks);
   ObjectSectionData objects;
   write_object_sections(w, p.objects, objects);
+  CutsSectionData cuts;
+  write_cuts_sections(w, p.cuts, cuts);
   try {
     w.write(file);
   } catch (const std::runtime_error& e) {
@@ -328,6 +339,7 @@ TransferView in_memory_view(const Precomputed& p) {
                          t.indirect.view()});
   }
   v.objects = p.objects;
+  v.cuts = cuts_view(p.cuts);
   v.nearfield.sh_order = p.nearfield.sh_order;
   v.nearfield.transfer = p.nearfield.transfer;
   RuntimeSceneView& s = v.scene;
@@ -466,6 +478,12 @@ TransferFile open_transfer_file(const fs::path& file) {
     read_nearfield_sections(t.file, receivers, nf, where);
   }
   t.view.objects = read_object_sections(t.file, t.scene, where);
+  t.view.cuts = read_cuts_sections(t.file, receivers, where);
+  if (t.scene.environment && t.view.cuts.directions.empty()) {
+    fail_input(where,
+               "the scene has a top-level environment but the file no visibility cuts "
+               "(run relight precompute again)");
+  }
   RuntimeSceneView& s = t.view.scene;
   read_gather_sections(t.file, receivers, t.vertex_count, s, where);
   s.vertex_albedo.assign(t.vertex_albedo.begin(), t.vertex_albedo.end());

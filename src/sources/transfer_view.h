@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "engine/runtime_scene.h"
+#include "sources/cuts/cuts_sections.h"
 #include "sources/luminaire/luminaire_transfer_view.h"
 #include "sources/nearfield/nearfield_transfer_view.h"
 #include "sources/object/object_mesh.h"
@@ -24,6 +25,7 @@ struct TransferView {
   NearfieldTransferView nearfield;          // sh_order 0 without emitters
   RuntimeSceneView scene;                   // what the run time traces and bounces itself
   std::vector<ObjectMesh> objects;          // the movable objects' prepared meshes, scene order
+  CutsTransferView cuts;  // the top-level environment's visibility cuts (empty: none)
 };
 
 }  // namespace relight

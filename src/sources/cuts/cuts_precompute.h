@@ -1,0 +1,40 @@
+// The precompute of the visibility cuts (issue 15; Iwasaki et al., Cyberworlds, §V.A.1: the
+// capture paper, papers/003), made when the scene has a top-level environment: the direction
+// tree of `CutsSettings::directions` directions and a self-visibility cut
+// (sources/cuts/self_visibility.h) at every receiver — the static scene's vertices, then its
+// sensors — traced against the static scene's opaque surfaces and its portals' glass (a
+// window shows its own exterior, not the top-level environment: render/reference_tracer.h
+// does the same), height encoded (math/cut_encoding.h). Movable objects are not in these
+// cuts: they shadow through their visibility cut fields. Every rank of an MPI run computes
+// every cut (they are not dealt out). Pinned by tests/sources/cuts/cuts_lighting_test.cpp.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "engine/receivers.h"
+#include "math/cut_encoding.h"
+#include "math/direction_tree.h"
+#include "scene/scene.h"
+#include "trace/traced_scene.h"
+
+namespace relight {
+
+struct CutsTransfer {
+  std::vector<Vec3> directions;  // the tree's leaves in leaf order; empty: no cuts
+  HeightCuts self_visibility;    // one cut per receiver
+  double threshold = 0;
+  std::uint64_t rays = 0;
+  double seconds = 0;
+
+  bool empty() const { return directions.empty(); }
+};
+
+// `ray_points` per receiver (engine/receivers.h receiver_ray_points), pushed off the surface
+// here.
+CutsTransfer precompute_cuts(const CutsSettings& settings, const Receivers& receivers,
+                             std::span<const Vec3> ray_points, const TracedScene& traced,
+                             bool progress);
+
+}  // namespace relight

@@ -1,0 +1,118 @@
+#include "sources/cuts/environment_lighting.h"
+
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "common/input_error.h"
+#include "light/environment_clusters.h"
+#include "light/environment_map_io.h"
+
+namespace relight {
+
+EnvironmentLighting::EnvironmentLighting(const CutsTransferView& cuts, const RuntimeScene& runtime)
+    : cuts_(cuts),
+      runtime_(runtime),
+      receivers_(runtime.receivers()),
+      tree_(direction_tree_over_leaves(cuts.directions)),
+      leaves_(leaf_grid(tree_)),
+      glossy_cos_(std::cos(kGlossyNodeDeg * kPi / 180)),
+      direct_(3 * receivers_, 0.0f),
+      indirect_(3 * receivers_, 0.0f) {
+  if (cuts_.self_visibility.cut_count() != receivers_) {
+    throw std::invalid_argument("EnvironmentLighting: not one cut per receiver");
+  }
+}
+
+bool EnvironmentLighting::set_environment(const std::optional<EnvironmentSpec>& spec) {
+  if (spec == spec_ && (env_.has_value() || !spec)) return false;
+  if (!spec) {
+    env_.reset();
+  } else {
+    try {
+      if (spec->type == EnvironmentType::kMap) {
+        if (!map_ || map_file_ != spec->file) {
+          map_ = std::make_shared<const EquirectMap>(read_environment_map(spec->file));
+          map_file_ = spec->file;
+        }
+        env_ = make_environment(*spec, map_);
+      } else {
+        env_ = make_environment(*spec);
+      }
+    } catch (const std::invalid_argument& e) {
+      fail_input(spec->where, e.what());
+    }
+  }
+  spec_ = spec;
+  update();
+  return true;
+}
+
+void EnvironmentLighting::set_bounce(bool bounce) {
+  if (bounce == bounce_) return;
+  bounce_ = bounce;
+  update();
+}
+
+Rgb EnvironmentLighting::irradiance(std::size_t r) const {
+  const Vec3 n = runtime_.normal(r);
+  Rgb out{};
+  cuts_.self_visibility.for_each_visible(
+      r, [&](std::uint32_t node, int) { out += moments_[node].irradiance(n); });
+  return out;
+}
+
+void EnvironmentLighting::update() {
+  const auto start = std::chrono::steady_clock::now();
+  if (env_) {
+    moments_ = environment_moments(*env_, tree_, leaves_);
+  } else {
+    moments_.assign(2 * tree_.leaf_count(), RgbMoment{});
+  }
+  light_direction_.resize(moments_.size());
+  for (std::size_t k = 1; k < moments_.size(); ++k) {
+    const RgbMoment& m = moments_[k];
+    Vec3 d{0, 0, 0};
+    for (int i = 0; i < 3; ++i) {
+      const double c = 0.2126 * m.r[i] + 0.7152 * m.g[i] + 0.0722 * m.b[i];
+      (i == 0 ? d.x : (i == 1 ? d.y : d.z)) = c;
+    }
+    light_direction_[k] = length(d) > 0 ? normalize(d) : tree_.axis[k];
+  }
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, receivers_, 256), [&](const auto& range) {
+    for (std::size_t r = range.begin(); r < range.end(); ++r) {
+      const Rgb e = irradiance(r);
+      direct_[3 * r] = static_cast<float>(e.r);
+      direct_[3 * r + 1] = static_cast<float>(e.g);
+      direct_[3 * r + 2] = static_cast<float>(e.b);
+    }
+  });
+  seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  bounce_seconds_ = 0;
+  if (bounce_ && env_ && runtime_.can_bounce()) {
+    bounce_seconds_ = runtime_.bounce(direct_, indirect_, warm_);
+    warm_ = true;
+  } else {
+    std::fill(indirect_.begin(), indirect_.end(), 0.0f);
+    warm_ = false;
+  }
+}
+
+void EnvironmentLighting::add_block(std::size_t b, bool, float (&acc)[3][kBlock]) const {
+  // The direct part in both slots: no renderer evaluates it per pixel.
+  const std::size_t base = b * kBlock;
+  const std::size_t count = std::min(kBlock, receivers_ - base);
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::size_t r = 3 * (base + i);
+    for (std::size_t c = 0; c < 3; ++c) acc[c][i] += direct_[r + c] + indirect_[r + c];
+  }
+}
+
+std::size_t EnvironmentLighting::transfer_bytes() const {
+  return 2 * direct_.size() * sizeof(float);
+}
+
+}  // namespace relight

@@ -1,0 +1,110 @@
+// The top-level environment's run-time term (issue 15; Iwasaki et al., Cyberworlds, §V, Eq. 3:
+// the capture paper, papers/003): at every receiver of normal n the product of its binary
+// self-visibility cut (sources/cuts/self_visibility.h) with the environment's first moments on
+// the direction tree (light/environment_clusters.h), summed over the cut's visible nodes,
+//     E(x) = Σ_{k visible from x} n · ∫_{cell(k)} L ω dω,
+// exact for any environment on nodes whose leaves agree, so a small bright source's shadow is
+// as sharp as the leaves' spacing (1.1° at 32,768 directions); then that direct light bounced
+// through the precompute's gather operator (engine/runtime_scene.h; the paper shows direct
+// light only, and `relight reference --max-bounces 1` compares with set_bounce(false)). The
+// environment is clustered and the receivers summed again only when the state's environment
+// changes; the bounce starts from the last one. Toward an eye, a glossy receiver reflects
+//     L_o = Σ_j f(ω_j, ω_o) · n · M_j
+// over its visible nodes split until each lies within a cone of kGlossyNodeDeg (a node of open
+// sky would otherwise put a quadrant's light at one direction of a narrow lobe), ω_j the
+// direction of the node's light — its luminance moment's, so that a sun or a lamp in a map
+// lands where it is, not at the node's centre — or its mean direction when it holds none.
+// Pinned by tests/sources/cuts/cuts_lighting_test.cpp.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "engine/runtime_scene.h"
+#include "engine/source_term.h"
+#include "light/environment.h"
+#include "light/environment_clusters.h"
+#include "math/direction_tree.h"
+#include "math/point_grid.h"
+#include "scene/environment_spec.h"
+#include "sources/cuts/cuts_sections.h"
+
+namespace relight {
+
+class EnvironmentLighting : public SourceTerm {
+ public:
+  // `runtime` holds the receivers' normals and bounces the direct light (when it has a gather
+  // operator); cuts and runtime must outlive the term.
+  EnvironmentLighting(const CutsTransferView& cuts, const RuntimeScene& runtime);
+
+  // Lights the scene by `spec` (none: dark); returns whether the light changed. Loads a map
+  // file only when the file differs from the last one's.
+  bool set_environment(const std::optional<EnvironmentSpec>& spec);
+  // Whether the interreflected light is added (the default) or the direct light alone, as
+  // `relight reference --max-bounces 1` traces it.
+  void set_bounce(bool bounce);
+  bool bounces() const { return bounce_; }
+
+  void add_block(std::size_t block, bool include_direct, float (&acc)[3][kBlock]) const override;
+  std::size_t transfer_bytes() const override;
+
+  const DirectionTree& tree() const { return tree_; }
+  // ∫ L ω dω per node of the tree for the current environment (light/environment_clusters.h).
+  std::span<const RgbMoment> moments() const { return moments_; }
+  // The current environment, when there is one.
+  const Environment* environment() const { return env_ ? &*env_ : nullptr; }
+  // The irradiance the cut of receiver r gives under the current environment.
+  Rgb irradiance(std::size_t r) const;
+  // Σ_j weight(ω_j) · n · M_j over receiver r's visible nodes split to kGlossyNodeDeg, n its
+  // normal, ω_j the direction of node j's light: the outgoing radiance when `weight` is the
+  // BRDF toward the eye.
+  template <typename Weight>
+  Rgb reflected(std::size_t r, const Weight& weight) const {
+    const Vec3 n = runtime_.normal(r);
+    Rgb out{};
+    std::uint32_t stack[64];
+    cuts_.self_visibility.for_each_visible(r, [&](std::uint32_t node, int) {
+      int top = 0;
+      stack[top++] = node;
+      while (top > 0) {
+        const std::uint32_t j = stack[--top];
+        if (j < tree_.leaf_count() && tree_.cos_half_angle[j] < glossy_cos_) {
+          stack[top++] = 2 * j + 1;
+          stack[top++] = 2 * j;
+          continue;
+        }
+        const Rgb e = moments_[j].irradiance(n);
+        if (e.r > 0 || e.g > 0 || e.b > 0) out += e * weight(light_direction_[j]);
+      }
+    });
+    return out;
+  }
+  static constexpr double kGlossyNodeDeg = 3;
+  // Wall time of the last update: the cluster values and the receivers' sums, and the bounce.
+  double seconds() const { return seconds_; }
+  double bounce_seconds() const { return bounce_seconds_; }
+
+ private:
+  void update();
+
+  CutsTransferView cuts_;
+  const RuntimeScene& runtime_;
+  std::size_t receivers_;
+  DirectionTree tree_;
+  PointGrid leaves_;
+  std::optional<EnvironmentSpec> spec_;
+  std::optional<Environment> env_;
+  std::shared_ptr<const EquirectMap> map_;  // the last map read, and its file
+  std::filesystem::path map_file_;
+  std::vector<RgbMoment> moments_;
+  std::vector<Vec3> light_direction_;  // per node: its luminance moment's direction, or its axis
+  double glossy_cos_;                  // cos kGlossyNodeDeg
+  bool bounce_ = true, warm_ = false;
+  std::vector<float> direct_, indirect_;  // 3 per receiver
+  double seconds_ = 0, bounce_seconds_ = 0;
+};
+
+}  // namespace relight
