@@ -1,0 +1,119 @@
+#include "math/cut_merge.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace relight {
+
+namespace {
+
+constexpr std::size_t kMaxOperands = 16;
+
+// A pointer into one operand and its counter (Steps 1 and 3).
+struct Cursor {
+  const HeightCutsView* stored = nullptr;  // a stored binary cut, or
+  const ValueCut* values = nullptr;        // a cut with values
+  std::uint64_t k = 0, end = 0;            // the pointed node and the end
+  std::uint64_t counter = 0;               // leaves of the pointed node already passed
+
+  int height() const {
+    return stored != nullptr ? stored->height(k) : values->height[static_cast<std::size_t>(k)];
+  }
+  float value() const {
+    return stored != nullptr ? (stored->is_visible(k) ? 1.0f : 0.0f)
+                             : values->value[static_cast<std::size_t>(k)];
+  }
+};
+
+// Appends (h, v) to out at leaf position `leaf`, merging it with its left sibling while they
+// are of equal height and value.
+void push_node(ValueCut& out, std::uint64_t leaf, int h, float v) {
+  while (!out.height.empty() && out.height.back() == h && out.value.back() == v &&
+         (leaf & ((std::uint64_t{2} << h) - 1)) == (std::uint64_t{1} << h)) {
+    out.height.pop_back();
+    out.value.pop_back();
+    leaf -= std::uint64_t{1} << h;
+    ++h;
+  }
+  out.height.push_back(static_cast<std::uint8_t>(h));
+  out.value.push_back(v);
+}
+
+// Steps 1–4 over `cursors`; op(values of the pointed nodes) is each output node's value.
+template <typename Op>
+void merge(std::span<Cursor> cursors, const Op& op, ValueCut& out) {
+  out.clear();
+  std::uint64_t leaf = 0;
+  float values[kMaxOperands];
+  while (cursors.front().k < cursors.front().end) {
+    int h_min = 64;
+    for (const Cursor& c : cursors) h_min = std::min(h_min, c.height());
+    // The pointed nodes' parts at h_min are what the output node covers.
+    for (std::size_t j = 0; j < cursors.size(); ++j) values[j] = cursors[j].value();
+    push_node(out, leaf, h_min, op(std::span<const float>(values, cursors.size())));
+    leaf += std::uint64_t{1} << h_min;
+    for (Cursor& c : cursors) {
+      const int h = c.height();
+      if (h == h_min) {
+        ++c.k;
+        c.counter = 0;
+      } else {
+        c.counter += std::uint64_t{1} << h_min;
+        if (c.counter == (std::uint64_t{1} << h)) {
+          ++c.k;
+          c.counter = 0;
+        }
+      }
+    }
+  }
+}
+
+}  // namespace
+
+void interpolate_cuts(std::span<const WeightedCut> operands, ValueCut& out) {
+  if (operands.empty() || operands.size() > kMaxOperands) {
+    throw std::invalid_argument("interpolate_cuts: 1 to 16 operands");
+  }
+  Cursor cursors[kMaxOperands];
+  float weights[kMaxOperands];
+  for (std::size_t j = 0; j < operands.size(); ++j) {
+    const WeightedCut& o = operands[j];
+    cursors[j].stored = o.cuts;
+    cursors[j].k = o.cuts->first[o.cut];
+    cursors[j].end = o.cuts->first[o.cut + 1];
+    weights[j] = o.weight;
+  }
+  merge(
+      std::span<Cursor>(cursors, operands.size()),
+      [&](std::span<const float> v) {
+        float sum = 0;
+        for (std::size_t j = 0; j < v.size(); ++j) sum += weights[j] * v[j];
+        return sum;
+      },
+      out);
+}
+
+void multiply_cuts(const HeightCutsView& cuts, std::size_t cut,
+                   std::span<const ValueCut* const> factors, ValueCut& out) {
+  if (factors.size() + 1 > kMaxOperands) {
+    throw std::invalid_argument("multiply_cuts: at most 15 factors");
+  }
+  Cursor cursors[kMaxOperands];
+  cursors[0].stored = &cuts;
+  cursors[0].k = cuts.first[cut];
+  cursors[0].end = cuts.first[cut + 1];
+  for (std::size_t j = 0; j < factors.size(); ++j) {
+    cursors[j + 1].values = factors[j];
+    cursors[j + 1].end = factors[j]->size();
+  }
+  merge(
+      std::span<Cursor>(cursors, factors.size() + 1),
+      [](std::span<const float> v) {
+        float p = v[0];
+        for (std::size_t j = 1; j < v.size() && p != 0; ++j) p *= v[j];
+        return p;
+      },
+      out);
+}
+
+}  // namespace relight

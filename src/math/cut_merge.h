@@ -1,0 +1,60 @@
+// Products and interpolations of cuts of the direction tree by the paper's merge with counters
+// (issue 15; Iwasaki et al., Cyberworlds, §V.A.3, Fig. 6, Steps 1–4: the capture paper,
+// papers/003). Every operand lists its nodes in leaf order by height alone
+// (math/cut_encoding.h), so the operands are walked together without a node index: a pointer
+// and a counter per operand (Step 1), the operation applied to the pointed nodes and stored at
+// the lowest of their heights h_min (Step 2), a pointer at h_min advanced and the others' counters
+// raised by 2^h_min, a pointer advanced when its counter reaches 2^h of its node (Step 3), until
+// every pointer is past its cut's last node (Step 4). The result is the coarsest common
+// refinement of the operands, with siblings of equal value merged again, so a product of
+// visibilities stays as compact as its edges allow. Pinned by tests/math/cut_merge_test.cpp
+// (against the same operations leaf by leaf).
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "math/cut_encoding.h"
+
+namespace relight {
+
+// A cut with fractional values (an interpolated visibility, a product): per node in leaf order
+// its height and value.
+struct ValueCut {
+  std::vector<std::uint8_t> height;
+  std::vector<float> value;
+
+  void clear() {
+    height.clear();
+    value.clear();
+  }
+  std::size_t size() const { return height.size(); }
+};
+
+// A stored binary cut (cut `cut` of `cuts`) with its weight in an interpolation.
+struct WeightedCut {
+  const HeightCutsView* cuts = nullptr;
+  std::size_t cut = 0;
+  float weight = 0;
+};
+
+// out = Σ weight · cut, over at most 16 operands of the same tree.
+void interpolate_cuts(std::span<const WeightedCut> operands, ValueCut& out);
+
+// out = the stored binary cut (cuts, cut) times every factor. N is the tree's leaf count.
+void multiply_cuts(const HeightCutsView& cuts, std::size_t cut,
+                   std::span<const ValueCut* const> factors, ValueCut& out);
+
+// Calls visit(heap_node, value) for every node of `cut`, in leaf order (N leaves).
+template <typename Visit>
+void for_each_node(const ValueCut& cut, std::uint32_t leaf_count, const Visit& visit) {
+  std::uint64_t leaf = 0;
+  for (std::size_t i = 0; i < cut.height.size(); ++i) {
+    const int h = cut.height[i];
+    visit(static_cast<std::uint32_t>((leaf_count + leaf) >> h), cut.value[i]);
+    leaf += std::uint64_t{1} << h;
+  }
+}
+
+}  // namespace relight

@@ -1,0 +1,104 @@
+// The merge with counters (math/cut_merge.h) against the same operations leaf by leaf: eight
+// binary cuts of caps about nearby axes (as the samples of a visibility cut field around a
+// point) interpolated with trilinear-like weights, and a horizon cut times two such
+// interpolations, equal at every leaf; a product with a cut of ones keeps the cut's nodes.
+#include <cstdint>
+#include <cstdio>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "math/cut_encoding.h"
+#include "math/cut_merge.h"
+#include "math/direction_cut.h"
+#include "math/direction_tree.h"
+
+namespace relight {
+namespace {
+
+const DirectionTree& tree() {
+  static const DirectionTree t = build_direction_tree(repulsed_directions(4096, 5));
+  return t;
+}
+
+// 0 inside the cap of cosine `c` about `axis` (an occluder's silhouette), 1 elsewhere.
+std::vector<float> cap(Vec3 axis, double c) {
+  std::vector<float> v(tree().leaf_count());
+  for (std::size_t i = 0; i < v.size(); ++i) v[i] = dot(tree().leaves[i], axis) > c ? 0.0f : 1.0f;
+  return v;
+}
+
+// The value of a ValueCut at every leaf.
+std::vector<float> leaves_of(const ValueCut& cut) {
+  std::vector<float> out;
+  for (std::size_t i = 0; i < cut.size(); ++i) {
+    out.insert(out.end(), std::size_t{1} << cut.height[i], cut.value[i]);
+  }
+  return out;
+}
+
+TEST(CutMerge, EightInterpolatedCutsEqualTheWeightedSumAtEveryLeaf) {
+  HeightCuts store = make_height_cuts(tree());
+  std::vector<std::vector<float>> leaf_values;
+  for (int s = 0; s < 8; ++s) {
+    leaf_values.push_back(cap(normalize(Vec3{0.2 * (s & 1), 1, 0.15 * (s >> 1)}), 0.9 - 0.01 * s));
+    append_cut(store, make_direction_cut(tree(), leaf_values.back(), 0));
+  }
+  const HeightCutsView view = store.view();
+  std::vector<WeightedCut> operands;
+  const float w[8] = {0.3f, 0.1f, 0.05f, 0.15f, 0.1f, 0.1f, 0.12f, 0.08f};
+  for (std::size_t s = 0; s < 8; ++s) operands.push_back({&view, s, w[s]});
+  ValueCut out;
+  interpolate_cuts(operands, out);
+  const std::vector<float> got = leaves_of(out);
+  ASSERT_EQ(got.size(), tree().leaf_count());
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    float expected = 0;
+    for (std::size_t s = 0; s < 8; ++s) expected += w[s] * leaf_values[s][i];
+    ASSERT_NEAR(got[i], expected, 1e-6) << i;
+  }
+  std::printf("8 cuts of %llu nodes in all interpolated into %zu nodes\n",
+              static_cast<unsigned long long>(view.node_count()), out.size());
+  EXPECT_LT(out.size(), view.node_count());
+}
+
+TEST(CutMerge, AProductEqualsTheLeafProductAndOnesChangeNothing) {
+  HeightCuts store = make_height_cuts(tree());
+  std::vector<float> horizon(tree().leaf_count());
+  const Vec3 up = normalize(Vec3{0.1, 1, -0.2});
+  for (std::size_t i = 0; i < horizon.size(); ++i) {
+    horizon[i] = dot(tree().leaves[i], up) > 0 ? 1.0f : 0.0f;
+  }
+  append_cut(store, make_direction_cut(tree(), horizon, 0));
+  const std::vector<float> a = cap(normalize(Vec3{0.5, 1, 0}), 0.95);
+  const std::vector<float> b = cap(normalize(Vec3{-0.2, 0.6, 0.3}), 0.97);
+  append_cut(store, make_direction_cut(tree(), a, 0));
+  append_cut(store, make_direction_cut(tree(), b, 0));
+  const HeightCutsView view = store.view();
+  ValueCut fa, fb, ones, out;
+  const WeightedCut wa{&view, 1, 0.75f}, wb{&view, 2, 1.0f};
+  interpolate_cuts(std::span(&wa, 1), fa);
+  interpolate_cuts(std::span(&wb, 1), fb);
+  const ValueCut* factors[] = {&fa, &fb};
+  multiply_cuts(view, 0, factors, out);
+  const std::vector<float> got = leaves_of(out);
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    ASSERT_NEAR(got[i], horizon[i] * 0.75f * a[i] * b[i], 1e-6) << i;
+  }
+  // Times a cut of ones: the horizon cut's own nodes, merged back where they were.
+  ones.height = {static_cast<std::uint8_t>(tree().height(1))};
+  ones.value = {1.0f};
+  const ValueCut* one[] = {&ones};
+  multiply_cuts(view, 0, one, out);
+  EXPECT_EQ(out.size(), view.first[1] - view.first[0]);
+  std::uint64_t visited = 0;
+  for_each_node(out, static_cast<std::uint32_t>(tree().leaf_count()),
+                [&](std::uint32_t node, float) {
+                  EXPECT_GE(node, 1u);
+                  visited += std::uint64_t{1} << tree().height(node);
+                });
+  EXPECT_EQ(visited, tree().leaf_count());
+}
+
+}  // namespace
+}  // namespace relight
