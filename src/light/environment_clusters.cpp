@@ -50,7 +50,10 @@ PointGrid leaf_grid(const DirectionTree& tree) {
 }
 
 std::vector<RgbMoment> environment_moments(const Environment& env, const DirectionTree& tree,
-                                           const PointGrid& leaves) {
+                                           const PointGrid& leaves, double frame_rotate_deg) {
+  // World → the object's frame: the turn undone.
+  const Placement back{{0, 0, 0}, -frame_rotate_deg};
+  const auto to_frame = [&](Vec3 d) { return placed_direction(d, back); };
   const std::size_t n = tree.leaf_count();
   const double spacing = leaf_spacing(tree);
   std::vector<RgbMoment> node(2 * n);
@@ -72,7 +75,7 @@ std::vector<RgbMoment> environment_moments(const Environment& env, const Directi
           [&](int i, int j, double, double) {
             return map.texels[static_cast<std::size_t>(j) * map.width + i] * env.scale;
           },
-          [&](Vec3 d) { return rotation.to_world(d); }, leaves, node, n);
+          [&](Vec3 d) { return to_frame(rotation.to_world(d)); }, leaves, node, n);
       break;
     }
     case EnvironmentKind::kSky: {
@@ -82,11 +85,12 @@ std::vector<RgbMoment> environment_moments(const Environment& env, const Directi
           [&](int, int, double u, double v) {
             return env.diffuse_radiance(equirect_direction(u, v));
           },
-          [](Vec3 d) { return d; }, leaves, node, n);
+          to_frame, leaves, node, n);
       if (const std::optional<SunDisc>& sun = env.sun()) {
         constexpr int kSpiral = 64;
         const double share = sun->integrated_luminance() / kSpiral;
-        for (const Vec3& d : sun_disc_spiral(*sun, kSpiral)) {
+        for (const Vec3& world : sun_disc_spiral(*sun, kSpiral)) {
+          const Vec3 d = to_frame(world);
           add_moment(node[n + leaves.nearest(d)], Rgb{1, 1, 1}, share, d);
         }
       }

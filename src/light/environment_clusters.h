@@ -28,6 +28,7 @@
 
 #include "light/environment.h"
 #include "math/direction_tree.h"
+#include "math/placement.h"
 #include "math/point_grid.h"
 #include "math/rgb.h"
 
@@ -56,8 +57,11 @@ struct RgbMoment {
 // spacing.
 PointGrid leaf_grid(const DirectionTree& tree);
 
-// M_k per heap node k (index 0 unused, leaves N … 2N − 1).
+// M_k per heap node k (index 0 unused, leaves N … 2N − 1), in the frame of an object turned by
+// `frame_rotate_deg` about the vertical (math/placement.h): a world direction ω counts at the
+// object's direction the turn takes back to it, so that cuts stored in the object's frame meet
+// the environment as the object now sees it.
 std::vector<RgbMoment> environment_moments(const Environment& env, const DirectionTree& tree,
-                                           const PointGrid& leaves);
+                                           const PointGrid& leaves, double frame_rotate_deg = 0);
 
 }  // namespace relight

@@ -25,9 +25,9 @@ struct Cursor {
   }
 };
 
-// Appends (h, v) to out at leaf position `leaf`, merging it with its left sibling while they
-// are of equal height and value.
-void push_node(ValueCut& out, std::uint64_t leaf, int h, float v) {
+}  // namespace
+
+void push_cut_node(ValueCut& out, std::uint64_t leaf, int h, float v) {
   while (!out.height.empty() && out.height.back() == h && out.value.back() == v &&
          (leaf & ((std::uint64_t{2} << h) - 1)) == (std::uint64_t{1} << h)) {
     out.height.pop_back();
@@ -38,6 +38,17 @@ void push_node(ValueCut& out, std::uint64_t leaf, int h, float v) {
   out.height.push_back(static_cast<std::uint8_t>(h));
   out.value.push_back(v);
 }
+
+void expand_cut(const ValueCut& cut, std::span<float> leaves) {
+  std::size_t leaf = 0;
+  for (std::size_t i = 0; i < cut.size(); ++i) {
+    const std::size_t count = std::size_t{1} << cut.height[i];
+    std::fill_n(leaves.begin() + static_cast<std::ptrdiff_t>(leaf), count, cut.value[i]);
+    leaf += count;
+  }
+}
+
+namespace {
 
 // Steps 1–4 over `cursors`; op(values of the pointed nodes) is each output node's value.
 template <typename Op>
@@ -50,7 +61,7 @@ void merge(std::span<Cursor> cursors, const Op& op, ValueCut& out) {
     for (const Cursor& c : cursors) h_min = std::min(h_min, c.height());
     // The pointed nodes' parts at h_min are what the output node covers.
     for (std::size_t j = 0; j < cursors.size(); ++j) values[j] = cursors[j].value();
-    push_node(out, leaf, h_min, op(std::span<const float>(values, cursors.size())));
+    push_cut_node(out, leaf, h_min, op(std::span<const float>(values, cursors.size())));
     leaf += std::uint64_t{1} << h_min;
     for (Cursor& c : cursors) {
       const int h = c.height();

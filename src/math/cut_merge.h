@@ -32,6 +32,13 @@ struct ValueCut {
   std::size_t size() const { return height.size(); }
 };
 
+// Appends the node of height h starting at leaf `first_leaf` (the end of `out`) with value v,
+// merging it with its left sibling while they are of equal height and value.
+void push_cut_node(ValueCut& out, std::uint64_t first_leaf, int h, float v);
+
+// The value of every leaf of `cut` (N leaves) into `leaves`.
+void expand_cut(const ValueCut& cut, std::span<float> leaves);
+
 // A stored binary cut (cut `cut` of `cuts`) with its weight in an interpolation.
 struct WeightedCut {
   const HeightCutsView* cuts = nullptr;

@@ -228,10 +228,17 @@ class GlossyShading {
     // A stream per hit point: images are deterministic whatever the threads do.
     const std::uint64_t seed = std::hash<double>{}(p.x * 7.0 + p.y * 131.0 + p.z * 1031.0);
     Rgb l = glossy_pixel_radiance(pixels_, *brdf, p, n, v, kGlossySamples, seed);
-    // The top-level environment through the cuts of the room triangle's vertices.
+    // The top-level environment through the cuts of the triangle's vertices.
     if (triangle < t_.triangles.size()) {
       for (std::size_t k = 0; k < 3; ++k) {
         l += environment_reflection(t_.triangles[triangle][k], *brdf, v) * bary[k];
+      }
+    } else if (const EnvironmentLighting* env = lit_.environment(); env != nullptr) {
+      const Triangle& tri = objects_->placed().triangles[triangle - t_.triangles.size()];
+      for (std::size_t k = 0; k < 3; ++k) {
+        l += env->reflected_object(tri[k], objects_->placed(), [&](Vec3 in) {
+          return metallic_roughness_brdf(*brdf, n, in, v);
+        }) * bary[k];
       }
     }
     return l;
@@ -273,7 +280,13 @@ class GlossyShading {
             const double d = length(to_eye);
             if (!(d > 0) || dot(to_eye, n) <= 0) continue;  // seen from behind: as diffuse
             Rgb l = glossy_pixel_radiance(pixels_, *brdf, p, n, to_eye / d, samples, v);
-            if (v < t_.vertex_count) l += environment_reflection(v, *brdf, to_eye / d);
+            if (v < t_.vertex_count) {
+              l += environment_reflection(v, *brdf, to_eye / d);
+            } else if (const EnvironmentLighting* env = lit_.environment(); env != nullptr) {
+              l += env->reflected_object(v - t_.vertex_count, objects_->placed(), [&](Vec3 in) {
+                return metallic_roughness_brdf(*brdf, n, in, to_eye / d);
+              });
+            }
             out[3 * v] = static_cast<float>(l.r);
             out[3 * v + 1] = static_cast<float>(l.g);
             out[3 * v + 2] = static_cast<float>(l.b);

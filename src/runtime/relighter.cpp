@@ -80,7 +80,7 @@ Relighter::Relighter(TransferView transfer, const Scene& scene, const RelighterS
           "Relighter: a scene with a top-level environment needs visibility cuts in its "
           "transfer (run relight precompute again)");
     }
-    environment_.emplace(transfer_.cuts, *runtime_);
+    environment_.emplace(transfer_.cuts, *runtime_, transfer_.objects);
     environment_->set_bounce(settings.environment_bounce);
     environment_->set_environment(state_.environment);
     terms_.push_back({&*environment_, {}});
@@ -98,6 +98,7 @@ Relighter::Relighter(TransferView transfer, const Scene& scene, const RelighterS
       throw std::invalid_argument("Relighter: the transfer's objects are not the scene's");
     }
     objects_.emplace(*runtime_, transfer_.objects);
+    objects_->set_direct_only(!settings.environment_bounce);
     objects_->set_materials(scene.materials);
     room_light_.assign(3 * transfer_.receivers, 0.0f);
   }
@@ -270,9 +271,15 @@ void Relighter::update_objects() {
   const std::vector<LuminaireLight> lights = luminaires_.lights(luminaire_specs_);
   const std::vector<LuminaireLight> sensor_lights =
       luminaires_.lights(luminaire_specs_, kSensorOpeningSamples);
-  ObjectLightInputs in{room_light_, lights, sensor_lights, portals_.suns(), std::nullopt,
-                       nullptr,     {}};
+  ObjectLightInputs in{
+      room_light_, lights, sensor_lights, portals_.suns(), std::nullopt, nullptr, {}, {}, {}};
   if (!portals_.suns().empty()) in.sun_geometry.emplace(portals_.sun_geometry());
+  if (environment_) {
+    // The environment's light on and around the objects as placed, through the cuts.
+    environment_->update_objects(objects_->placed(), state_.objects);
+    in.extra_room = environment_->object_room_delta();
+    in.extra_objects = environment_->object_direct();
+  }
   if (emitters_) in.emitters = &emitters_->placed();
   if (portals_.size() > 0) {
     in.glass = [this](std::uint32_t p, Vec3 direction) {

@@ -44,7 +44,8 @@ struct RelighterSettings {
   // first state that edits materials on.
   bool sensors_only = false;
   // The top-level environment's interreflection added (sources/cuts/environment_lighting.h);
-  // false: its direct light alone (`--max-bounces 1`).
+  // false: its direct light alone, and the movable objects' change to it alone, nothing
+  // bounced (`--max-bounces 1`).
   bool environment_bounce = true;
   // The sensors' importance already solved for this transfer (another Relighter's: see
   // sensor_importance()), taken instead of solving it again.

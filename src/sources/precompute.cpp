@@ -38,11 +38,6 @@ std::vector<std::uint32_t> triangle_portals(const Scene& scene, const PreparedMe
 }  // namespace
 
 Precomputed precompute_transfer(const Scene& scene, const PrecomputeOptions& options) {
-  if (scene.environment && !scene.objects.empty()) {
-    fail_input(scene.file.string() + ":/environment",
-               "movable objects under a top-level environment need their visibility cut fields, "
-               "which are not built yet (issue 15): only relight reference lights such a scene");
-  }
   Precomputed out;
   out.sh_order = scene.precompute.sh_order;
   out.direct_mode = scene.precompute.direct;
@@ -91,16 +86,16 @@ Precomputed precompute_transfer(const Scene& scene, const PrecomputeOptions& opt
   out.portals = std::move(portals.transfers);
   out.warnings = std::move(portals.warnings);
   out.nearfield = std::move(nearfield.result);
-  if (scene.environment) {
-    out.cuts =
-        precompute_cuts(scene.precompute.cuts, out.receivers, ray_points, traced, options.progress);
-    out.phases.push_back({"self-visibility cuts", out.cuts.seconds, out.cuts.rays});
-  }
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
     const auto start = std::chrono::steady_clock::now();
     out.objects.push_back(prepare_object(scene, scene.objects[i]));
     out.object_seconds.push_back(
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+  if (scene.environment) {
+    out.cuts = precompute_cuts(scene.precompute.cuts, out.receivers, ray_points, traced,
+                               out.objects, options.progress);
+    out.phases.push_back({"visibility cuts", out.cuts.seconds, out.cuts.rays});
   }
   // Kept for what the run time bounces itself: the sun, emitters, movable objects and live
   // material edits (engine/albedo_edit.h).

@@ -83,13 +83,13 @@ void gather_operator_section(const GatherMatrix& g, const RankShares& ranks, Gat
       kBlocksPerRound, sink);
 }
 
-// The gather operator kept for the run-time bounce (engine/runtime_scene.h), in compressed rows;
-// none when it has no entry (`entries`: over every rank's rows). On several ranks, each section
-// gathered as it is written (gather_operator_section); the other ranks send theirs in the same
-// order (send_gather_sections).
-void write_gather_sections(RltWriter& w, const GatherMatrix& g, std::uint64_t entries,
-                           const RankShares& ranks) {
-  if (entries == 0) return;
+// The gather operator kept for the run-time bounce (engine/runtime_scene.h), in compressed rows,
+// also when it has no entry (an open floor under a top-level environment: nothing to bounce, but
+// the run time's objects and edits need to know so); none only without rows. On several ranks, each
+// section gathered as it is written (gather_operator_section); the other ranks send theirs in the
+// same order (send_gather_sections).
+void write_gather_sections(RltWriter& w, const GatherMatrix& g, const RankShares& ranks) {
+  if (g.rows() == 0) return;
   if (!g.isCompressed()) throw std::invalid_argument("gather operator not compressed");
   if (ranks.alone()) {
     w.add_u32(kGatherRows, "gather rows", indices(g.outerIndexPtr(), g.rows() + 1));
@@ -121,8 +121,8 @@ void write_gather_sections(RltWriter& w, const GatherMatrix& g, std::uint64_t en
   }
 }
 
-void send_gather_sections(const GatherMatrix& g, std::uint64_t entries, const RankShares& ranks) {
-  if (entries == 0) return;
+void send_gather_sections(const GatherMatrix& g, const RankShares& ranks) {
+  if (g.rows() == 0) return;
   for (const GatherSection s :
        {GatherSection::rows, GatherSection::columns, GatherSection::values}) {
     gather_operator_section(g, ranks, s, nullptr);
@@ -201,7 +201,6 @@ struct BlockedSections {
   RankShares ranks;
   LuminaireBlockBytes luminaire;
   std::size_t portal_indirect = 0;
-  std::uint64_t gather_entries = 0;  // over every rank's rows
 };
 
 BlockedSections blocked_sections(const Precomputed& p, const Scene& scene, RankExchange* ranks) {
@@ -212,10 +211,7 @@ BlockedSections blocked_sections(const Precomputed& p, const Scene& scene, RankE
   BlockedSections out{ranks != nullptr ? dealt_blocks(*ranks, receivers, kBlock)
                                        : single_process_shares(receivers, kBlock),
                       {k * 3 * kBlock * element, p.direct_mode == "sh" ? k * kBlock * 4 : 0},
-                      static_cast<std::size_t>(sh_count(p.portal_sh_order)) * 3 * kBlock * element,
-                      static_cast<std::uint64_t>(p.gather.nonZeros())};
-  // Collective on several ranks: every rank calls this first, in both paths.
-  if (!out.ranks.alone()) out.gather_entries = sum_over_ranks(*ranks, out.gather_entries);
+                      static_cast<std::size_t>(sh_count(p.portal_sh_order)) * 3 * kBlock * element};
   return out;
 }
 
@@ -227,7 +223,7 @@ void send_transfer_file_sections(const Precomputed& p, const Scene& scene, RankE
   send_luminaire_sections(p.luminaires, blocked.ranks, blocked.luminaire);
   send_portal_sections(p.portals, blocked.ranks, blocked.portal_indirect);
   send_nearfield_sections(p.nearfield, blocked.ranks);
-  send_gather_sections(p.gather, blocked.gather_entries, blocked.ranks);
+  send_gather_sections(p.gather, blocked.ranks);
 }
 
 void write_transfer_file(const fs::path& file, const Precomputed& p, const Scene& source,
@@ -311,7 +307,7 @@ void write_transfer_file(const fs::path& file, const Precomputed& p, const Scene
   write_luminaire_sections(w, p.luminaires, photometry, blocked.ranks, blocked.luminaire);
   write_portal_sections(w, p.portals, blocked.ranks, blocked.portal_indirect);
   write_nearfield_sections(w, p.nearfield, blocked.ranks);
-  write_gather_sections(w, p.gather, blocked.gather_entries, blocked.ranks);
+  write_gather_sections(w, p.gather, blocked.ranks);
   ObjectSectionData objects;
   write_object_sections(w, p.objects, objects);
   CutsSectionData cuts;
@@ -344,7 +340,7 @@ TransferView in_memory_view(const Precomputed& p) {
   v.nearfield.transfer = p.nearfield.transfer;
   RuntimeSceneView& s = v.scene;
   const auto& g = p.gather;
-  if (g.nonZeros() > 0) {
+  if (g.rows() > 0) {
     if (!g.isCompressed()) throw std::invalid_argument("in_memory_view: gather not compressed");
     s.gather_rows = indices(g.outerIndexPtr(), g.rows() + 1);
     s.gather_columns = indices(g.innerIndexPtr(), g.nonZeros());
@@ -478,7 +474,10 @@ TransferFile open_transfer_file(const fs::path& file) {
     read_nearfield_sections(t.file, receivers, nf, where);
   }
   t.view.objects = read_object_sections(t.file, t.scene, where);
-  t.view.cuts = read_cuts_sections(t.file, receivers, where);
+  std::size_t object_vertices = 0;
+  for (const ObjectMesh& o : t.view.objects) object_vertices += o.positions.size();
+  t.view.cuts =
+      read_cuts_sections(t.file, receivers, t.view.objects.size(), object_vertices, where);
   if (t.scene.environment && t.view.cuts.directions.empty()) {
     fail_input(where,
                "the scene has a top-level environment but the file no visibility cuts "

@@ -8,7 +8,6 @@
 
 #include "math/vec3.h"
 #include "run_command.h"
-#include "support/scene_json.h"
 
 namespace relight {
 namespace {
@@ -60,7 +59,7 @@ TEST(CliBadInput, TopLevelEnvironment) {
   const std::vector<double> lux = testing::sensor_lux(csv);
   ASSERT_EQ(lux.size(), 1u);
   EXPECT_NEAR(lux[0], 1000 * kPi, 0.02 * 1000 * kPi);
-  // The visibility cuts' settings, and movable objects (whose cut fields are not built yet).
+  // The visibility cuts' settings.
   nlohmann::json doc = nlohmann::json::parse(with(R"({ "type": "uniform", "luminance": 1000 })"));
   doc["precompute"] = {{"cuts", {{"directions", 1000}}}};
   const auto odd = dir.write("odd.json", doc.dump());
@@ -68,13 +67,7 @@ TEST(CliBadInput, TopLevelEnvironment) {
       run_relight("precompute '" + odd.string() + "' -o '" + (dir.path() / "x.rlt").string() +
                   "' --no-progress"),
       odd.string() + ":/precompute/cuts/directions: directions must be a power of two");
-  doc["precompute"] = nlohmann::json::object();
-  doc["objects"] = {
-      {{"name", "crate"}, {"geometry", {testing::box({1, 0, 1}, {2, 1, 2}, "grey")}}}};
-  const auto objects = dir.write("objects.json", doc.dump());
-  expect_input_error(run_relight("precompute '" + objects.string() + "' -o '" +
-                                 (dir.path() / "x.rlt").string() + "' --no-progress"),
-                     objects.string() + ":/environment: movable objects under a top-level");
+
   EXPECT_FALSE(std::filesystem::exists(dir.path() / "x.rlt"));
 }
 

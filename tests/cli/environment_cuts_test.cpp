@@ -138,6 +138,41 @@ TEST(EnvironmentCuts, ATurnedSunMovesTheShadowAsTheReferenceDoes) {
   EXPECT_LT(a.mean, 0.03);
 }
 
+// The box as a movable object ("crate"): its shadow through its visibility cut field (12
+// spheres of 6 · 16² points) and, within the field's inner sphere, traced; its own light
+// through its vertices' cuts, the static floor's coarse view and the environment turned into
+// its frame.
+void precompute_with_crate(Showroom& s, const std::string& material) {
+  nlohmann::json doc = nlohmann::json::parse(showroom(material));
+  doc["objects"] = {{{"name", "crate"}, {"geometry", {doc["geometry"][1]}}}};
+  doc["geometry"].erase(1);
+  doc["precompute"]["cuts"] = {{"directions", 8192}, {"sphere_count", 12}, {"sphere_points", 16}};
+  s.scene = s.dir.path() / "showroom.json";
+  s.rlt = s.dir.path() / "showroom.rlt";
+  std::ofstream(s.scene) << doc.dump();
+  const CommandResult r = run_relight("precompute '" + s.scene.string() + "' -o '" +
+                                      s.rlt.string() + "' --no-progress");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+}
+
+TEST(EnvironmentCuts, AMovableCratesDirectLightMatchesTheReferenceBeforeAndAfterItMoves) {
+  for (const std::string material : {"paint", "steel"}) {
+    Showroom s;
+    precompute_with_crate(s, material);
+    const fs::path state = s.dir.path() / "moved.json";
+    std::ofstream(state)
+        << R"({"objects": {"crate": {"translate": [0.5, 0, 0.3], "rotate_deg": 25}}})";
+    for (const std::string st : {std::string(), state.string()}) {
+      const testing::BlockAgreement a = direct_image_agreement(s, st);
+      std::printf("%s crate %s, direct light, %d blocks: mean %.2f %%, worst %.2f %%\n",
+                  material.c_str(), st.empty() ? "as placed" : "moved and turned", a.blocks,
+                  100 * a.mean, 100 * a.worst);
+      EXPECT_TRUE(a.finite) << material << st;
+      EXPECT_LT(a.mean, 0.03) << material << st;
+    }
+  }
+}
+
 TEST(EnvironmentCuts, WhatTheTransferCannotLightIsRefused) {
   const TempDir dir;
   const fs::path scene = dir.path() / "lit.json", rlt = dir.path() / "lit.rlt";

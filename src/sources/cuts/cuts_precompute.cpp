@@ -3,6 +3,8 @@
 #include <atomic>
 #include <chrono>
 
+#include <tbb/blocked_range.h>
+
 #include <tbb/parallel_for.h>
 
 #include "common/progress.h"
@@ -12,7 +14,7 @@ namespace relight {
 
 CutsTransfer precompute_cuts(const CutsSettings& settings, const Receivers& receivers,
                              std::span<const Vec3> ray_points, const TracedScene& traced,
-                             bool progress) {
+                             std::span<const ObjectMesh> objects, bool progress) {
   const auto start = std::chrono::steady_clock::now();
   CutsTransfer out;
   const DirectionTree tree =
@@ -42,6 +44,32 @@ CutsTransfer precompute_cuts(const CutsSettings& settings, const Receivers& rece
     cut = {};
   }
   out.rays = rays;
+  // The objects: each one's field, and its vertices' cuts of itself.
+  out.object_self_visibility = make_height_cuts(tree);
+  out.field_cuts = make_height_cuts(tree);
+  out.field_first.push_back(0);
+  for (const ObjectMesh& object : objects) {
+    const VisibilityField field =
+        precompute_visibility_field(object, tree, settings, out.field_cuts);
+    out.fields.push_back(field.layout);
+    out.field_first.push_back(out.field_cuts.view().cut_count());
+    out.rays += field.rays;
+    const RayTracer own(object.positions, object.triangles,
+                        sequential_ids(object.triangles.size()));
+    std::vector<DirectionCut> self(object.positions.size());
+    std::atomic<std::uint64_t> object_rays{0};
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, self.size(), 16), [&](const auto& range) {
+      std::uint64_t here = 0;
+      for (std::size_t v = range.begin(); v < range.end(); ++v) {
+        const Vec3 n = object.normals[v];
+        self[v] = self_visibility_cut(own, tree, offset_from_surface(object.ray_points[v], n), n,
+                                      settings.threshold, here);
+      }
+      object_rays += here;
+    });
+    for (const DirectionCut& cut : self) append_cut(out.object_self_visibility, cut);
+    out.rays += object_rays;
+  }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }

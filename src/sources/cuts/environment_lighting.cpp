@@ -13,7 +13,8 @@
 
 namespace relight {
 
-EnvironmentLighting::EnvironmentLighting(const CutsTransferView& cuts, const RuntimeScene& runtime)
+EnvironmentLighting::EnvironmentLighting(const CutsTransferView& cuts, const RuntimeScene& runtime,
+                                         std::span<const ObjectMesh> objects)
     : cuts_(cuts),
       runtime_(runtime),
       receivers_(runtime.receivers()),
@@ -24,6 +25,12 @@ EnvironmentLighting::EnvironmentLighting(const CutsTransferView& cuts, const Run
       indirect_(3 * receivers_, 0.0f) {
   if (cuts_.self_visibility.cut_count() != receivers_) {
     throw std::invalid_argument("EnvironmentLighting: not one cut per receiver");
+  }
+  if (!objects.empty()) {
+    if (cuts_.fields.size() != objects.size()) {
+      throw std::invalid_argument("EnvironmentLighting: not one visibility cut field per object");
+    }
+    objects_.emplace(cuts_, tree_, leaves_, runtime_, objects);
   }
 }
 
@@ -57,6 +64,14 @@ void EnvironmentLighting::set_bounce(bool bounce) {
   update();
 }
 
+Vec3 EnvironmentLighting::light_direction(const RgbMoment& m, std::uint32_t j) const {
+  // Rec.709 luminance weights.
+  const Vec3 d{0.2126 * m.r[0] + 0.7152 * m.g[0] + 0.0722 * m.b[0],
+               0.2126 * m.r[1] + 0.7152 * m.g[1] + 0.0722 * m.b[1],
+               0.2126 * m.r[2] + 0.7152 * m.g[2] + 0.0722 * m.b[2]};
+  return length(d) > 0 ? normalize(d) : tree_.axis[j];
+}
+
 Rgb EnvironmentLighting::irradiance(std::size_t r) const {
   const Vec3 n = runtime_.normal(r);
   Rgb out{};
@@ -65,8 +80,16 @@ Rgb EnvironmentLighting::irradiance(std::size_t r) const {
   return out;
 }
 
+void EnvironmentLighting::update_objects(const PlacedObjects& placed,
+                                         std::span<const MovablePlacement> placements) {
+  if (!objects_) return;
+  objects_->update(env_ ? &*env_ : nullptr, moments_, direct_, placed, placements, objects_stale_);
+  objects_stale_ = false;
+}
+
 void EnvironmentLighting::update() {
   const auto start = std::chrono::steady_clock::now();
+  objects_stale_ = true;
   if (env_) {
     moments_ = environment_moments(*env_, tree_, leaves_);
   } else {
@@ -74,13 +97,7 @@ void EnvironmentLighting::update() {
   }
   light_direction_.resize(moments_.size());
   for (std::size_t k = 1; k < moments_.size(); ++k) {
-    const RgbMoment& m = moments_[k];
-    Vec3 d{0, 0, 0};
-    for (int i = 0; i < 3; ++i) {
-      const double c = 0.2126 * m.r[i] + 0.7152 * m.g[i] + 0.0722 * m.b[i];
-      (i == 0 ? d.x : (i == 1 ? d.y : d.z)) = c;
-    }
-    light_direction_[k] = length(d) > 0 ? normalize(d) : tree_.axis[k];
+    light_direction_[k] = light_direction(moments_[k], static_cast<std::uint32_t>(k));
   }
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, receivers_, 256), [&](const auto& range) {
     for (std::size_t r = range.begin(); r < range.end(); ++r) {

@@ -31,14 +31,18 @@
 #include "math/point_grid.h"
 #include "scene/environment_spec.h"
 #include "sources/cuts/cuts_sections.h"
+#include "sources/cuts/environment_objects.h"
+#include "sources/object/object_mesh.h"
 
 namespace relight {
 
 class EnvironmentLighting : public SourceTerm {
  public:
   // `runtime` holds the receivers' normals and bounces the direct light (when it has a gather
-  // operator); cuts and runtime must outlive the term.
-  EnvironmentLighting(const CutsTransferView& cuts, const RuntimeScene& runtime);
+  // operator); `objects` are the scene's movable objects as prepared (TransferView::objects),
+  // whose visibility cut fields `cuts` holds. All must outlive the term.
+  EnvironmentLighting(const CutsTransferView& cuts, const RuntimeScene& runtime,
+                      std::span<const ObjectMesh> objects = {});
 
   // Lights the scene by `spec` (none: dark); returns whether the light changed. Loads a map
   // file only when the file differs from the last one's.
@@ -65,30 +69,77 @@ class EnvironmentLighting : public SourceTerm {
   Rgb reflected(std::size_t r, const Weight& weight) const {
     const Vec3 n = runtime_.normal(r);
     Rgb out{};
-    std::uint32_t stack[64];
     cuts_.self_visibility.for_each_visible(r, [&](std::uint32_t node, int) {
-      int top = 0;
-      stack[top++] = node;
-      while (top > 0) {
-        const std::uint32_t j = stack[--top];
-        if (j < tree_.leaf_count() && tree_.cos_half_angle[j] < glossy_cos_) {
-          stack[top++] = 2 * j + 1;
-          stack[top++] = 2 * j;
-          continue;
-        }
+      split_glossy(node, [&](std::uint32_t j) {
         const Rgb e = moments_[j].irradiance(n);
         if (e.r > 0 || e.g > 0 || e.b > 0) out += e * weight(light_direction_[j]);
-      }
+      });
     });
     return out;
   }
+  // The same at object vertex q (PlacedObjects order) as the objects were last placed
+  // (update_objects), through its visibility in its object's frame; `weight` takes world
+  // directions. 0 without objects or when its object is hidden.
+  template <typename Weight>
+  Rgb reflected_object(std::size_t q, const PlacedObjects& placed, const Weight& weight) const {
+    ValueCut cut;
+    if (!objects_ || !objects_->object_visibility(q, placed, cut)) return {};
+    const std::size_t a = placed.object_of_vertex(q);
+    const std::span<const RgbMoment> m = objects_->object_moments(a);
+    const Vec3 n = objects_->meshes()[a].normals[q - placed.first_vertex[a]];
+    const Placement turn{{0, 0, 0}, objects_->object_turn(a)};
+    Rgb out{};
+    for_each_node(cut, static_cast<std::uint32_t>(tree_.leaf_count()),
+                  [&](std::uint32_t node, float v) {
+                    if (v <= 0) return;
+                    split_glossy(node, [&](std::uint32_t j) {
+                      const Rgb e = m[j].irradiance(n);
+                      if (e.r > 0 || e.g > 0 || e.b > 0) {
+                        out += e * (v * weight(placed_direction(light_direction(m[j], j), turn)));
+                      }
+                    });
+                  });
+    return out;
+  }
   static constexpr double kGlossyNodeDeg = 3;
+  // With movable objects: their shadows at the room's receivers and the direct light at their
+  // vertices for the objects as placed (sources/cuts/environment_objects.h), made again when
+  // the environment or a placement changed since the last call.
+  void update_objects(const PlacedObjects& placed, std::span<const MovablePlacement> placements);
+  // What the objects take from the room's direct light (3 per receiver) and their vertices'
+  // direct light (3 per object vertex); empty without objects.
+  std::span<const float> object_room_delta() const {
+    return objects_ ? objects_->room_delta() : std::span<const float>{};
+  }
+  std::span<const float> object_direct() const {
+    return objects_ ? objects_->object_direct() : std::span<const float>{};
+  }
+  double objects_seconds() const { return objects_ ? objects_->seconds() : 0.0; }
+
   // Wall time of the last update: the cluster values and the receivers' sums, and the bounce.
   double seconds() const { return seconds_; }
   double bounce_seconds() const { return bounce_seconds_; }
 
  private:
   void update();
+  // Calls visit(j) for node k, or its descendants down to cones of kGlossyNodeDeg.
+  template <typename Visit>
+  void split_glossy(std::uint32_t k, const Visit& visit) const {
+    std::uint32_t stack[64];
+    int top = 0;
+    stack[top++] = k;
+    while (top > 0) {
+      const std::uint32_t j = stack[--top];
+      if (j < tree_.leaf_count() && tree_.cos_half_angle[j] < glossy_cos_) {
+        stack[top++] = 2 * j + 1;
+        stack[top++] = 2 * j;
+        continue;
+      }
+      visit(j);
+    }
+  }
+  // The direction of node j's light: its luminance moment's, or its mean direction.
+  Vec3 light_direction(const RgbMoment& m, std::uint32_t j) const;
 
   CutsTransferView cuts_;
   const RuntimeScene& runtime_;
@@ -104,6 +155,8 @@ class EnvironmentLighting : public SourceTerm {
   double glossy_cos_;                  // cos kGlossyNodeDeg
   bool bounce_ = true, warm_ = false;
   std::vector<float> direct_, indirect_;  // 3 per receiver
+  std::optional<EnvironmentObjects> objects_;
+  bool objects_stale_ = true;  // the environment changed since the objects' last update
   double seconds_ = 0, bounce_seconds_ = 0;
 };
 

@@ -328,9 +328,25 @@ void ObjectLighting::update(const ObjectLightInputs& in, bool light_changed) {
   std::fill(static_light_.begin(), static_light_.end(), 0.0f);
   for (std::size_t i = 0; i < 3 * vertices; ++i) static_light_[i] = albedo_[i] * in.room[i];
   std::copy(direct_.begin(), direct_.end(), source_.begin());
-  apply_object_rows(static_light_, source_, false);
-  if (in.glass) add_glass_light(in.glass, source_);
-  if (glossy_) add_glossy_reflection(in, source_);
+  if (!in.extra_room.empty() || !in.extra_objects.empty()) {
+    if (in.extra_room.size() != 3 * receivers || in.extra_objects.size() != 3 * objects) {
+      throw std::invalid_argument("ObjectLighting: the extra direct light has the wrong size");
+    }
+    for (std::size_t r = 0; r < receivers; ++r) {
+      const std::size_t u = r < vertices ? r : r + objects;
+      for (std::size_t k = 0; k < 3; ++k) source_[3 * u + k] += in.extra_room[3 * r + k];
+    }
+    for (std::size_t q = 0; q < objects; ++q) {
+      for (std::size_t k = 0; k < 3; ++k) {
+        source_[3 * (vertices + q) + k] += in.extra_objects[3 * q + k];
+      }
+    }
+  }
+  if (!direct_only_) {
+    apply_object_rows(static_light_, source_, false);
+    if (in.glass) add_glass_light(in.glass, source_);
+    if (glossy_) add_glossy_reflection(in, source_);
+  }
   // ΔE = D + [G + C; H] · ρ ΔE over room vertices and object vertices; sensors gathered once:
   // the objects' rows applied once per sweep, the room's G row by row.
   const auto& g = room.gather().matrix;
@@ -352,8 +368,13 @@ void ObjectLighting::update(const ObjectLightInputs& in, bool light_changed) {
                      prepare};
   BounceSettings bounce;
   bounce.tolerance = 1e-4;
-  timings_.bounces = solve_bounces_rgb(op, source_, indirect_, warm_, bounce);
-  warm_ = true;
+  if (direct_only_) {
+    std::fill(indirect_.begin(), indirect_.end(), 0.0f);
+    timings_.bounces = 0;
+  } else {
+    timings_.bounces = solve_bounces_rgb(op, source_, indirect_, warm_, bounce);
+    warm_ = true;
+  }
   for (std::size_t r = 0; r < receivers; ++r) {
     const std::size_t u = indexing.solver_row(r);
     for (std::size_t k = 0; k < 3; ++k) {

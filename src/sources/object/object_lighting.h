@@ -61,6 +61,12 @@ struct ObjectLightInputs {
   std::optional<SunGeometry> sun_geometry;   // the room's (set when there are suns)
   const PlacedEmitters* emitters = nullptr;  // the near-field emitters as placed; null: none
   GlassLuminance glass;                      // empty: windows show black
+  // Direct light the objects change that another term computed with them in place (the top-level
+  // environment's through its visibility cuts, sources/cuts/environment_objects.h): at room
+  // receivers what the objects take away or add (3 per receiver), at object vertices all of it
+  // (3 per object vertex, PlacedObjects order); empty: none. Part of D, and kept with or without
+  // direct light in every output: no renderer traces it per pixel.
+  std::span<const float> extra_room, extra_objects;
 };
 
 struct ObjectTimings {
@@ -96,6 +102,9 @@ class ObjectLighting {
   // bounce does: engine/glossy_first_bounce.h); the rest of its light as the stand-in.
   void set_materials(std::span<const Material> materials);
 
+  // Direct light alone (`relight render --max-bounces 1`, like the reference's): ΔE = D = the
+  // direct light the objects change, nothing gathered or bounced. Default false.
+  void set_direct_only(bool direct_only) { direct_only_ = direct_only; }
   // Adds ΔE to `out` (3 per room receiver); without direct light, ΔE less ΔE_d (what
   // renderers that trace direct light per pixel, through the objects, still need).
   void add_to_room(std::span<float> out, bool include_direct) const;
@@ -164,6 +173,7 @@ class ObjectLighting {
   std::vector<float> static_light_;   // ρE0, 3 per unified column
   std::vector<float> object_gather_;  // [C; H] · ρΔE this sweep, 3 per unified row
   bool warm_ = false;
+  bool direct_only_ = false;
   std::vector<float> room_delta_, room_delta_direct_;  // 3 per room receiver
   std::vector<float> object_total_, object_indirect_;  // 3 per object vertex
   ObjectTimings timings_;

@@ -1,0 +1,306 @@
+#include "sources/cuts/environment_objects.h"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <chrono>
+#include <cmath>
+
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+namespace relight {
+
+namespace {
+
+constexpr int kMaxFactors = 15;  // math/cut_merge.h multiply_cuts
+
+// A turn in whole micro-degrees, in [0, 360°): the key of the caches.
+std::int64_t turn_key(double deg) {
+  double d = std::fmod(deg, 360.0);
+  if (d < 0) d += 360.0;
+  auto key = static_cast<std::int64_t>(std::llround(d * 1e6));
+  return key == 360'000'000 ? 0 : key;
+}
+
+// The point x (world) in the frame of an object placed by p about `pivot`: the placement undone.
+Vec3 to_object_frame(Vec3 x, Vec3 pivot, const Placement& p) {
+  return pivot + placed_direction(x - p.translate - pivot, {{0, 0, 0}, -p.rotate_deg});
+}
+
+// Σ value · n · M over a cut's nodes.
+Rgb cut_irradiance(const ValueCut& cut, std::uint32_t leaves, std::span<const RgbMoment> m,
+                   Vec3 n) {
+  Rgb e{};
+  for_each_node(cut, leaves, [&](std::uint32_t node, float v) {
+    if (v > 0) e += m[node].irradiance(n) * v;
+  });
+  return e;
+}
+
+}  // namespace
+
+struct EnvironmentObjects::Scratch {
+  std::array<ValueCut, kMaxFactors> factors;
+  ValueCut interpolated, product;
+  std::vector<float> leaf_values;
+};
+
+EnvironmentObjects::EnvironmentObjects(const CutsTransferView& cuts, const DirectionTree& tree,
+                                       const PointGrid& leaves, const RuntimeScene& room,
+                                       std::span<const ObjectMesh> meshes)
+    : cuts_(cuts), tree_(tree), leaves_(leaves), room_(room), meshes_(meshes) {
+  const int log_n = std::bit_width(tree.leaf_count()) - 1;
+  coarse_depth_ = std::min(10, log_n);
+  static_words_ = ((std::size_t{1} << coarse_depth_) + 63) / 64;
+  std::size_t vertices = 0;
+  for (const ObjectMesh& m : meshes) vertices += m.positions.size();
+  static_bits_.assign(vertices * static_words_, ~std::uint64_t{0});
+  room_delta_.assign(3 * room.receivers(), 0.0f);
+  object_direct_.assign(3 * vertices, 0.0f);
+  spread_.resize(tree.cos_half_angle.size());
+  for (std::size_t k = 0; k < spread_.size(); ++k) {
+    spread_[k] = std::acos(std::clamp(tree.cos_half_angle[k], -1.0, 1.0));
+  }
+}
+
+const std::vector<std::uint32_t>& EnvironmentObjects::leaf_turn(double relative_deg) const {
+  const std::lock_guard lock(turn_mutex_);
+  std::unique_ptr<std::vector<std::uint32_t>>& slot = turns_[turn_key(relative_deg)];
+  if (!slot) {
+    auto table = std::make_unique<std::vector<std::uint32_t>>(tree_.leaf_count());
+    const Placement turn{{0, 0, 0}, relative_deg};
+    for (std::size_t i = 0; i < table->size(); ++i) {
+      (*table)[i] = leaves_.nearest(placed_direction(tree_.leaves[i], turn));
+    }
+    slot = std::move(table);
+  }
+  return *slot;
+}
+
+std::span<const RgbMoment> EnvironmentObjects::frame_moments(double frame_deg) {
+  const std::int64_t key = turn_key(frame_deg);
+  if (key == 0) return world_moments_;
+  std::vector<RgbMoment>& m = turned_moments_[key];
+  if (m.empty()) m = environment_moments(*env_, tree_, leaves_, frame_deg);
+  return m;
+}
+
+template <typename LeafValue>
+void EnvironmentObjects::cone_cut(Vec3 axis, double half, const LeafValue& leaf_value,
+                                  ValueCut& out) const {
+  const std::size_t n_leaves = tree_.leaf_count();
+  out.clear();
+  // Top down, left first, so that nodes come out in leaf order; push_cut_node merges siblings
+  // of equal value back.
+  std::uint32_t stack[64];
+  int top = 0;
+  stack[top++] = 1;
+  while (top > 0) {
+    const std::uint32_t k = stack[--top];
+    const int h = tree_.height(k);
+    const std::uint64_t first = (std::uint64_t{k} << h) - n_leaves;
+    const double between = std::acos(std::clamp(dot(tree_.axis[k], axis), -1.0, 1.0));
+    if (between > spread_[k] + half + 1e-9) {
+      push_cut_node(out, first, h, 1.0f);
+    } else if (k >= n_leaves) {
+      push_cut_node(out, first, 0, leaf_value(static_cast<std::size_t>(k - n_leaves)));
+    } else {
+      stack[top++] = 2 * k + 1;
+      stack[top++] = 2 * k;
+    }
+  }
+}
+
+bool EnvironmentObjects::field_factor(std::size_t o, Vec3 x, Vec3 n, double frame_deg,
+                                      const PlacedObjects& placed, Scratch& s,
+                                      ValueCut& out) const {
+  const MovablePlacement& p = placements_[o];
+  if (!p.visible) return false;
+  const VisibilityFieldLayout& layout = cuts_.fields[o];
+  const Vec3 pivot = meshes_[o].pivot;
+  const Vec3 v = placed_point(layout.bounds.centre, pivot, p) - x;
+  const double d = length(v), radius = layout.bounds.radius;
+  if (d > layout.sphere_radius(layout.spheres - 1) || dot(n, v) < -radius) return false;
+  // The object's bounding cone in the receiver's frame.
+  const Vec3 axis = placed_direction(d > 0 ? v / d : Vec3{0, 1, 0}, {{0, 0, 0}, -frame_deg});
+  const double half = d > radius ? std::asin(radius / d) : kPi;
+  if (d < layout.sphere_radius(0)) {
+    // Within the inner sphere the field has no samples: the object traced, leaf by leaf in its
+    // cone (a floor beside a box, under a table).
+    const Vec3 origin = offset_from_surface(x, n);
+    const Placement turn{{0, 0, 0}, frame_deg};
+    const RayTracer& object = placed.own[o];
+    cone_cut(
+        axis, half,
+        [&](std::size_t leaf) {
+          return object.occluded({origin, placed_direction(tree_.leaves[leaf], turn)}) ? 0.0f
+                                                                                       : 1.0f;
+        },
+        out);
+    return true;
+  }
+  std::array<std::uint32_t, 8> ids{};
+  std::array<float, 8> weights{};
+  if (layout.samples_around(to_object_frame(x, pivot, p), ids, weights) == 0) return false;
+  std::array<WeightedCut, 8> operands;
+  for (std::size_t k = 0; k < 8; ++k) {
+    operands[k] = {&cuts_.field_cuts, static_cast<std::size_t>(cuts_.field_first[o]) + ids[k],
+                   weights[k]};
+  }
+  const double relative = frame_deg - p.rotate_deg;
+  if (turn_key(relative) == 0) {
+    interpolate_cuts(operands, out);
+    return true;
+  }
+  // Turned: the field leaf by leaf within the object's bounding cone, in the receiver's frame.
+  interpolate_cuts(operands, s.interpolated);
+  s.leaf_values.resize(tree_.leaf_count());
+  expand_cut(s.interpolated, s.leaf_values);
+  const std::vector<std::uint32_t>& turn = leaf_turn(relative);
+  cone_cut(
+      axis, half, [&](std::size_t leaf) { return s.leaf_values[turn[leaf]]; }, out);
+  return true;
+}
+
+void EnvironmentObjects::object_cut(std::size_t q, std::size_t a, const PlacedObjects& placed,
+                                    Scratch& s) const {
+  const Vec3 x = placed.ray_points[q], n = placed.normals[q];
+  const double frame = placements_[a].rotate_deg;
+  const std::size_t coarse = std::size_t{1} << coarse_depth_;
+  const int coarse_height = std::bit_width(tree_.leaf_count()) - 1 - coarse_depth_;
+  std::array<const ValueCut*, kMaxFactors> factors{};
+  // The static scene, from its coarse view.
+  ValueCut& scene = s.factors[0];
+  scene.clear();
+  const std::uint64_t* bits = &static_bits_[q * static_words_];
+  for (std::size_t i = 0; i < coarse; ++i) {
+    const float v = ((bits[i / 64] >> (i % 64)) & 1) != 0 ? 1.0f : 0.0f;
+    push_cut_node(scene, std::uint64_t{i} << coarse_height, coarse_height, v);
+  }
+  factors[0] = &scene;
+  std::size_t count = 1;
+  for (std::size_t o = 0; o < meshes_.size() && count < kMaxFactors; ++o) {
+    if (o == a) continue;
+    if (field_factor(o, x, n, frame, placed, s, s.factors[count])) {
+      factors[count] = &s.factors[count];
+      ++count;
+    }
+  }
+  multiply_cuts(cuts_.object_self_visibility, q, std::span(factors.data(), count), s.product);
+}
+
+bool EnvironmentObjects::object_visibility(std::size_t q, const PlacedObjects& placed,
+                                           ValueCut& out) const {
+  const std::size_t a = placed.object_of_vertex(q);
+  if (env_ == nullptr || a >= placements_.size() || !placements_[a].visible) return false;
+  Scratch s;
+  object_cut(q, a, placed, s);
+  out = std::move(s.product);
+  return true;
+}
+
+std::span<const RgbMoment> EnvironmentObjects::object_moments(std::size_t a) const {
+  const auto it = turned_moments_.find(turn_key(placements_.at(a).rotate_deg));
+  return it != turned_moments_.end() ? std::span<const RgbMoment>(it->second) : world_moments_;
+}
+
+void EnvironmentObjects::trace_static(std::size_t q, const PlacedObjects& placed,
+                                      double frame_deg) {
+  const Vec3 n = placed.normals[q];
+  const Vec3 origin = offset_from_surface(placed.ray_points[q], n);
+  const std::size_t first = std::size_t{1} << coarse_depth_;
+  std::uint64_t* bits = &static_bits_[q * static_words_];
+  std::fill_n(bits, static_words_, ~std::uint64_t{0});
+  const Placement turn{{0, 0, 0}, frame_deg};
+  for (std::size_t i = 0; i < first; ++i) {
+    const std::size_t k = first + i;
+    const Vec3 dir = placed_direction(tree_.axis[k], turn);
+    // Below the surface: the vertex's own cut is 0 there.
+    if (dot(dir, n) < -std::sin(spread_[k])) continue;
+    if (room_.occluders().occluded({origin, dir})) bits[i / 64] &= ~(std::uint64_t{1} << (i % 64));
+  }
+}
+
+void EnvironmentObjects::update(const Environment* env, std::span<const RgbMoment> moments,
+                                std::span<const float> room_direct, const PlacedObjects& placed,
+                                std::span<const MovablePlacement> placements, bool env_changed) {
+  const auto start = std::chrono::steady_clock::now();
+  if (valid_ && !env_changed && env == env_ &&
+      std::equal(placements.begin(), placements.end(), placements_.begin(), placements_.end())) {
+    return;
+  }
+  valid_ = true;
+  env_ = env;
+  world_moments_ = moments;
+  if (env_changed) turned_moments_.clear();
+  const std::size_t objects = meshes_.size();
+  // The static scene as each moved object's vertices see it.
+  for (std::size_t a = 0; a < objects; ++a) {
+    const bool moved = placements_.size() != objects || !(placements_[a] == placements[a]);
+    if (!moved || !placements[a].visible) continue;
+    const std::size_t first = placed.first_vertex[a], last = placed.first_vertex[a + 1];
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(first, last, 16), [&](const auto& r) {
+      for (std::size_t q = r.begin(); q < r.end(); ++q) {
+        trace_static(q, placed, placements[a].rotate_deg);
+      }
+    });
+  }
+  placements_.assign(placements.begin(), placements.end());
+  std::fill(room_delta_.begin(), room_delta_.end(), 0.0f);
+  std::fill(object_direct_.begin(), object_direct_.end(), 0.0f);
+  if (env == nullptr) {
+    seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return;
+  }
+  // Every frame's moments before the parallel loops read them.
+  std::vector<std::span<const RgbMoment>> object_moments;
+  for (std::size_t a = 0; a < objects; ++a) {
+    object_moments.push_back(frame_moments(placements[a].rotate_deg));
+  }
+  const auto leaves = static_cast<std::uint32_t>(tree_.leaf_count());
+  tbb::enumerable_thread_specific<Scratch> scratch;
+
+  // The room's receivers: what the objects take away.
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, room_.receivers(), 64), [&](const auto& r) {
+    Scratch& s = scratch.local();
+    std::array<const ValueCut*, kMaxFactors> factors{};
+    for (std::size_t i = r.begin(); i < r.end(); ++i) {
+      const Vec3 x = room_.ray_point(i), n = room_.normal(i);
+      std::size_t count = 0;
+      for (std::size_t o = 0; o < objects && count < kMaxFactors; ++o) {
+        if (field_factor(o, x, n, 0, placed, s, s.factors[count])) {
+          factors[count] = &s.factors[count];
+          ++count;
+        }
+      }
+      if (count == 0) continue;
+      multiply_cuts(cuts_.self_visibility, i, std::span(factors.data(), count), s.product);
+      const Rgb e = cut_irradiance(s.product, leaves, world_moments_, n);
+      room_delta_[3 * i] = static_cast<float>(e.r) - room_direct[3 * i];
+      room_delta_[3 * i + 1] = static_cast<float>(e.g) - room_direct[3 * i + 1];
+      room_delta_[3 * i + 2] = static_cast<float>(e.b) - room_direct[3 * i + 2];
+    }
+  });
+
+  // The objects' vertices: all of their direct light, in their own frames.
+  for (std::size_t a = 0; a < objects; ++a) {
+    if (!placements[a].visible) continue;
+    const std::size_t first = placed.first_vertex[a], last = placed.first_vertex[a + 1];
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(first, last, 16), [&](const auto& r) {
+      Scratch& s = scratch.local();
+      for (std::size_t q = r.begin(); q < r.end(); ++q) {
+        object_cut(q, a, placed, s);
+        const Rgb e =
+            cut_irradiance(s.product, leaves, object_moments[a], meshes_[a].normals[q - first]);
+        object_direct_[3 * q] = static_cast<float>(e.r);
+        object_direct_[3 * q + 1] = static_cast<float>(e.g);
+        object_direct_[3 * q + 2] = static_cast<float>(e.b);
+      }
+    });
+  }
+  seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace relight

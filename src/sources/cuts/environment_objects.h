@@ -1,0 +1,116 @@
+// Movable objects under the top-level environment (issue 15; Iwasaki et al., Cyberworlds, §V,
+// Eq. 3–4: the capture paper, papers/003): the visibility at a receiver x is its own cut times
+// the occlusion of every object near it,
+//     V(x, ω) = SVC(x, ω) · Π_o VCF_o(x, ω),
+// each VCF_o interpolated from the eight samples of object o's field around x
+// (sources/cuts/visibility_field.h) and the product taken by the merge with counters
+// (math/cut_merge.h); E = Σ_{nodes} V · n · M over the product's nodes with the environment's
+// moments (light/environment_clusters.h). Objects whose bounding sphere lies below x's
+// horizon or beyond their field's outer sphere are culled (§V.B).
+//
+// At the room's receivers this gives what the objects take from the empty room's direct light
+// (room_delta: E with the objects less E without). At an object vertex it gives all of its
+// direct light, in the object's own frame (its cut of itself is stored there): the other
+// objects' fields and the environment's moments turned into that frame, and the static scene —
+// which no stored cut holds for a vertex that moves — traced once per placement at 1,024
+// coarse directions (the tree's nodes of that depth, one ray along each), a floor below a
+// chair's seat blocking the ground half of a sky. Both go to the objects' bounce as direct
+// light (sources/object/object_lighting.h ObjectLightInputs::extra_room and extra_objects).
+//
+// Within a field's inner sphere (a floor beside or under the object), where the paper's field has
+// no samples, the object itself is traced from the receiver in its bounding cone, leaf by leaf.
+// An object turned about the vertical relative to the frame of the receiver's cut has its
+// interpolated field re-expressed in that frame leaf by leaf within its bounding cone (each
+// leaf at the nearest leaf of the turned direction): exact to a leaf, slower than the merge
+// alone. Pinned by tests/cli/environment_cuts_test.cpp (moved and turned objects against the
+// reference).
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <span>
+#include <vector>
+
+#include "engine/runtime_scene.h"
+#include "light/environment.h"
+#include "light/environment_clusters.h"
+#include "math/cut_merge.h"
+#include "math/direction_tree.h"
+#include "math/placement.h"
+#include "math/point_grid.h"
+#include "sources/cuts/cuts_sections.h"
+#include "sources/object/object_mesh.h"
+
+namespace relight {
+
+class EnvironmentObjects {
+ public:
+  // All must outlive this.
+  EnvironmentObjects(const CutsTransferView& cuts, const DirectionTree& tree,
+                     const PointGrid& leaves, const RuntimeScene& room,
+                     std::span<const ObjectMesh> meshes);
+
+  // Lights the objects as `placed` by `placements` under `env` (null: dark), whose world
+  // moments are `moments`, against the empty room's direct light `room_direct` (3 per room
+  // receiver). `env_changed`: the environment changed since the last call.
+  void update(const Environment* env, std::span<const RgbMoment> moments,
+              std::span<const float> room_direct, const PlacedObjects& placed,
+              std::span<const MovablePlacement> placements, bool env_changed);
+
+  // Object vertex q's visibility (PlacedObjects order) in its object's frame, as the last update
+  // placed it: its cut of itself times the static scene's coarse view and the other objects'
+  // fields; false when the object is hidden or there is no environment. For renderers.
+  bool object_visibility(std::size_t q, const PlacedObjects& placed, ValueCut& out) const;
+  // The environment's moments in object a's frame (its turn as last placed).
+  std::span<const RgbMoment> object_moments(std::size_t a) const;
+  std::span<const ObjectMesh> meshes() const { return meshes_; }
+  // Object a's turn as last placed, degrees.
+  double object_turn(std::size_t a) const { return placements_.at(a).rotate_deg; }
+
+  std::span<const float> room_delta() const { return room_delta_; }        // 3 per receiver
+  std::span<const float> object_direct() const { return object_direct_; }  // 3 per vertex
+  double seconds() const { return seconds_; }
+
+ private:
+  struct Scratch;
+  // Object o's occlusion at world point x (normal n) in a frame turned by `frame_deg`: its
+  // field interpolated, or within the field's inner sphere the object traced; false when o
+  // casts nothing there.
+  bool field_factor(std::size_t o, Vec3 x, Vec3 n, double frame_deg, const PlacedObjects& placed,
+                    Scratch& s, ValueCut& out) const;
+  // The cut that is 1 outside the cone (unit axis, half-angle) and leaf_value(leaf) in it.
+  template <typename LeafValue>
+  void cone_cut(Vec3 axis, double half, const LeafValue& leaf_value, ValueCut& out) const;
+  // For a turn of `relative_deg` from a receiver's frame to an object's: per leaf of the
+  // receiver's frame, the object frame's nearest leaf (made once per turn).
+  const std::vector<std::uint32_t>& leaf_turn(double relative_deg) const;
+  // The moments of the environment in a frame turned by `frame_deg`.
+  std::span<const RgbMoment> frame_moments(double frame_deg);
+  // s.product = object vertex q's (of object a) visibility, as object_visibility.
+  void object_cut(std::size_t q, std::size_t a, const PlacedObjects& placed, Scratch& s) const;
+  // Object vertex q's view of the static scene (1,024 coarse directions), traced again.
+  void trace_static(std::size_t q, const PlacedObjects& placed, double frame_deg);
+
+  CutsTransferView cuts_;
+  const DirectionTree& tree_;
+  const PointGrid& leaves_;
+  const RuntimeScene& room_;
+  std::span<const ObjectMesh> meshes_;
+  const Environment* env_ = nullptr;
+  std::span<const RgbMoment> world_moments_;
+  std::map<std::int64_t, std::vector<RgbMoment>> turned_moments_;  // by turn, µ°
+  mutable std::mutex turn_mutex_;
+  mutable std::map<std::int64_t, std::unique_ptr<std::vector<std::uint32_t>>> turns_;
+  std::vector<MovablePlacement> placements_;  // as the static views were traced
+  int coarse_depth_ = 10;                     // depth of the static views' nodes
+  std::vector<std::uint64_t> static_bits_;    // per object vertex: one bit per coarse node
+  std::size_t static_words_ = 0;
+  std::vector<double> spread_;  // per node: its cone's half-angle
+  bool valid_ = false;          // updated at least once
+  std::vector<float> room_delta_, object_direct_;
+  double seconds_ = 0;
+};
+
+}  // namespace relight
