@@ -279,6 +279,7 @@ nlohmann::json hello_message(const TransferFile& t, const std::string& scene_fil
           {"materials", materials},
           {"luminaires", luminaires},
           {"portals", portals},
+          {"environment", scene_json.value("environment", nlohmann::json())},
           {"exterior", exterior},
           {"emitters", emitters},
           {"objects", objects},

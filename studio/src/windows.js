@@ -6,7 +6,9 @@
 // (latitude, longitude, UTC offset, date and time → "YYYY-MM-DDTHH:MM") or by angles, and
 // its illuminance) or an HDR map (file, rotate_deg, scale). Below, the exterior objects'
 // placements (visible, translate, rotate_deg). Each change replaces the portal's
-// `environment` object as a whole in the state document.
+// `environment` object as a whole in the state document. A scene with a top-level environment
+// (hello.environment: furniture under a sky or a captured map, lit through the visibility cuts)
+// gets the same form first, editing the document's own `environment` (docs/lighting-state.md).
 import { hexToLinear, linearToHex } from './colors.js';
 import { el, numberInput, row, select, setIfIdle, sliderNumber } from './ui.js';
 
@@ -43,8 +45,12 @@ export class WindowsPanel {
   setScene(hello) {
     this.hello = hello;
     this.container.innerHTML = '';
-    this.blocks = (hello.portals || []).map((p, i) => this._block(p, i));
-    if (!this.blocks.length) this.container.append(el('p', { class: 'hint', text: 'This scene has no windows (portals).' }));
+    this.blocks = [];
+    if (hello.environment) {
+      this.blocks.push(this._block({ name: 'Environment', environment: hello.environment, top: true }, 'env'));
+    }
+    this.blocks.push(...(hello.portals || []).map((p, i) => this._block(p, i)));
+    if (!this.blocks.length) this.container.append(el('p', { class: 'hint', text: 'This scene has no windows (portals) and no environment.' }));
     if (hello.exterior?.length) this._exterior(hello.exterior);
     this.refresh();
   }
@@ -54,22 +60,36 @@ export class WindowsPanel {
   }
 
   effectiveEnv(p) {
+    if (p.top) return this.store.doc.environment ?? p.environment;
     return this.entry(p.name).environment ?? p.environment;
   }
 
   _setEnv(p, env) {
-    this.store.edit(() => {
+    this.store.edit((doc) => {
+      const same = JSON.stringify(env) === JSON.stringify(p.environment);
+      if (p.top) {
+        if (same) delete doc.environment;
+        else doc.environment = env;
+        return;
+      }
       const e = this.store.portal(p.name);
-      if (JSON.stringify(env) === JSON.stringify(p.environment)) delete e.environment;
+      if (same) delete e.environment;
       else e.environment = env;
     });
   }
 
   _block(p, i) {
     const b = { p, i };
-    const details = el('details', { class: 'portal', open: true, dataset: { portal: p.name } }, [
-      el('summary', { title: `Window "${p.name}": ${p.diameter?.toFixed?.(2) ?? '?'} m across, facing (${(p.outward || []).map((x) => x.toFixed(2)).join(', ')})` }, p.name),
+    const summary = p.top
+      ? 'The environment that lights the scene from infinity wherever its geometry does not block it (through the visibility cuts)'
+      : `Window "${p.name}": ${p.diameter?.toFixed?.(2) ?? '?'} m across, facing (${(p.outward || []).map((x) => x.toFixed(2)).join(', ')})`;
+    const details = el('details', { class: 'portal', open: true, dataset: p.top ? { environment: 'top' } : { portal: p.name } }, [
+      el('summary', { title: summary }, p.name),
     ]);
+    if (p.top) {
+      this._envRows(b, details, 'The sky or map around the scene');
+      return b;
+    }
     // Tint.
     b.tint = el('input', { type: 'color', dataset: { testid: `tint-${i}` }, title: 'Glass tint: transmittance per channel (white = clear glass)' });
     b.tint.addEventListener('input', () => this.store.edit(() => (this.store.portal(p.name).tint = hexToLinear(b.tint.value).map((x) => Number(x.toFixed(4))))));
@@ -88,7 +108,13 @@ export class WindowsPanel {
       onChange: (v) => this.store.edit(() => (this.store.portal(p.name).frost_deg = v)),
     });
     details.append(row('Frost', b.frost.element, 'Frosted glass blur width'));
-    // Environment.
+    this._envRows(b, details, 'Environment seen through the window');
+    return b;
+  }
+
+  // The environment's type, its reset and its form.
+  _envRows(b, details, title) {
+    const p = b.p;
     b.envType = select(
       [
         ['uniform', 'uniform sky'],
@@ -96,15 +122,16 @@ export class WindowsPanel {
         ['perez', 'Perez sky (weather)'],
         ['map', 'HDR map'],
       ],
-      { title: 'What the window sees', testid: `env-type-${i}`, onChange: (t) => this._switchType(b, t) },
+      { title: p.top ? 'What surrounds the scene' : 'What the window sees', testid: `env-type-${b.i}`, onChange: (t) => this._switchType(b, t) },
     );
-    const reset = el('button', { type: 'button', class: 'small', text: "Scene's", title: "Back to the scene's environment for this window" });
-    reset.addEventListener('click', () => this.store.edit((doc) => delete doc.portals?.[p.name]?.environment));
-    details.append(row('Outside', [b.envType, reset], 'Environment seen through the window'));
+    const reset = el('button', { type: 'button', class: 'small', text: "Scene's", title: "Back to the scene's environment" });
+    reset.addEventListener('click', () =>
+      this.store.edit((doc) => (p.top ? delete doc.environment : delete doc.portals?.[p.name]?.environment)),
+    );
+    details.append(row(p.top ? 'Around' : 'Outside', [b.envType, reset], title));
     b.envForm = el('div', { class: 'env-form' });
     details.append(b.envForm);
     this.container.append(details);
-    return b;
   }
 
   _switchType(b, type) {
@@ -350,10 +377,12 @@ export class WindowsPanel {
   refresh() {
     if (!this.hello) return;
     for (const b of this.blocks) {
-      const e = this.entry(b.p.name);
-      const tint = e.tint ?? b.p.tint ?? [1, 1, 1];
-      if (document.activeElement !== b.tint) b.tint.value = linearToHex(tint);
-      b.frost.set(e.frost_deg ?? b.p.frost_deg ?? 0);
+      if (!b.p.top) {
+        const e = this.entry(b.p.name);
+        const tint = e.tint ?? b.p.tint ?? [1, 1, 1];
+        if (document.activeElement !== b.tint) b.tint.value = linearToHex(tint);
+        b.frost.set(e.frost_deg ?? b.p.frost_deg ?? 0);
+      }
       const env = this.effectiveEnv(b.p);
       if (b.pendingMap && env.type !== 'map') {
         setIfIdle(b.envType, 'map');
