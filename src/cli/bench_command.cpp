@@ -1,4 +1,5 @@
-// `relight bench SCENE.rlt [--frames N] [--sky | --emitters | --objects [--object NAME] |
+// `relight bench SCENE.rlt [--frames N] [--sky | --environment | --emitters | --objects [--object
+// NAME] |
 // --materials [--material NAME] [--roughness] | --aim | --optimize TARGETS.json]`: times
 // the run-time weighted sum
 // and, in
@@ -22,8 +23,12 @@
 // for every luminaire, engine/glossy_first_bounce.h), or with --aim every luminaire turned
 // 1° about its C0 axis, back and forth (its exact direct light, its transfer rotated and, on
 // glossy surfaces, its first glossy bounce made again); only the kind of source that changed
-// is summed again (runtime/relighter.h). With --optimize TARGETS.json: `relight optimize` timed
-// against a relight of the whole scene (ratio_to_relight).
+// is summed again (runtime/relighter.h), or with --environment the top-level environment
+// (issue 15: as --sky does to a window's; clustered on the cuts' tree, every receiver's cut
+// summed, bounced, and with movable objects their shadows and light through the cuts; with
+// environment_ms, bounce_ms, objects_ms, and view_ms: the glossy vertices shaded toward an
+// eye that moves a centimetre a frame, the viewpoint change). With --optimize TARGETS.json:
+// `relight optimize` timed against a relight of the whole scene (ratio_to_relight).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -39,7 +44,9 @@
 #include "cli/commands.h"
 #include "common/input_error.h"
 #include "design/optimize.h"
+#include "engine/material_reflectance.h"
 #include "math/mat3.h"
+#include "render/relit_scene_image.h"
 #include "runtime/relit_scene.h"
 
 namespace relight {
@@ -50,6 +57,7 @@ struct BenchArgs {
   std::string rlt;
   int frames = 50;
   bool sky = false;
+  bool environment = false;
   bool emitters = false;
   bool objects = false;
   std::string object;  // with objects: move only this one
@@ -143,9 +151,10 @@ int run_bench_optimize(const BenchArgs& args) {
 
 int run_bench(const BenchArgs& args) {
   if (!args.optimize.empty()) {
-    if (args.sky || args.emitters || args.objects || args.materials || args.aim) {
+    if (args.sky || args.environment || args.emitters || args.objects || args.materials ||
+        args.aim) {
       fail_input(args.rlt,
-                 "--optimize times inverse design alone: no --sky, --emitters, "
+                 "--optimize times inverse design alone: no --sky, --environment, --emitters, "
                  "--objects, --materials or --aim with it");
     }
     return run_bench_optimize(args);
@@ -158,15 +167,21 @@ int run_bench(const BenchArgs& args) {
   if (args.sky && state.portals.empty()) {
     fail_input(args.rlt, "--sky needs a scene with portals (windows)");
   }
+  if (args.environment && !state.environment) {
+    fail_input(args.rlt, "--environment needs a scene with a top-level environment");
+  }
   if (args.emitters && state.emitters.empty()) {
     fail_input(args.rlt, "--emitters needs a scene with near-field emitters");
   }
   if (args.objects && state.objects.empty()) {
     fail_input(args.rlt, "--objects needs a scene with movable objects");
   }
-  if (int(args.sky) + int(args.emitters) + int(args.objects) + int(args.materials) + int(args.aim) >
+  if (int(args.sky) + int(args.environment) + int(args.emitters) + int(args.objects) +
+          int(args.materials) + int(args.aim) >
       1) {
-    fail_input(args.rlt, "--sky, --emitters, --objects, --materials and --aim: one at a time");
+    fail_input(args.rlt,
+               "--sky, --environment, --emitters, --objects, --materials and --aim: one at a "
+               "time");
   }
   if (args.materials && relit.transfer().view.scene.vertex_material.empty()) {
     fail_input(args.rlt,
@@ -200,6 +215,7 @@ int run_bench(const BenchArgs& args) {
   std::vector<double> shell_ms, sun_ms, sun_bounce_ms, sampling_ms, bounce_ms;
   std::vector<double> object_direct_ms, object_transfer_ms, object_bounce_ms, object_bounces;
   std::vector<double> approximate_ms, final_ms;
+  std::vector<double> environment_ms, environment_bounce_ms, environment_objects_ms;
   // A material edit's two frames: its light reflected once, then converged.
   const auto edit_material = [&](int i) {
     Material& m = state.materials.at(edited);
@@ -239,6 +255,8 @@ int run_bench(const BenchArgs& args) {
     }
     if (args.sky) {
       for (PortalState& p : state.portals) advance_sky(p.environment, i);
+    } else if (args.environment) {
+      advance_sky(*state.environment, i);
     } else if (args.emitters) {
       // A designer dragging the emitters: 1 cm a frame, back and forth.
       for (EmitterState& e : state.emitters) e.translate.x += (i % 2 == 0) ? 0.01 : -0.01;
@@ -276,6 +294,11 @@ int run_bench(const BenchArgs& args) {
       object_bounce_ms.push_back(t.bounce_seconds * 1e3);
       object_bounces.push_back(t.bounces);
     }
+    if (const EnvironmentLighting* e = relighter.environment()) {
+      environment_ms.push_back(e->seconds() * 1e3);
+      environment_bounce_ms.push_back(e->bounce_seconds() * 1e3);
+      environment_objects_ms.push_back(e->objects_seconds() * 1e3);
+    }
     if (const EmitterLighting* e = relighter.emitters()) {
       const NearfieldResult& s = e->last_sampling();
       sampling_ms.push_back((s.sampling_seconds + s.reconstruction_seconds) * 1e3);
@@ -308,11 +331,12 @@ int run_bench(const BenchArgs& args) {
   const double streaming = buffer.size() * sizeof(std::uint64_t) / (stream_ms * 1e-3) / 1e9;
   const char* mode =
       args.sky ? "sky"
-               : (args.emitters
-                      ? "emitters"
-                      : (args.objects
-                             ? "objects"
-                             : (args.materials ? "materials" : (args.aim ? "aim" : "luminaires"))));
+      : args.environment
+          ? "environment"
+          : (args.emitters ? "emitters"
+                           : (args.objects ? "objects"
+                                           : (args.materials ? "materials"
+                                                             : (args.aim ? "aim" : "luminaires"))));
   nlohmann::json line = {{"mode", mode},
                          {"receivers", relighter.receivers()},
                          {"luminaires", relit.scene().luminaires.size()},
@@ -340,6 +364,24 @@ int run_bench(const BenchArgs& args) {
     line["suns"] = relighter.suns().size();
     line["sun_ms"] = median(sun_ms);
     line["sun_bounce_ms"] = median(sun_bounce_ms);
+  }
+  if (args.environment) {
+    // Clustering and the cuts' sums, the bounce, and the objects' part (their shadows and
+    // light through the cuts, sources/cuts/environment_objects.h).
+    line["environment_ms"] = median(environment_ms);
+    line["bounce_ms"] = median(environment_bounce_ms);
+    line["objects_ms"] = median(environment_objects_ms);
+    line["cut_directions"] = relighter.environment()->tree().leaf_count();
+    // The viewpoint: glossy vertices shaded toward an eye moved a centimetre a frame, with the
+    // studio's BRDF samples of the room's reflection (serve/studio_server.cpp, RLGV).
+    constexpr int kViewSamples = 16;
+    const std::vector<Camera>& cameras = relit.scene().cameras;
+    if (!glossy_materials(state.materials).empty() && !cameras.empty()) {
+      const Vec3 eye = cameras.front().eye;
+      line["view_ms"] = median(time_ms(args.frames, [&](int i) {
+        (void)glossy_vertex_luminance(relit, eye + Vec3{0.01 * (i % 2), 0, 0}, kViewSamples);
+      }));
+    }
   }
   if (args.emitters) {
     line["emitters"] = state.emitters.size();
@@ -379,6 +421,8 @@ void add_bench_command(CLI::App& app, Action& action) {
   cmd->add_option("scene", args->rlt, "precomputed .rlt file")->required();
   cmd->add_option("--frames", args->frames, "frames to time")->check(CLI::Range(1, 100000));
   cmd->add_flag("--sky", args->sky, "change only the sky seen through the portals each frame");
+  cmd->add_flag("--environment", args->environment,
+                "change only the top-level environment each frame (lit through the cuts)");
   cmd->add_flag("--emitters", args->emitters,
                 "move only the near-field emitters each frame (sampling, bounce and sum)");
   cmd->add_flag("--objects", args->objects,

@@ -213,6 +213,31 @@ void precompute_and_write(const Scene& scene, const nlohmann::json& document,
         double(svc.bytes()) / 1e3, double(svc.bytes()) / receivers,
         double(index_encoded_bytes(svc)) / 1e3,
         100.0 * double(svc.bytes()) / double(index_encoded_bytes(svc)));
+    // Each object's visibility cut field and its vertices' cuts of itself.
+    const HeightCutsView fields = p.cuts.field_cuts.view();
+    const HeightCutsView own = p.cuts.object_self_visibility.view();
+    std::uint64_t height = svc.bytes(), index = index_encoded_bytes(svc), vertex = 0;
+    for (std::size_t o = 0; o < p.cuts.fields.size(); ++o) {
+      const std::uint64_t first = p.cuts.field_first[o], last = p.cuts.field_first[o + 1];
+      const std::uint64_t nodes = fields.first[last] - fields.first[first];
+      const std::uint64_t bytes = (nodes + 1) / 2 + (nodes + 7) / 8 + 8 * (last - first);
+      const std::uint64_t indexed = (nodes * 17 + 7) / 8 + 8 * (last - first);
+      const std::uint64_t v0 = vertex, v1 = vertex + p.objects[o].positions.size();
+      const std::uint64_t own_nodes = own.first[v1] - own.first[v0];
+      const std::uint64_t own_bytes = (own_nodes + 1) / 2 + (own_nodes + 7) / 8 + 8 * (v1 - v0);
+      const std::uint64_t own_indexed = (own_nodes * 17 + 7) / 8 + 8 * (v1 - v0);
+      vertex = v1;
+      height += bytes + own_bytes;
+      index += indexed + own_indexed;
+      std::printf(
+          "  cuts of \"%s\": field %llu samples, %.3g nodes, %.1f kB (index encoded %.1f kB); "
+          "its %llu vertices' own cuts %.1f kB (%.1f bytes a vertex)\n",
+          p.objects[o].name.c_str(), static_cast<unsigned long long>(last - first), double(nodes),
+          double(bytes) / 1e3, double(indexed) / 1e3, static_cast<unsigned long long>(v1 - v0),
+          double(own_bytes) / 1e3, double(own_bytes) / double(std::max<std::uint64_t>(1, v1 - v0)));
+    }
+    std::printf("  all cuts: %.1f MB height encoded, %.1f MB index encoded (%.1f %%)\n",
+                double(height) / 1e6, double(index) / 1e6, 100.0 * double(height) / double(index));
   }
   for (std::size_t i = 0; i < p.objects.size(); ++i) {
     const ObjectMesh& o = p.objects[i];

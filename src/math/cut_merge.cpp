@@ -9,19 +9,25 @@ namespace {
 
 constexpr std::size_t kMaxOperands = 16;
 
-// A pointer into one operand and its counter (Steps 1 and 3).
+// A pointer into one operand and its counter (Steps 1 and 3), with the pointed node's height
+// and value read once when the pointer moves.
 struct Cursor {
   const HeightCutsView* stored = nullptr;  // a stored binary cut, or
   const ValueCut* values = nullptr;        // a cut with values
   std::uint64_t k = 0, end = 0;            // the pointed node and the end
   std::uint64_t counter = 0;               // leaves of the pointed node already passed
+  int h = 0;                               // the pointed node's height
+  float v = 0;                             // and value
 
-  int height() const {
-    return stored != nullptr ? stored->height(k) : values->height[static_cast<std::size_t>(k)];
-  }
-  float value() const {
-    return stored != nullptr ? (stored->is_visible(k) ? 1.0f : 0.0f)
-                             : values->value[static_cast<std::size_t>(k)];
+  void load() {
+    if (k >= end) return;
+    if (stored != nullptr) {
+      h = stored->height(k);
+      v = stored->is_visible(k) ? 1.0f : 0.0f;
+    } else {
+      h = values->height[static_cast<std::size_t>(k)];
+      v = values->value[static_cast<std::size_t>(k)];
+    }
   }
 };
 
@@ -54,25 +60,28 @@ namespace {
 template <typename Op>
 void merge(std::span<Cursor> cursors, const Op& op, ValueCut& out) {
   out.clear();
+  for (Cursor& c : cursors) c.load();
   std::uint64_t leaf = 0;
   float values[kMaxOperands];
+  const std::size_t count = cursors.size();
   while (cursors.front().k < cursors.front().end) {
-    int h_min = 64;
-    for (const Cursor& c : cursors) h_min = std::min(h_min, c.height());
+    int h_min = cursors[0].h;
+    for (std::size_t j = 1; j < count; ++j) h_min = std::min(h_min, cursors[j].h);
     // The pointed nodes' parts at h_min are what the output node covers.
-    for (std::size_t j = 0; j < cursors.size(); ++j) values[j] = cursors[j].value();
-    push_cut_node(out, leaf, h_min, op(std::span<const float>(values, cursors.size())));
+    for (std::size_t j = 0; j < count; ++j) values[j] = cursors[j].v;
+    push_cut_node(out, leaf, h_min, op(std::span<const float>(values, count)));
     leaf += std::uint64_t{1} << h_min;
     for (Cursor& c : cursors) {
-      const int h = c.height();
-      if (h == h_min) {
+      if (c.h == h_min) {
         ++c.k;
         c.counter = 0;
+        c.load();
       } else {
         c.counter += std::uint64_t{1} << h_min;
-        if (c.counter == (std::uint64_t{1} << h)) {
+        if (c.counter == (std::uint64_t{1} << c.h)) {
           ++c.k;
           c.counter = 0;
+          c.load();
         }
       }
     }
@@ -87,15 +96,26 @@ void interpolate_cuts(std::span<const WeightedCut> operands, ValueCut& out) {
   }
   Cursor cursors[kMaxOperands];
   float weights[kMaxOperands];
-  for (std::size_t j = 0; j < operands.size(); ++j) {
-    const WeightedCut& o = operands[j];
-    cursors[j].stored = o.cuts;
-    cursors[j].k = o.cuts->first[o.cut];
-    cursors[j].end = o.cuts->first[o.cut + 1];
-    weights[j] = o.weight;
+  std::size_t count = 0;
+  for (const WeightedCut& o : operands) {
+    // An operand of weight 0 adds nothing but its nodes' boundaries.
+    if (o.weight == 0) continue;
+    cursors[count].stored = o.cuts;
+    cursors[count].k = o.cuts->first[o.cut];
+    cursors[count].end = o.cuts->first[o.cut + 1];
+    weights[count] = o.weight;
+    ++count;
+  }
+  if (count == 0) {
+    const WeightedCut& o = operands.front();
+    cursors[0].stored = o.cuts;
+    cursors[0].k = o.cuts->first[o.cut];
+    cursors[0].end = o.cuts->first[o.cut + 1];
+    weights[0] = 0;
+    count = 1;
   }
   merge(
-      std::span<Cursor>(cursors, operands.size()),
+      std::span<Cursor>(cursors, count),
       [&](std::span<const float> v) {
         float sum = 0;
         for (std::size_t j = 0; j < v.size(); ++j) sum += weights[j] * v[j];

@@ -31,10 +31,18 @@ struct MovablePlacement : Placement {
   bool operator==(const MovablePlacement&) const = default;
 };
 
+// A placement's turn about the vertical, its sine and cosine taken once, for loops that turn
+// many directions by the same angle.
+struct VerticalTurn {
+  double c = 1, s = 0;
+  explicit VerticalTurn(double rotate_deg)
+      : c(std::cos(radians(rotate_deg))), s(std::sin(radians(rotate_deg))) {}
+  Vec3 operator()(Vec3 v) const { return {c * v.x + s * v.z, v.y, -s * v.x + c * v.z}; }
+};
+
 // The same turn applied to a direction (a normal, an aim).
 inline Vec3 placed_direction(Vec3 v, const Placement& placement) {
-  const double a = radians(placement.rotate_deg), c = std::cos(a), s = std::sin(a);
-  return {c * v.x + s * v.z, v.y, -s * v.x + c * v.z};
+  return VerticalTurn(placement.rotate_deg)(v);
 }
 
 }  // namespace relight

@@ -82,14 +82,14 @@ class EnvironmentLighting : public SourceTerm {
   // directions. 0 without objects or when its object is hidden.
   template <typename Weight>
   Rgb reflected_object(std::size_t q, const PlacedObjects& placed, const Weight& weight) const {
-    ValueCut cut;
-    if (!objects_ || !objects_->object_visibility(q, placed, cut)) return {};
+    const ValueCut* cut = objects_ ? objects_->object_visibility(q, placed) : nullptr;
+    if (cut == nullptr) return {};
     const std::size_t a = placed.object_of_vertex(q);
     const std::span<const RgbMoment> m = objects_->object_moments(a);
     const Vec3 n = objects_->meshes()[a].normals[q - placed.first_vertex[a]];
     const Placement turn{{0, 0, 0}, objects_->object_turn(a)};
     Rgb out{};
-    for_each_node(cut, static_cast<std::uint32_t>(tree_.leaf_count()),
+    for_each_node(*cut, static_cast<std::uint32_t>(tree_.leaf_count()),
                   [&](std::uint32_t node, float v) {
                     if (v <= 0) return;
                     split_glossy(node, [&](std::uint32_t j) {

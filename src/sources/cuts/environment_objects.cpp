@@ -60,8 +60,10 @@ EnvironmentObjects::EnvironmentObjects(const CutsTransferView& cuts, const Direc
   room_delta_.assign(3 * room.receivers(), 0.0f);
   object_direct_.assign(3 * vertices, 0.0f);
   spread_.resize(tree.cos_half_angle.size());
+  sin_spread_.resize(spread_.size());
   for (std::size_t k = 0; k < spread_.size(); ++k) {
     spread_[k] = std::acos(std::clamp(tree.cos_half_angle[k], -1.0, 1.0));
+    sin_spread_[k] = std::sin(spread_[k]);
   }
 }
 
@@ -70,9 +72,9 @@ const std::vector<std::uint32_t>& EnvironmentObjects::leaf_turn(double relative_
   std::unique_ptr<std::vector<std::uint32_t>>& slot = turns_[turn_key(relative_deg)];
   if (!slot) {
     auto table = std::make_unique<std::vector<std::uint32_t>>(tree_.leaf_count());
-    const Placement turn{{0, 0, 0}, relative_deg};
+    const VerticalTurn turn(relative_deg);
     for (std::size_t i = 0; i < table->size(); ++i) {
-      (*table)[i] = leaves_.nearest(placed_direction(tree_.leaves[i], turn));
+      (*table)[i] = leaves_.nearest(turn(tree_.leaves[i]));
     }
     slot = std::move(table);
   }
@@ -91,6 +93,7 @@ template <typename LeafValue>
 void EnvironmentObjects::cone_cut(Vec3 axis, double half, const LeafValue& leaf_value,
                                   ValueCut& out) const {
   const std::size_t n_leaves = tree_.leaf_count();
+  const double cos_half = std::cos(half), sin_half = std::sin(half);
   out.clear();
   // Top down, left first, so that nodes come out in leaf order; push_cut_node merges siblings
   // of equal value back.
@@ -101,8 +104,10 @@ void EnvironmentObjects::cone_cut(Vec3 axis, double half, const LeafValue& leaf_
     const std::uint32_t k = stack[--top];
     const int h = tree_.height(k);
     const std::uint64_t first = (std::uint64_t{k} << h) - n_leaves;
-    const double between = std::acos(std::clamp(dot(tree_.axis[k], axis), -1.0, 1.0));
-    if (between > spread_[k] + half + 1e-9) {
+    // Disjoint when the angle between the axes exceeds the two half-angles together.
+    const double reach = spread_[k] + half;
+    if (reach < kPi &&
+        dot(tree_.axis[k], axis) < tree_.cos_half_angle[k] * cos_half - sin_spread_[k] * sin_half) {
       push_cut_node(out, first, h, 1.0f);
     } else if (k >= n_leaves) {
       push_cut_node(out, first, 0, leaf_value(static_cast<std::size_t>(k - n_leaves)));
@@ -130,13 +135,12 @@ bool EnvironmentObjects::field_factor(std::size_t o, Vec3 x, Vec3 n, double fram
     // Within the inner sphere the field has no samples: the object traced, leaf by leaf in its
     // cone (a floor beside a box, under a table).
     const Vec3 origin = offset_from_surface(x, n);
-    const Placement turn{{0, 0, 0}, frame_deg};
+    const VerticalTurn turn(frame_deg);
     const RayTracer& object = placed.own[o];
     cone_cut(
         axis, half,
         [&](std::size_t leaf) {
-          return object.occluded({origin, placed_direction(tree_.leaves[leaf], turn)}) ? 0.0f
-                                                                                       : 1.0f;
+          return object.occluded({origin, turn(tree_.leaves[leaf])}) ? 0.0f : 1.0f;
         },
         out);
     return true;
@@ -191,14 +195,14 @@ void EnvironmentObjects::object_cut(std::size_t q, std::size_t a, const PlacedOb
   multiply_cuts(cuts_.object_self_visibility, q, std::span(factors.data(), count), s.product);
 }
 
-bool EnvironmentObjects::object_visibility(std::size_t q, const PlacedObjects& placed,
-                                           ValueCut& out) const {
+const ValueCut* EnvironmentObjects::object_visibility(std::size_t q,
+                                                      const PlacedObjects& placed) const {
   const std::size_t a = placed.object_of_vertex(q);
-  if (env_ == nullptr || a >= placements_.size() || !placements_[a].visible) return false;
-  Scratch s;
-  object_cut(q, a, placed, s);
-  out = std::move(s.product);
-  return true;
+  if (env_ == nullptr || a >= placements_.size() || !placements_[a].visible ||
+      q >= object_products_.size()) {
+    return nullptr;
+  }
+  return &object_products_[q];
 }
 
 std::span<const RgbMoment> EnvironmentObjects::object_moments(std::size_t a) const {
@@ -213,12 +217,12 @@ void EnvironmentObjects::trace_static(std::size_t q, const PlacedObjects& placed
   const std::size_t first = std::size_t{1} << coarse_depth_;
   std::uint64_t* bits = &static_bits_[q * static_words_];
   std::fill_n(bits, static_words_, ~std::uint64_t{0});
-  const Placement turn{{0, 0, 0}, frame_deg};
+  const VerticalTurn turn(frame_deg);
   for (std::size_t i = 0; i < first; ++i) {
     const std::size_t k = first + i;
-    const Vec3 dir = placed_direction(tree_.axis[k], turn);
+    const Vec3 dir = turn(tree_.axis[k]);
     // Below the surface: the vertex's own cut is 0 there.
-    if (dot(dir, n) < -std::sin(spread_[k])) continue;
+    if (dot(dir, n) < -sin_spread_[k]) continue;
     if (room_.occluders().occluded({origin, dir})) bits[i / 64] &= ~(std::uint64_t{1} << (i % 64));
   }
 }
@@ -227,27 +231,53 @@ void EnvironmentObjects::update(const Environment* env, std::span<const RgbMomen
                                 std::span<const float> room_direct, const PlacedObjects& placed,
                                 std::span<const MovablePlacement> placements, bool env_changed) {
   const auto start = std::chrono::steady_clock::now();
-  if (valid_ && !env_changed && env == env_ &&
-      std::equal(placements.begin(), placements.end(), placements_.begin(), placements_.end())) {
-    return;
-  }
-  valid_ = true;
+  const bool moved_any = !valid_ || !std::equal(placements.begin(), placements.end(),
+                                                placements_.begin(), placements_.end());
+  if (!moved_any && !env_changed && env == env_) return;
   env_ = env;
   world_moments_ = moments;
   if (env_changed) turned_moments_.clear();
   const std::size_t objects = meshes_.size();
-  // The static scene as each moved object's vertices see it.
-  for (std::size_t a = 0; a < objects; ++a) {
-    const bool moved = placements_.size() != objects || !(placements_[a] == placements[a]);
-    if (!moved || !placements[a].visible) continue;
-    const std::size_t first = placed.first_vertex[a], last = placed.first_vertex[a + 1];
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(first, last, 16), [&](const auto& r) {
-      for (std::size_t q = r.begin(); q < r.end(); ++q) {
-        trace_static(q, placed, placements[a].rotate_deg);
+  tbb::enumerable_thread_specific<Scratch> scratch;
+  if (moved_any) {
+    // The static scene as each moved object's vertices see it.
+    for (std::size_t a = 0; a < objects; ++a) {
+      const bool moved = !valid_ || !(placements_[a] == placements[a]);
+      if (!moved || !placements[a].visible) continue;
+      const std::size_t first = placed.first_vertex[a], last = placed.first_vertex[a + 1];
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(first, last, 16), [&](const auto& r) {
+        for (std::size_t q = r.begin(); q < r.end(); ++q) {
+          trace_static(q, placed, placements[a].rotate_deg);
+        }
+      });
+    }
+    placements_.assign(placements.begin(), placements.end());
+    // Every receiver's visibility with the objects as placed: the room's where an object
+    // reaches it (none: its own cut alone), every visible object's vertices.
+    room_products_.resize(room_.receivers());
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, room_.receivers(), 64),
+                      [&](const auto& r) {
+                        Scratch& s = scratch.local();
+                        for (std::size_t i = r.begin(); i < r.end(); ++i)
+                          room_product(i, placed, s);
+                      });
+    object_products_.resize(placed.vertex_count());
+    for (std::size_t a = 0; a < objects; ++a) {
+      const std::size_t first = placed.first_vertex[a], last = placed.first_vertex[a + 1];
+      if (!placements[a].visible) {
+        for (std::size_t q = first; q < last; ++q) object_products_[q].clear();
+        continue;
       }
-    });
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(first, last, 16), [&](const auto& r) {
+        Scratch& s = scratch.local();
+        for (std::size_t q = r.begin(); q < r.end(); ++q) {
+          object_cut(q, a, placed, s);
+          std::swap(object_products_[q], s.product);
+        }
+      });
+    }
   }
-  placements_.assign(placements.begin(), placements.end());
+  valid_ = true;
   std::fill(room_delta_.begin(), room_delta_.end(), 0.0f);
   std::fill(object_direct_.begin(), object_direct_.end(), 0.0f);
   if (env == nullptr) {
@@ -260,40 +290,24 @@ void EnvironmentObjects::update(const Environment* env, std::span<const RgbMomen
     object_moments.push_back(frame_moments(placements[a].rotate_deg));
   }
   const auto leaves = static_cast<std::uint32_t>(tree_.leaf_count());
-  tbb::enumerable_thread_specific<Scratch> scratch;
-
   // The room's receivers: what the objects take away.
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, room_.receivers(), 64), [&](const auto& r) {
-    Scratch& s = scratch.local();
-    std::array<const ValueCut*, kMaxFactors> factors{};
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, room_.receivers(), 256), [&](const auto& r) {
     for (std::size_t i = r.begin(); i < r.end(); ++i) {
-      const Vec3 x = room_.ray_point(i), n = room_.normal(i);
-      std::size_t count = 0;
-      for (std::size_t o = 0; o < objects && count < kMaxFactors; ++o) {
-        if (field_factor(o, x, n, 0, placed, s, s.factors[count])) {
-          factors[count] = &s.factors[count];
-          ++count;
-        }
-      }
-      if (count == 0) continue;
-      multiply_cuts(cuts_.self_visibility, i, std::span(factors.data(), count), s.product);
-      const Rgb e = cut_irradiance(s.product, leaves, world_moments_, n);
+      if (room_products_[i].size() == 0) continue;
+      const Rgb e = cut_irradiance(room_products_[i], leaves, world_moments_, room_.normal(i));
       room_delta_[3 * i] = static_cast<float>(e.r) - room_direct[3 * i];
       room_delta_[3 * i + 1] = static_cast<float>(e.g) - room_direct[3 * i + 1];
       room_delta_[3 * i + 2] = static_cast<float>(e.b) - room_direct[3 * i + 2];
     }
   });
-
   // The objects' vertices: all of their direct light, in their own frames.
   for (std::size_t a = 0; a < objects; ++a) {
     if (!placements[a].visible) continue;
     const std::size_t first = placed.first_vertex[a], last = placed.first_vertex[a + 1];
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(first, last, 16), [&](const auto& r) {
-      Scratch& s = scratch.local();
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(first, last, 64), [&](const auto& r) {
       for (std::size_t q = r.begin(); q < r.end(); ++q) {
-        object_cut(q, a, placed, s);
-        const Rgb e =
-            cut_irradiance(s.product, leaves, object_moments[a], meshes_[a].normals[q - first]);
+        const Rgb e = cut_irradiance(object_products_[q], leaves, object_moments[a],
+                                     meshes_[a].normals[q - first]);
         object_direct_[3 * q] = static_cast<float>(e.r);
         object_direct_[3 * q + 1] = static_cast<float>(e.g);
         object_direct_[3 * q + 2] = static_cast<float>(e.b);
@@ -301,6 +315,23 @@ void EnvironmentObjects::update(const Environment* env, std::span<const RgbMomen
     });
   }
   seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void EnvironmentObjects::room_product(std::size_t i, const PlacedObjects& placed, Scratch& s) {
+  const Vec3 x = room_.ray_point(i), n = room_.normal(i);
+  std::array<const ValueCut*, kMaxFactors> factors{};
+  std::size_t count = 0;
+  for (std::size_t o = 0; o < meshes_.size() && count < kMaxFactors; ++o) {
+    if (field_factor(o, x, n, 0, placed, s, s.factors[count])) {
+      factors[count] = &s.factors[count];
+      ++count;
+    }
+  }
+  if (count == 0) {
+    room_products_[i].clear();
+    return;
+  }
+  multiply_cuts(cuts_.self_visibility, i, std::span(factors.data(), count), room_products_[i]);
 }
 
 }  // namespace relight

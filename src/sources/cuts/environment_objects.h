@@ -61,8 +61,8 @@ class EnvironmentObjects {
 
   // Object vertex q's visibility (PlacedObjects order) in its object's frame, as the last update
   // placed it: its cut of itself times the static scene's coarse view and the other objects'
-  // fields; false when the object is hidden or there is no environment. For renderers.
-  bool object_visibility(std::size_t q, const PlacedObjects& placed, ValueCut& out) const;
+  // fields; null when the object is hidden or there is no environment. For renderers.
+  const ValueCut* object_visibility(std::size_t q, const PlacedObjects& placed) const;
   // The environment's moments in object a's frame (its turn as last placed).
   std::span<const RgbMoment> object_moments(std::size_t a) const;
   std::span<const ObjectMesh> meshes() const { return meshes_; }
@@ -88,6 +88,9 @@ class EnvironmentObjects {
   const std::vector<std::uint32_t>& leaf_turn(double relative_deg) const;
   // The moments of the environment in a frame turned by `frame_deg`.
   std::span<const RgbMoment> frame_moments(double frame_deg);
+  // room_products_[i] = room receiver i's cut times the fields of the objects that reach it
+  // (cleared when none does).
+  void room_product(std::size_t i, const PlacedObjects& placed, Scratch& s);
   // s.product = object vertex q's (of object a) visibility, as object_visibility.
   void object_cut(std::size_t q, std::size_t a, const PlacedObjects& placed, Scratch& s) const;
   // Object vertex q's view of the static scene (1,024 coarse directions), traced again.
@@ -107,8 +110,11 @@ class EnvironmentObjects {
   int coarse_depth_ = 10;                     // depth of the static views' nodes
   std::vector<std::uint64_t> static_bits_;    // per object vertex: one bit per coarse node
   std::size_t static_words_ = 0;
-  std::vector<double> spread_;  // per node: its cone's half-angle
-  bool valid_ = false;          // updated at least once
+  std::vector<double> spread_, sin_spread_;  // per node: its cone's half-angle, its sine
+  bool valid_ = false;                       // updated at least once
+  // The visibilities as last placed (products made again only when a placement changes; a new
+  // environment only sums them again).
+  std::vector<ValueCut> room_products_, object_products_;
   std::vector<float> room_delta_, object_direct_;
   double seconds_ = 0;
 };
