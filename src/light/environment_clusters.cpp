@@ -79,7 +79,7 @@ std::vector<RgbMoment> environment_moments(const Environment& env, const Directi
       break;
     }
     case EnvironmentKind::kSky: {
-      const int height = static_cast<int>(std::ceil(kPi / (0.25 * spacing)));
+      const int height = static_cast<int>(std::ceil(kPi / (0.5 * spacing)));
       deposit_grid(
           2 * height, height, 1,
           [&](int, int, double u, double v) {

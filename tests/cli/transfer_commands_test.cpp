@@ -488,8 +488,8 @@ TEST_F(TransferCommands, BenchAimTimesALuminaireTurn) {
   EXPECT_GT(j.at("median_ms").get<double>(), 0);
   expect_input_error(run_relight("bench " + quoted(rlt_) + " --aim --materials --frames 1"),
                      rlt_.string() +
-                         ": --sky, --emitters, --objects, --materials and --aim: one "
-                         "at a time");
+                         ": --sky, --environment, --emitters, --objects, --materials and --aim: "
+                         "one at a time");
 }
 
 // --materials --roughness --material NAME drags that material's roughness (made glossy by the
