@@ -32,6 +32,7 @@ EnvironmentLighting::EnvironmentLighting(const CutsTransferView& cuts, const Run
     }
     objects_.emplace(cuts_, tree_, leaves_, runtime_, objects);
   }
+  update();  // dark until an environment is set: every moment 0
 }
 
 bool EnvironmentLighting::set_environment(const std::optional<EnvironmentSpec>& spec) {
