@@ -164,7 +164,7 @@ TEST(EnvironmentCuts, AMovableCratesDirectLightMatchesTheReferenceBeforeAndAfter
     const fs::path state = s.dir.path() / "moved.json";
     std::ofstream(state)
         << R"({"objects": {"crate": {"translate": [0.5, 0, 0.3], "rotate_deg": 25}}})";
-    for (const std::string st : {std::string(), state.string()}) {
+    for (const std::string& st : {std::string(), state.string()}) {
       const testing::BlockAgreement a = direct_image_agreement(s, st);
       std::printf("%s crate %s, direct light, %d blocks: mean %.2f %%, worst %.2f %%\n",
                   material.c_str(), st.empty() ? "as placed" : "moved and turned", a.blocks,
