@@ -12,6 +12,35 @@
 
 namespace relight {
 
+namespace {
+
+// Appends to `store` the self-visibility cut of every point (rays from `ray_points`, pushed
+// off the surface along `normals`) against `occluders`; returns the rays traced.
+std::uint64_t append_self_visibility(HeightCuts& store, const Occluders& occluders,
+                                     const DirectionTree& tree, std::span<const Vec3> ray_points,
+                                     std::span<const Vec3> normals, double threshold,
+                                     Progress* bar) {
+  std::vector<DirectionCut> cuts(ray_points.size());
+  std::atomic<std::uint64_t> rays{0};
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, cuts.size(), 16), [&](const auto& range) {
+    std::uint64_t here = 0;
+    for (std::size_t r = range.begin(); r < range.end(); ++r) {
+      const Vec3 n = normals[r];
+      cuts[r] = self_visibility_cut(occluders, tree, offset_from_surface(ray_points[r], n), n,
+                                    threshold, here);
+    }
+    rays += here;
+    if (bar != nullptr) bar->advance(range.size());
+  });
+  for (DirectionCut& cut : cuts) {
+    append_cut(store, cut);
+    cut = {};
+  }
+  return rays;
+}
+
+}  // namespace
+
 CutsTransfer precompute_cuts(const CutsSettings& settings, const Receivers& receivers,
                              std::span<const Vec3> ray_points, const TracedScene& traced,
                              std::span<const ObjectMesh> objects, bool progress) {
@@ -23,27 +52,10 @@ CutsTransfer precompute_cuts(const CutsSettings& settings, const Receivers& rece
   out.threshold = settings.threshold;
   out.self_visibility = make_height_cuts(tree);
 
-  const Occluders occluders(traced.opaque, &traced.portals);
-  const std::size_t count = receivers.size();
-  std::vector<DirectionCut> cuts(count);
-  std::atomic<std::uint64_t> rays{0};
-  Progress bar("self-visibility cuts", count, progress);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 16), [&](const auto& range) {
-    std::uint64_t traced_here = 0;
-    for (std::size_t r = range.begin(); r < range.end(); ++r) {
-      const Vec3 n = receivers.normals[r];
-      cuts[r] = self_visibility_cut(occluders, tree, offset_from_surface(ray_points[r], n), n,
-                                    settings.threshold, traced_here);
-    }
-    rays += traced_here;
-    bar.advance(range.size());
-  });
+  Progress bar("self-visibility cuts", receivers.size(), progress);
+  out.rays = append_self_visibility(out.self_visibility, Occluders(traced.opaque, &traced.portals),
+                                    tree, ray_points, receivers.normals, settings.threshold, &bar);
   bar.finish();
-  for (DirectionCut& cut : cuts) {
-    append_cut(out.self_visibility, cut);
-    cut = {};
-  }
-  out.rays = rays;
   // The objects: each one's field, and its vertices' cuts of itself.
   out.object_self_visibility = make_height_cuts(tree);
   out.field_cuts = make_height_cuts(tree);
@@ -56,19 +68,8 @@ CutsTransfer precompute_cuts(const CutsSettings& settings, const Receivers& rece
     out.rays += field.rays;
     const RayTracer own(object.positions, object.triangles,
                         sequential_ids(object.triangles.size()));
-    std::vector<DirectionCut> self(object.positions.size());
-    std::atomic<std::uint64_t> object_rays{0};
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, self.size(), 16), [&](const auto& range) {
-      std::uint64_t here = 0;
-      for (std::size_t v = range.begin(); v < range.end(); ++v) {
-        const Vec3 n = object.normals[v];
-        self[v] = self_visibility_cut(own, tree, offset_from_surface(object.ray_points[v], n), n,
-                                      settings.threshold, here);
-      }
-      object_rays += here;
-    });
-    for (const DirectionCut& cut : self) append_cut(out.object_self_visibility, cut);
-    out.rays += object_rays;
+    out.rays += append_self_visibility(out.object_self_visibility, own, tree, object.ray_points,
+                                       object.normals, settings.threshold, nullptr);
   }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
