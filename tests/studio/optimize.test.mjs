@@ -165,14 +165,24 @@ test('a second optimize while one runs is refused', async () => {
   const c = await connect(server.ws);
   await c.nextJson('hello');
   const targets = { sensors: { [set]: { em_min: 50 } } };
-  // The first run opens the server's own copy of the scene: the second arrives meanwhile.
-  c.send({ type: 'optimize', seq: 1, targets });
-  c.send({ type: 'optimize', seq: 2, targets });
-  const error = await c.next((m) => !m.binary && m.json.type === 'error' && m.json.seq === 2);
-  assert.match(error.json.message, /already running/);
-  const result = await c.next((m) => !m.binary && m.json.type === 'optimized', 60000);
-  assert.equal(result.json.seq, 1);
-  assert.equal(result.json.result.feasible, true);
+  // The first run opens the server's own copy of the scene while the rest of the burst arrives.
+  // A burst, not a pair: on a loaded machine one later message may be read after the first run
+  // ended (then it runs too), but not every one of them.
+  const kBurst = 12;
+  for (let seq = 1; seq <= kBurst; ++seq) c.send({ type: 'optimize', seq, targets });
+  const replies = new Map();
+  while (replies.size < kBurst) {
+    const m = await c.next((m) => !m.binary && (m.json.type === 'error' || m.json.type === 'optimized'), 60000);
+    assert.ok(!replies.has(m.json.seq), `two replies to optimize ${m.json.seq}`);
+    replies.set(m.json.seq, m.json);
+  }
+  const first = replies.get(1);
+  assert.equal(first.type, 'optimized', JSON.stringify(first));
+  assert.equal(first.result.feasible, true);
+  const refused = [...replies.values()].filter((r) => r.type === 'error');
+  assert.ok(refused.length > 0, 'no optimize of the burst was refused');
+  for (const r of refused) assert.match(r.message, /already running/);
+  for (const r of replies.values()) if (r.type === 'optimized') assert.equal(r.result.feasible, true);
   c.close();
 });
 
