@@ -50,7 +50,9 @@ PointGrid leaf_grid(const DirectionTree& tree) {
 }
 
 std::vector<RgbMoment> environment_moments(const Environment& env, const DirectionTree& tree,
-                                           const PointGrid& leaves, double frame_rotate_deg) {
+                                           const PointGrid& leaves, double frame_rotate_deg,
+                                           const CompactSources* traced) {
+  const bool mask = traced != nullptr && !traced->map_texels.empty();
   // World → the object's frame: the turn undone.
   const Placement back{{0, 0, 0}, -frame_rotate_deg};
   const auto to_frame = [&](Vec3 d) { return placed_direction(d, back); };
@@ -73,7 +75,8 @@ std::vector<RgbMoment> environment_moments(const Environment& env, const Directi
       deposit_grid(
           map.width, map.height, k,
           [&](int i, int j, double, double) {
-            return map.texels[static_cast<std::size_t>(j) * map.width + i] * env.scale;
+            const std::size_t t = static_cast<std::size_t>(j) * map.width + i;
+            return mask && traced->map_texels[t] ? Rgb{} : map.texels[t] * env.scale;
           },
           [&](Vec3 d) { return to_frame(rotation.to_world(d)); }, leaves, node, n);
       break;
@@ -86,7 +89,7 @@ std::vector<RgbMoment> environment_moments(const Environment& env, const Directi
             return env.diffuse_radiance(equirect_direction(u, v));
           },
           to_frame, leaves, node, n);
-      if (const std::optional<SunDisc>& sun = env.sun()) {
+      if (const std::optional<SunDisc>& sun = env.sun(); sun && !(traced && traced->sky_sun)) {
         constexpr int kSpiral = 64;
         const double share = sun->integrated_luminance() / kSpiral;
         for (const Vec3& world : sun_disc_spiral(*sun, kSpiral)) {

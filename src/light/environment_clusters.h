@@ -21,11 +21,14 @@
 //    (midpoint values, exact solid angles), the sun disc's ∫L dω spread equally over 64
 //    directions of its area (light/sky_model.h sun_disc_spiral), each given to its nearest leaf
 //    with its own direction: a sun near a cell's edge shares its light between two leaves.
+// With `traced` (light/compact_sources.h), its sources are left out: a sky's sun disc, a map's
+// texels that a source carries; the renderers trace them.
 // Pinned by tests/light/environment_clusters_test.cpp.
 #pragma once
 
 #include <vector>
 
+#include "light/compact_sources.h"
 #include "light/environment.h"
 #include "math/direction_tree.h"
 #include "math/placement.h"
@@ -62,6 +65,7 @@ PointGrid leaf_grid(const DirectionTree& tree);
 // object's direction the turn takes back to it, so that cuts stored in the object's frame meet
 // the environment as the object now sees it.
 std::vector<RgbMoment> environment_moments(const Environment& env, const DirectionTree& tree,
-                                           const PointGrid& leaves, double frame_rotate_deg = 0);
+                                           const PointGrid& leaves, double frame_rotate_deg = 0,
+                                           const CompactSources* traced = nullptr);
 
 }  // namespace relight

@@ -376,9 +376,13 @@ std::vector<Vec3> sun_disc_spiral(const SunDisc& disc, int count) {
 }
 
 SunDisc make_sun_disc(Vec3 direction, double normal_illuminance) {
+  return make_source_disc(direction, radians(kSunAngularDiameterDeg) / 2.0, normal_illuminance);
+}
+
+SunDisc make_source_disc(Vec3 direction, double angular_radius, double normal_illuminance) {
   SunDisc d;
   d.direction = normalize(direction);
-  d.angular_radius = radians(kSunAngularDiameterDeg) / 2.0;
+  d.angular_radius = angular_radius;
   d.cos_angular_radius = std::cos(d.angular_radius);
   d.tan_angular_radius = std::tan(d.angular_radius);
   const double s = std::sin(d.angular_radius);

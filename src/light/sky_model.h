@@ -105,6 +105,9 @@ struct SunDisc {
 
 // A 0.53° disc centred on the unit `direction` with the given normal illuminance (lx >= 0).
 SunDisc make_sun_disc(Vec3 direction, double normal_illuminance);
+// A uniform disc of any angular radius (radians, in (0, π/2)): a compact source of a map
+// (light/compact_sources.h).
+SunDisc make_source_disc(Vec3 direction, double angular_radius, double normal_illuminance);
 // Its luminance in the unit direction dir: disc.luminance inside the disc, 0 outside.
 double sun_disc_luminance(const SunDisc& disc, Vec3 dir);
 // The direction of the disc at tangent-plane offset (x, y) · tan r from its centre, |(x, y)| ≤ 1

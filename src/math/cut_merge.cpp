@@ -90,6 +90,21 @@ void merge(std::span<Cursor> cursors, const Op& op, ValueCut& out) {
 
 }  // namespace
 
+void CutLeafLookup::reset(const ValueCut& cut) {
+  cut_ = &cut;
+  starts_.resize(cut.size());
+  std::uint64_t leaf = 0;
+  for (std::size_t i = 0; i < cut.size(); ++i) {
+    starts_[i] = leaf;
+    leaf += std::uint64_t{1} << cut.height[i];
+  }
+}
+
+float CutLeafLookup::at(std::uint64_t leaf) const {
+  const auto it = std::upper_bound(starts_.begin(), starts_.end(), leaf);
+  return cut_->value[static_cast<std::size_t>(it - starts_.begin()) - 1];
+}
+
 void interpolate_cuts(std::span<const WeightedCut> operands, ValueCut& out) {
   if (operands.empty() || operands.size() > kMaxOperands) {
     throw std::invalid_argument("interpolate_cuts: 1 to 16 operands");
@@ -124,6 +139,22 @@ void interpolate_cuts(std::span<const WeightedCut> operands, ValueCut& out) {
       out);
 }
 
+namespace {
+
+// out = Π over the cursors' cuts.
+void multiply(std::span<Cursor> cursors, ValueCut& out) {
+  merge(
+      cursors,
+      [](std::span<const float> v) {
+        float p = v[0];
+        for (std::size_t j = 1; j < v.size() && p != 0; ++j) p *= v[j];
+        return p;
+      },
+      out);
+}
+
+}  // namespace
+
 void multiply_cuts(const HeightCutsView& cuts, std::size_t cut,
                    std::span<const ValueCut* const> factors, ValueCut& out) {
   if (factors.size() + 1 > kMaxOperands) {
@@ -137,14 +168,19 @@ void multiply_cuts(const HeightCutsView& cuts, std::size_t cut,
     cursors[j + 1].values = factors[j];
     cursors[j + 1].end = factors[j]->size();
   }
-  merge(
-      std::span<Cursor>(cursors, factors.size() + 1),
-      [](std::span<const float> v) {
-        float p = v[0];
-        for (std::size_t j = 1; j < v.size() && p != 0; ++j) p *= v[j];
-        return p;
-      },
-      out);
+  multiply(std::span<Cursor>(cursors, factors.size() + 1), out);
+}
+
+void multiply_cuts(std::span<const ValueCut* const> factors, ValueCut& out) {
+  if (factors.empty() || factors.size() > kMaxOperands) {
+    throw std::invalid_argument("multiply_cuts: 1 to 16 factors");
+  }
+  Cursor cursors[kMaxOperands];
+  for (std::size_t j = 0; j < factors.size(); ++j) {
+    cursors[j].values = factors[j];
+    cursors[j].end = factors[j]->size();
+  }
+  multiply(std::span<Cursor>(cursors, factors.size()), out);
 }
 
 }  // namespace relight

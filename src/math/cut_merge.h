@@ -39,6 +39,19 @@ void push_cut_node(ValueCut& out, std::uint64_t first_leaf, int h, float v);
 // The value of every leaf of `cut` (N leaves) into `leaves`.
 void expand_cut(const ValueCut& cut, std::span<float> leaves);
 
+// A cut's value at single leaves, without expanding it: the first leaf of every node, searched
+// (log of the node count a lookup). For a few leaves of a cut (those within an object's cone).
+class CutLeafLookup {
+ public:
+  // `cut` must outlive the lookups (until the next reset).
+  void reset(const ValueCut& cut);
+  float at(std::uint64_t leaf) const;
+
+ private:
+  const ValueCut* cut_ = nullptr;
+  std::vector<std::uint64_t> starts_;  // per node, its first leaf
+};
+
 // A stored binary cut (cut `cut` of `cuts`) with its weight in an interpolation.
 struct WeightedCut {
   const HeightCutsView* cuts = nullptr;
@@ -52,6 +65,8 @@ void interpolate_cuts(std::span<const WeightedCut> operands, ValueCut& out);
 // out = the stored binary cut (cuts, cut) times every factor. N is the tree's leaf count.
 void multiply_cuts(const HeightCutsView& cuts, std::size_t cut,
                    std::span<const ValueCut* const> factors, ValueCut& out);
+// out = the product of 1 to 16 value cuts (each non-empty) of the same tree.
+void multiply_cuts(std::span<const ValueCut* const> factors, ValueCut& out);
 
 // Calls visit(heap_node, value) for every node of `cut`, in leaf order (N leaves).
 template <typename Visit>

@@ -41,5 +41,15 @@ constexpr double luminance(Rgb c) {
 constexpr double max_component(Rgb c) {
   return c.r > c.g ? (c.r > c.b ? c.r : c.b) : (c.g > c.b ? c.g : c.b);
 }
+// c into out[0 … 2] in single precision (the engine's arrays of 3 floats per receiver).
+constexpr void store_rgb(Rgb c, float* out) {
+  out[0] = static_cast<float>(c.r);
+  out[1] = static_cast<float>(c.g);
+  out[2] = static_cast<float>(c.b);
+}
+// out[0 … 2] as an Rgb.
+constexpr Rgb load_rgb(const float* in) {
+  return {in[0], in[1], in[2]};
+}
 
 }  // namespace relight

@@ -10,6 +10,7 @@
 #include "material/lambert.h"
 #include "render/glossy_pixels.h"
 #include "render/pixel_direct.h"
+#include "sources/cuts/compact_light.h"
 #include "sources/nearfield/emitter_direct.h"
 
 namespace relight {
@@ -158,6 +159,9 @@ class GlossyShading {
       sun_geometry_.emplace(lit_.sun_geometry());
       sun_geometry_->occluders = occluders_;
     }
+    if (const EnvironmentLighting* env = lit_.environment(); env != nullptr) {
+      compact_ = env->compact_sources();
+    }
     if (glossy_.empty()) return;
     const ObjectLighting* objects = lit_.objects();
     const std::vector<float> total =
@@ -185,10 +189,12 @@ class GlossyShading {
   bool empty() const { return glossy_.empty(); }
 
   // The direct irradiance at p (unit normal n) — luminaires, suns behind clear glass,
-  // emitters, shadowed by the room and the placed objects — as `--direct pixel` takes it.
+  // emitters, the top-level environment's compact sources, shadowed by the room and the placed
+  // objects — as `--direct pixel` takes it.
   Rgb direct_irradiance(Vec3 p, Vec3 n) const {
     Rgb e = luminaire_direct_irradiance(occluders_, lights_, p, n);
     if (sun_geometry_) e += sun_irradiance(*sun_geometry_, lit_.suns(), p, n);
+    e += compact_irradiance(occluders_, compact_, offset_from_surface(p, n), n);
     if (const EmitterLighting* emitters = lit_.emitters(); emitters != nullptr) {
       e += emitter_direct_irradiance(emitters->placed(), &occluders_, p, n);
     }
@@ -280,12 +286,14 @@ class GlossyShading {
             const double d = length(to_eye);
             if (!(d > 0) || dot(to_eye, n) <= 0) continue;  // seen from behind: as diffuse
             Rgb l = glossy_pixel_radiance(pixels_, *brdf, p, n, to_eye / d, samples, v);
-            if (v < t_.vertex_count) {
-              l += environment_reflection(v, *brdf, to_eye / d);
-            } else if (const EnvironmentLighting* env = lit_.environment(); env != nullptr) {
-              l += env->reflected_object(v - t_.vertex_count, objects_->placed(), [&](Vec3 in) {
-                return metallic_roughness_brdf(*brdf, n, in, to_eye / d);
-              });
+            const auto weight = [&](Vec3 in) {
+              return metallic_roughness_brdf(*brdf, n, in, to_eye / d);
+            };
+            // The environment through the cuts (its compact sources are in direct()).
+            if (const EnvironmentLighting* env = lit_.environment(); env != nullptr) {
+              l += v < t_.vertex_count
+                       ? env->reflected(v, weight)
+                       : env->reflected_object(v - t_.vertex_count, objects_->placed(), weight);
             }
             out[3 * v] = static_cast<float>(l.r);
             out[3 * v + 1] = static_cast<float>(l.g);
@@ -298,8 +306,8 @@ class GlossyShading {
  private:
   // The top-level environment's light that room vertex v reflects toward v_out (unit) by
   // `brdf`, through its self-visibility cut (sources/cuts/environment_lighting.h); 0 without
-  // an environment. The BRDF samples of glossy_pixel_radiance see no environment past the
-  // scene (outside()), so it is counted once.
+  // an environment; its compact sources are traced per pixel in direct(). The BRDF samples of
+  // glossy_pixel_radiance see no environment past the scene (outside()), so it is counted once.
   Rgb environment_reflection(std::size_t v, const MetallicRoughness& brdf, Vec3 v_out) const {
     const EnvironmentLighting* env = lit_.environment();
     if (env == nullptr) return {};
@@ -347,6 +355,11 @@ class GlossyShading {
         if (max_component(e) > 0) l += metallic_roughness_brdf(m, n, sun.disc.direction, v) * e;
       }
     }
+    for (const CompactSource& source : compact_) {
+      const Rgb e =
+          compact_irradiance(occluders_, std::span(&source, 1), offset_from_surface(p, n), n);
+      if (max_component(e) > 0) l += metallic_roughness_brdf(m, n, source.disc.direction, v) * e;
+    }
     if (const EmitterLighting* emitters = lit_.emitters(); emitters != nullptr) {
       l += lambertian_radiance(hemispherical_albedo(m),
                                emitter_direct_irradiance(emitters->placed(), &occluders_, p, n));
@@ -361,6 +374,7 @@ class GlossyShading {
   const Occluders occluders_;
   const std::vector<LuminaireLight> lights_;
   std::optional<SunGeometry> sun_geometry_;
+  std::span<const CompactSource> compact_;  // the top-level environment's (none without one)
   const GlossyMaterials glossy_;
   const std::span<const float> texture_;
   std::vector<float> vertex_radiance_;

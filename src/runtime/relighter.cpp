@@ -272,13 +272,16 @@ void Relighter::update_objects() {
   const std::vector<LuminaireLight> sensor_lights =
       luminaires_.lights(luminaire_specs_, kSensorOpeningSamples);
   ObjectLightInputs in{
-      room_light_, lights, sensor_lights, portals_.suns(), std::nullopt, nullptr, {}, {}, {}};
+      room_light_, lights, sensor_lights, portals_.suns(), std::nullopt, nullptr, {}, {}, {},
+      {},          {}};
   if (!portals_.suns().empty()) in.sun_geometry.emplace(portals_.sun_geometry());
   if (environment_) {
     // The environment's light on and around the objects as placed, through the cuts.
     environment_->update_objects(objects_->placed(), state_.objects);
     in.extra_room = environment_->object_room_delta();
     in.extra_objects = environment_->object_direct();
+    in.traced_room = environment_->object_room_compact();
+    in.traced_objects = environment_->object_compact();
   }
   if (emitters_) in.emitters = &emitters_->placed();
   if (portals_.size() > 0) {

@@ -1,7 +1,8 @@
 // The merge with counters (math/cut_merge.h) against the same operations leaf by leaf: eight
 // binary cuts of caps about nearby axes (as the samples of a visibility cut field around a
 // point) interpolated with trilinear-like weights, and a horizon cut times two such
-// interpolations, equal at every leaf; a product with a cut of ones keeps the cut's nodes.
+// interpolations, equal at every leaf, and the same product taken in two steps; a product with
+// a cut of ones keeps the cut's nodes.
 #include <cstdint>
 #include <cstdio>
 #include <vector>
@@ -57,6 +58,10 @@ TEST(CutMerge, EightInterpolatedCutsEqualTheWeightedSumAtEveryLeaf) {
     for (std::size_t s = 0; s < 8; ++s) expected += w[s] * leaf_values[s][i];
     ASSERT_NEAR(got[i], expected, 1e-6) << i;
   }
+  // The same values looked up leaf by leaf, without expanding the cut.
+  CutLeafLookup lookup;
+  lookup.reset(out);
+  for (std::size_t i = 0; i < got.size(); ++i) ASSERT_EQ(lookup.at(i), got[i]) << i;
   std::printf("8 cuts of %llu nodes in all interpolated into %zu nodes\n",
               static_cast<unsigned long long>(view.node_count()), out.size());
   EXPECT_LT(out.size(), view.node_count());
@@ -85,6 +90,15 @@ TEST(CutMerge, AProductEqualsTheLeafProductAndOnesChangeNothing) {
   for (std::size_t i = 0; i < got.size(); ++i) {
     ASSERT_NEAR(got[i], horizon[i] * 0.75f * a[i] * b[i], 1e-6) << i;
   }
+  // A product kept and multiplied again (a drag: the others' product times the moving one's
+  // field) equals the product of all three at once.
+  ValueCut partial, again;
+  const ValueCut* first[] = {&fa};
+  multiply_cuts(view, 0, first, partial);
+  const ValueCut* rest[] = {&partial, &fb};
+  multiply_cuts(rest, again);
+  EXPECT_EQ(again.height, out.height);
+  EXPECT_EQ(again.value, out.value);
   // Times a cut of ones: the horizon cut's own nodes, merged back where they were.
   ones.height = {static_cast<std::uint8_t>(tree().height(1))};
   ones.value = {1.0f};

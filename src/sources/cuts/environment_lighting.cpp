@@ -10,6 +10,7 @@
 #include "common/input_error.h"
 #include "light/environment_clusters.h"
 #include "light/environment_map_io.h"
+#include "sources/cuts/compact_light.h"
 
 namespace relight {
 
@@ -21,6 +22,7 @@ EnvironmentLighting::EnvironmentLighting(const CutsTransferView& cuts, const Run
       tree_(direction_tree_over_leaves(cuts.directions)),
       leaves_(leaf_grid(tree_)),
       glossy_cos_(std::cos(kGlossyNodeDeg * kPi / 180)),
+      compact_direct_(3 * receivers_, 0.0f),
       direct_(3 * receivers_, 0.0f),
       indirect_(3 * receivers_, 0.0f) {
   if (cuts_.self_visibility.cut_count() != receivers_) {
@@ -84,7 +86,9 @@ Rgb EnvironmentLighting::irradiance(std::size_t r) const {
 void EnvironmentLighting::update_objects(const PlacedObjects& placed,
                                          std::span<const MovablePlacement> placements) {
   if (!objects_) return;
-  objects_->update(env_ ? &*env_ : nullptr, moments_, direct_, placed, placements, objects_stale_);
+  objects_->update(env_ ? &*env_ : nullptr, moments_, direct_,
+                   RoomCompact{compact_, compact_fraction_, compact_direct_}, placed, placements,
+                   objects_stale_);
   objects_stale_ = false;
 }
 
@@ -92,20 +96,33 @@ void EnvironmentLighting::update() {
   const auto start = std::chrono::steady_clock::now();
   objects_stale_ = true;
   if (env_) {
-    moments_ = environment_moments(*env_, tree_, leaves_);
+    compact_ = find_compact_sources(*env_);
+    moments_ = environment_moments(*env_, tree_, leaves_, 0, &compact_);
   } else {
+    compact_ = {};
     moments_.assign(2 * tree_.leaf_count(), RgbMoment{});
   }
+  const std::size_t sources = compact_.sources.size();
+  compact_fraction_.assign(sources * receivers_, 0.0f);
+  const Occluders room(runtime_.occluders());
   light_direction_.resize(moments_.size());
   for (std::size_t k = 1; k < moments_.size(); ++k) {
     light_direction_[k] = light_direction(moments_[k], static_cast<std::uint32_t>(k));
   }
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, receivers_, 256), [&](const auto& range) {
     for (std::size_t r = range.begin(); r < range.end(); ++r) {
-      const Rgb e = irradiance(r);
-      direct_[3 * r] = static_cast<float>(e.r);
-      direct_[3 * r + 1] = static_cast<float>(e.g);
-      direct_[3 * r + 2] = static_cast<float>(e.b);
+      const Vec3 n = runtime_.normal(r);
+      Rgb traced;
+      for (std::size_t k = 0; k < sources; ++k) {
+        const CompactSource& s = compact_.sources[k];
+        const double c = dot(n, s.disc.direction);
+        if (c <= 0) continue;
+        const double f = compact_fraction(room, s, offset_from_surface(runtime_.ray_point(r), n));
+        compact_fraction_[r * sources + k] = static_cast<float>(f);
+        traced += s.illuminance * (f * c);
+      }
+      store_rgb(irradiance(r) + traced, &direct_[3 * r]);
+      store_rgb(traced, &compact_direct_[3 * r]);
     }
   });
   seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -119,13 +136,18 @@ void EnvironmentLighting::update() {
   }
 }
 
-void EnvironmentLighting::add_block(std::size_t b, bool, float (&acc)[3][kBlock]) const {
-  // The direct part in both slots: no renderer evaluates it per pixel.
+void EnvironmentLighting::add_block(std::size_t b, bool include_direct,
+                                    float (&acc)[3][kBlock]) const {
+  // The cuts' direct part in both slots (no renderer evaluates it per pixel); the compact
+  // sources' only with direct light.
   const std::size_t base = b * kBlock;
   const std::size_t count = std::min(kBlock, receivers_ - base);
   for (std::size_t i = 0; i < count; ++i) {
     const std::size_t r = 3 * (base + i);
-    for (std::size_t c = 0; c < 3; ++c) acc[c][i] += direct_[r + c] + indirect_[r + c];
+    for (std::size_t c = 0; c < 3; ++c) {
+      acc[c][i] +=
+          direct_[r + c] + indirect_[r + c] - (include_direct ? 0 : compact_direct_[r + c]);
+    }
   }
 }
 

@@ -14,6 +14,12 @@
 // sky would otherwise put a quadrant's light at one direction of a narrow lobe), ω_j the
 // direction of the node's light — its luminance moment's, so that a sun or a lamp in a map
 // lands where it is, not at the node's centre — or its mean direction when it holds none.
+// The environment's compact sources (light/compact_sources.h: a sky's sun, a map's small bright
+// spots) are not in the moments: they are traced at every receiver from its ray point, pushed
+// off its surface, against the static scene (sources/cuts/compact_light.h), their light added
+// to the direct light and bounced with it, and kept apart so that `render --direct pixel`
+// traces them per pixel instead (add_block without direct light leaves them out); the
+// renderers' glossy shading traces them toward the eye as it traces luminaires.
 // Pinned by tests/sources/cuts/cuts_lighting_test.cpp.
 #pragma once
 
@@ -25,6 +31,7 @@
 
 #include "engine/runtime_scene.h"
 #include "engine/source_term.h"
+#include "light/compact_sources.h"
 #include "light/environment.h"
 #include "light/environment_clusters.h"
 #include "math/direction_tree.h"
@@ -60,11 +67,14 @@ class EnvironmentLighting : public SourceTerm {
   std::span<const RgbMoment> moments() const { return moments_; }
   // The current environment, when there is one.
   const Environment* environment() const { return env_ ? &*env_ : nullptr; }
-  // The irradiance the cut of receiver r gives under the current environment.
+  // The irradiance the cut of receiver r gives under the current environment (the compact
+  // sources left out).
   Rgb irradiance(std::size_t r) const;
+  // The current environment's compact sources, traced rather than clustered.
+  std::span<const CompactSource> compact_sources() const { return compact_.sources; }
   // Σ_j weight(ω_j) · n · M_j over receiver r's visible nodes split to kGlossyNodeDeg, n its
   // normal, ω_j the direction of node j's light: the outgoing radiance when `weight` is the
-  // BRDF toward the eye.
+  // BRDF toward the eye (the compact sources left out).
   template <typename Weight>
   Rgb reflected(std::size_t r, const Weight& weight) const {
     const Vec3 n = runtime_.normal(r);
@@ -107,12 +117,19 @@ class EnvironmentLighting : public SourceTerm {
   // the environment or a placement changed since the last call.
   void update_objects(const PlacedObjects& placed, std::span<const MovablePlacement> placements);
   // What the objects take from the room's direct light (3 per receiver) and their vertices'
-  // direct light (3 per object vertex); empty without objects.
+  // direct light (3 per object vertex), the compact sources' parts apart (the renderers that
+  // trace direct light per pixel trace those); empty without objects.
   std::span<const float> object_room_delta() const {
     return objects_ ? objects_->room_delta() : std::span<const float>{};
   }
   std::span<const float> object_direct() const {
     return objects_ ? objects_->object_direct() : std::span<const float>{};
+  }
+  std::span<const float> object_room_compact() const {
+    return objects_ ? objects_->room_compact() : std::span<const float>{};
+  }
+  std::span<const float> object_compact() const {
+    return objects_ ? objects_->object_compact() : std::span<const float>{};
   }
   double objects_seconds() const { return objects_ ? objects_->seconds() : 0.0; }
 
@@ -154,6 +171,9 @@ class EnvironmentLighting : public SourceTerm {
   std::vector<Vec3> light_direction_;  // per node: its luminance moment's direction, or its axis
   double glossy_cos_;                  // cos kGlossyNodeDeg
   bool bounce_ = true, warm_ = false;
+  CompactSources compact_;
+  std::vector<float> compact_fraction_;   // per receiver, per compact source: f_s
+  std::vector<float> compact_direct_;     // 3 per receiver: the compact sources' part of direct_
   std::vector<float> direct_, indirect_;  // 3 per receiver
   std::optional<EnvironmentObjects> objects_;
   bool objects_stale_ = true;  // the environment changed since the objects' last update

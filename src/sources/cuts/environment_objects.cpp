@@ -10,11 +10,15 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
+#include "light/disc_visibility.h"
+#include "sources/cuts/compact_light.h"
+
 namespace relight {
 
 namespace {
 
 constexpr int kMaxFactors = 15;  // math/cut_merge.h multiply_cuts
+constexpr std::size_t kNoObject = ~std::size_t{0};
 
 // A turn in whole micro-degrees, in [0, 360°): the key of the caches.
 std::int64_t turn_key(double deg) {
@@ -43,8 +47,8 @@ Rgb cut_irradiance(const ValueCut& cut, std::uint32_t leaves, std::span<const Rg
 
 struct EnvironmentObjects::Scratch {
   std::array<ValueCut, kMaxFactors> factors;
-  ValueCut interpolated, product;
-  std::vector<float> leaf_values;
+  ValueCut interpolated;
+  CutLeafLookup lookup;
 };
 
 EnvironmentObjects::EnvironmentObjects(const CutsTransferView& cuts, const DirectionTree& tree,
@@ -85,7 +89,7 @@ std::span<const RgbMoment> EnvironmentObjects::frame_moments(double frame_deg) {
   const std::int64_t key = turn_key(frame_deg);
   if (key == 0) return world_moments_;
   std::vector<RgbMoment>& m = turned_moments_[key];
-  if (m.empty()) m = environment_moments(*env_, tree_, leaves_, frame_deg);
+  if (m.empty()) m = environment_moments(*env_, tree_, leaves_, frame_deg, compact_);
   return m;
 }
 
@@ -160,39 +164,54 @@ bool EnvironmentObjects::field_factor(std::size_t o, Vec3 x, Vec3 n, double fram
   }
   // Turned: the field leaf by leaf within the object's bounding cone, in the receiver's frame.
   interpolate_cuts(operands, s.interpolated);
-  s.leaf_values.resize(tree_.leaf_count());
-  expand_cut(s.interpolated, s.leaf_values);
+  s.lookup.reset(s.interpolated);
   const std::vector<std::uint32_t>& turn = leaf_turn(relative);
   cone_cut(
-      axis, half, [&](std::size_t leaf) { return s.leaf_values[turn[leaf]]; }, out);
+      axis, half, [&](std::size_t leaf) { return s.lookup.at(turn[leaf]); }, out);
   return true;
 }
 
+std::size_t EnvironmentObjects::factors_at(Vec3 x, Vec3 n, double frame, std::size_t skip,
+                                           bool moving, const PlacedObjects& placed, Scratch& s,
+                                           std::size_t first) const {
+  std::size_t count = first;
+  for (std::size_t o = 0; o < meshes_.size() && count < kMaxFactors; ++o) {
+    if (o == skip || (moving_[o] != 0) != moving) continue;
+    if (field_factor(o, x, n, frame, placed, s, s.factors[count])) ++count;
+  }
+  return count - first;
+}
+
 void EnvironmentObjects::object_cut(std::size_t q, std::size_t a, const PlacedObjects& placed,
-                                    Scratch& s) const {
+                                    bool rebuild, Scratch& s) {
   const Vec3 x = placed.ray_points[q], n = placed.normals[q];
   const double frame = placements_[a].rotate_deg;
-  const std::size_t coarse = std::size_t{1} << coarse_depth_;
-  const int coarse_height = std::bit_width(tree_.leaf_count()) - 1 - coarse_depth_;
-  std::array<const ValueCut*, kMaxFactors> factors{};
-  // The static scene, from its coarse view.
-  ValueCut& scene = s.factors[0];
-  scene.clear();
-  const std::uint64_t* bits = &static_bits_[q * static_words_];
-  for (std::size_t i = 0; i < coarse; ++i) {
-    const float v = ((bits[i / 64] >> (i % 64)) & 1) != 0 ? 1.0f : 0.0f;
-    push_cut_node(scene, std::uint64_t{i} << coarse_height, coarse_height, v);
-  }
-  factors[0] = &scene;
-  std::size_t count = 1;
-  for (std::size_t o = 0; o < meshes_.size() && count < kMaxFactors; ++o) {
-    if (o == a) continue;
-    if (field_factor(o, x, n, frame, placed, s, s.factors[count])) {
-      factors[count] = &s.factors[count];
-      ++count;
+  std::array<const ValueCut*, kMaxFactors + 1> factors{};
+  for (std::size_t k = 0; k < kMaxFactors; ++k) factors[k + 1] = &s.factors[k];
+  if (rebuild) {
+    // The rest: its cut of itself, the static scene from its coarse view, the objects that
+    // stay where they are.
+    const std::size_t coarse = std::size_t{1} << coarse_depth_;
+    const int coarse_height = std::bit_width(tree_.leaf_count()) - 1 - coarse_depth_;
+    ValueCut& scene = s.factors[0];
+    scene.clear();
+    const std::uint64_t* bits = &static_bits_[q * static_words_];
+    for (std::size_t i = 0; i < coarse; ++i) {
+      const float v = ((bits[i / 64] >> (i % 64)) & 1) != 0 ? 1.0f : 0.0f;
+      push_cut_node(scene, std::uint64_t{i} << coarse_height, coarse_height, v);
     }
+    const std::size_t count = 1 + factors_at(x, n, frame, a, false, placed, s, 1);
+    multiply_cuts(cuts_.object_self_visibility, q, std::span(factors.data() + 1, count),
+                  object_rests_[q]);
   }
-  multiply_cuts(cuts_.object_self_visibility, q, std::span(factors.data(), count), s.product);
+  // Times the moving objects' fields.
+  const std::size_t count = factors_at(x, n, frame, a, true, placed, s, 0);
+  if (count == 0) {
+    object_products_[q] = object_rests_[q];
+    return;
+  }
+  factors[0] = &object_rests_[q];
+  multiply_cuts(std::span(factors.data(), count + 1), object_products_[q]);
 }
 
 const ValueCut* EnvironmentObjects::object_visibility(std::size_t q,
@@ -228,7 +247,8 @@ void EnvironmentObjects::trace_static(std::size_t q, const PlacedObjects& placed
 }
 
 void EnvironmentObjects::update(const Environment* env, std::span<const RgbMoment> moments,
-                                std::span<const float> room_direct, const PlacedObjects& placed,
+                                std::span<const float> room_direct, const RoomCompact& compact,
+                                const PlacedObjects& placed,
                                 std::span<const MovablePlacement> placements, bool env_changed) {
   const auto start = std::chrono::steady_clock::now();
   const bool moved_any = !valid_ || !std::equal(placements.begin(), placements.end(),
@@ -236,14 +256,18 @@ void EnvironmentObjects::update(const Environment* env, std::span<const RgbMomen
   if (!moved_any && !env_changed && env == env_) return;
   env_ = env;
   world_moments_ = moments;
+  compact_ = &compact.sources;
   if (env_changed) turned_moments_.clear();
   const std::size_t objects = meshes_.size();
   tbb::enumerable_thread_specific<Scratch> scratch;
   if (moved_any) {
+    std::vector<std::uint8_t> moved(objects, 0);
+    for (std::size_t a = 0; a < objects; ++a) {
+      moved[a] = !valid_ || !(placements_[a] == placements[a]) ? 1 : 0;
+    }
     // The static scene as each moved object's vertices see it.
     for (std::size_t a = 0; a < objects; ++a) {
-      const bool moved = !valid_ || !(placements_[a] == placements[a]);
-      if (!moved || !placements[a].visible) continue;
+      if (!moved[a] || !placements[a].visible) continue;
       const std::size_t first = placed.first_vertex[a], last = placed.first_vertex[a + 1];
       tbb::parallel_for(tbb::blocked_range<std::size_t>(first, last, 16), [&](const auto& r) {
         for (std::size_t q = r.begin(); q < r.end(); ++q) {
@@ -252,16 +276,23 @@ void EnvironmentObjects::update(const Environment* env, std::span<const RgbMomen
       });
     }
     placements_.assign(placements.begin(), placements.end());
+    // The same objects moving again (a drag): the products of the others are kept.
+    const bool rebuild = !rests_valid_ || moved != moving_;
+    moving_ = moved;
+    rests_valid_ = true;
     // Every receiver's visibility with the objects as placed: the room's where an object
     // reaches it (none: its own cut alone), every visible object's vertices.
     room_products_.resize(room_.receivers());
+    room_rests_.resize(room_.receivers());
+    room_reached_.resize(room_.receivers(), 1);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, room_.receivers(), 64),
                       [&](const auto& r) {
                         Scratch& s = scratch.local();
                         for (std::size_t i = r.begin(); i < r.end(); ++i)
-                          room_product(i, placed, s);
+                          room_product(i, placed, rebuild, s);
                       });
     object_products_.resize(placed.vertex_count());
+    object_rests_.resize(placed.vertex_count());
     for (std::size_t a = 0; a < objects; ++a) {
       const std::size_t first = placed.first_vertex[a], last = placed.first_vertex[a + 1];
       if (!placements[a].visible) {
@@ -271,8 +302,7 @@ void EnvironmentObjects::update(const Environment* env, std::span<const RgbMomen
       tbb::parallel_for(tbb::blocked_range<std::size_t>(first, last, 16), [&](const auto& r) {
         Scratch& s = scratch.local();
         for (std::size_t q = r.begin(); q < r.end(); ++q) {
-          object_cut(q, a, placed, s);
-          std::swap(object_products_[q], s.product);
+          object_cut(q, a, placed, rebuild || moved[a], s);
         }
       });
     }
@@ -280,6 +310,8 @@ void EnvironmentObjects::update(const Environment* env, std::span<const RgbMomen
   valid_ = true;
   std::fill(room_delta_.begin(), room_delta_.end(), 0.0f);
   std::fill(object_direct_.begin(), object_direct_.end(), 0.0f);
+  room_compact_.assign(room_delta_.size(), 0.0f);
+  object_compact_.assign(object_direct_.size(), 0.0f);
   if (env == nullptr) {
     seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return;
@@ -295,9 +327,9 @@ void EnvironmentObjects::update(const Environment* env, std::span<const RgbMomen
     for (std::size_t i = r.begin(); i < r.end(); ++i) {
       if (room_products_[i].size() == 0) continue;
       const Rgb e = cut_irradiance(room_products_[i], leaves, world_moments_, room_.normal(i));
-      room_delta_[3 * i] = static_cast<float>(e.r) - room_direct[3 * i];
-      room_delta_[3 * i + 1] = static_cast<float>(e.g) - room_direct[3 * i + 1];
-      room_delta_[3 * i + 2] = static_cast<float>(e.b) - room_direct[3 * i + 2];
+      // Against the cuts' part of the room's direct light.
+      store_rgb(e - (load_rgb(&room_direct[3 * i]) - load_rgb(&compact.direct[3 * i])),
+                &room_delta_[3 * i]);
     }
   });
   // The objects' vertices: all of their direct light, in their own frames.
@@ -314,24 +346,87 @@ void EnvironmentObjects::update(const Environment* env, std::span<const RgbMomen
       }
     });
   }
+  if (!compact.sources.sources.empty()) trace_compact(compact, placed, placements);
   seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-void EnvironmentObjects::room_product(std::size_t i, const PlacedObjects& placed, Scratch& s) {
+void EnvironmentObjects::trace_compact(const RoomCompact& compact, const PlacedObjects& placed,
+                                       std::span<const MovablePlacement> placements) {
+  const std::span<const CompactSource> sources = compact.sources.sources;
+  const std::size_t count = sources.size();
+  const Occluders occluders(room_.occluders(), &placed.tracer);
+  // The room's receivers: where a source's cone meets a placed object, what it hides.
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, room_.receivers(), 256), [&](const auto& r) {
+    for (std::size_t i = r.begin(); i < r.end(); ++i) {
+      const Vec3 n = room_.normal(i), x = offset_from_surface(room_.ray_point(i), n);
+      Rgb delta;
+      for (std::size_t k = 0; k < count; ++k) {
+        const CompactSource& s = sources[k];
+        const double c = dot(n, s.disc.direction);
+        const double seen = compact.fraction[i * count + k];
+        if (c <= 0 || seen <= 0) continue;
+        bool near = false;
+        for (std::size_t o = 0; o < placed.object_count() && !near; ++o) {
+          near = placed.visible(o) &&
+                 disc_may_reach(s.disc, x, placed.bounds[o].centre, placed.bounds[o].radius);
+        }
+        if (!near) continue;
+        delta += s.illuminance * ((compact_fraction(occluders, s, x) - seen) * c);
+      }
+      store_rgb(delta, &room_compact_[3 * i]);
+    }
+  });
+  // The objects' vertices: all of it.
+  for (std::size_t a = 0; a < meshes_.size(); ++a) {
+    if (!placements[a].visible) continue;
+    const std::size_t first = placed.first_vertex[a], last = placed.first_vertex[a + 1];
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(first, last, 64), [&](const auto& r) {
+      for (std::size_t q = r.begin(); q < r.end(); ++q) {
+        const Vec3 n = placed.normals[q], x = offset_from_surface(placed.ray_points[q], n);
+        Rgb e;
+        for (std::size_t k = 0; k < count; ++k) {
+          const CompactSource& s = sources[k];
+          const double c = dot(n, s.disc.direction);
+          if (c <= 0) continue;
+          e += s.illuminance * (compact_fraction(occluders, s, x) * c);
+        }
+        store_rgb(e, &object_compact_[3 * q]);
+      }
+    });
+  }
+}
+
+void EnvironmentObjects::room_product(std::size_t i, const PlacedObjects& placed, bool rebuild,
+                                      Scratch& s) {
   const Vec3 x = room_.ray_point(i), n = room_.normal(i);
-  std::array<const ValueCut*, kMaxFactors> factors{};
-  std::size_t count = 0;
-  for (std::size_t o = 0; o < meshes_.size() && count < kMaxFactors; ++o) {
-    if (field_factor(o, x, n, 0, placed, s, s.factors[count])) {
-      factors[count] = &s.factors[count];
-      ++count;
+  std::array<const ValueCut*, kMaxFactors + 1> factors{};
+  for (std::size_t k = 0; k < kMaxFactors; ++k) factors[k + 1] = &s.factors[k];
+  if (rebuild) {
+    // The rest: the receiver's cut times the objects that stay where they are (none: empty,
+    // the stored cut stands for it).
+    const std::size_t count = factors_at(x, n, 0, kNoObject, false, placed, s, 0);
+    if (count == 0) {
+      room_rests_[i].clear();
+    } else {
+      multiply_cuts(cuts_.self_visibility, i, std::span(factors.data() + 1, count), room_rests_[i]);
     }
   }
-  if (count == 0) {
+  const std::size_t count = factors_at(x, n, 0, kNoObject, true, placed, s, 0);
+  const bool reached = count > 0 || room_rests_[i].size() > 0;
+  // Reached by no moving object, now or before, and the rest kept: the product stands.
+  if (!rebuild && count == 0 && room_reached_[i] == 0) return;
+  room_reached_[i] = count > 0 ? 1 : 0;
+  if (!reached) {
     room_products_[i].clear();
-    return;
+  } else if (count == 0) {
+    room_products_[i] = room_rests_[i];
+  } else if (room_rests_[i].size() == 0) {
+    multiply_cuts(cuts_.self_visibility, i, std::span(factors.data() + 1, count),
+                  room_products_[i]);
+  } else {
+    factors[0] = &room_rests_[i];
+    multiply_cuts(std::span(factors.data(), count + 1), room_products_[i]);
   }
-  multiply_cuts(cuts_.self_visibility, i, std::span(factors.data(), count), room_products_[i]);
 }
 
 }  // namespace relight

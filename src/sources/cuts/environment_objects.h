@@ -22,8 +22,15 @@
 // An object turned about the vertical relative to the frame of the receiver's cut has its
 // interpolated field re-expressed in that frame leaf by leaf within its bounding cone (each
 // leaf at the nearest leaf of the turned direction): exact to a leaf, slower than the merge
-// alone. Pinned by tests/cli/environment_cuts_test.cpp (moved and turned objects against the
-// reference).
+// alone.
+//
+// The environment's compact sources (light/compact_sources.h) are traced instead, against the
+// static scene and the objects as placed (sources/cuts/compact_light.h): at room receivers the
+// difference the objects make to what the static scene lets through (where some source's cone
+// from the receiver meets an object's bounding sphere), at object vertices all of it. Kept apart
+// from the cuts' parts (room_compact, object_compact) since renderers that trace direct light
+// per pixel trace these. Pinned by tests/cli/environment_cuts_test.cpp (moved and turned objects
+// against the reference).
 #pragma once
 
 #include <cstdint>
@@ -34,6 +41,7 @@
 #include <vector>
 
 #include "engine/runtime_scene.h"
+#include "light/compact_sources.h"
 #include "light/environment.h"
 #include "light/environment_clusters.h"
 #include "math/cut_merge.h"
@@ -45,6 +53,13 @@
 
 namespace relight {
 
+// The environment's compact sources as the room's receivers see them past the static scene.
+struct RoomCompact {
+  const CompactSources& sources;
+  std::span<const float> fraction;  // per receiver, per source: f_s
+  std::span<const float> direct;    // 3 per receiver: Σ_s E_s (part of the room's direct light)
+};
+
 class EnvironmentObjects {
  public:
   // All must outlive this.
@@ -53,11 +68,13 @@ class EnvironmentObjects {
                      std::span<const ObjectMesh> meshes);
 
   // Lights the objects as `placed` by `placements` under `env` (null: dark), whose world
-  // moments are `moments`, against the empty room's direct light `room_direct` (3 per room
-  // receiver). `env_changed`: the environment changed since the last call.
+  // moments are `moments` (its compact sources left out), against the empty room's direct light
+  // `room_direct` (3 per room receiver, the compact sources' `compact.direct` included).
+  // `env_changed`: the environment changed since the last call.
   void update(const Environment* env, std::span<const RgbMoment> moments,
-              std::span<const float> room_direct, const PlacedObjects& placed,
-              std::span<const MovablePlacement> placements, bool env_changed);
+              std::span<const float> room_direct, const RoomCompact& compact,
+              const PlacedObjects& placed, std::span<const MovablePlacement> placements,
+              bool env_changed);
 
   // Object vertex q's visibility (PlacedObjects order) in its object's frame, as the last update
   // placed it: its cut of itself times the static scene's coarse view and the other objects'
@@ -69,8 +86,12 @@ class EnvironmentObjects {
   // Object a's turn as last placed, degrees.
   double object_turn(std::size_t a) const { return placements_.at(a).rotate_deg; }
 
-  std::span<const float> room_delta() const { return room_delta_; }        // 3 per receiver
-  std::span<const float> object_direct() const { return object_direct_; }  // 3 per vertex
+  // The cuts' parts: what the objects take from the room's receivers (3 per receiver), the
+  // objects' vertices' direct light (3 per vertex); then the compact sources' likewise.
+  std::span<const float> room_delta() const { return room_delta_; }
+  std::span<const float> object_direct() const { return object_direct_; }
+  std::span<const float> room_compact() const { return room_compact_; }
+  std::span<const float> object_compact() const { return object_compact_; }
   double seconds() const { return seconds_; }
 
  private:
@@ -88,11 +109,21 @@ class EnvironmentObjects {
   const std::vector<std::uint32_t>& leaf_turn(double relative_deg) const;
   // The moments of the environment in a frame turned by `frame_deg`.
   std::span<const RgbMoment> frame_moments(double frame_deg);
+  // Into s.factors[first …]: the fields at x (normal n, frame turned by `frame` degrees) of the
+  // objects other than `skip` that are moving (moving_) or, with `moving` false, that are not;
+  // returns how many.
+  std::size_t factors_at(Vec3 x, Vec3 n, double frame, std::size_t skip, bool moving,
+                         const PlacedObjects& placed, Scratch& s, std::size_t first) const;
   // room_products_[i] = room receiver i's cut times the fields of the objects that reach it
-  // (cleared when none does).
-  void room_product(std::size_t i, const PlacedObjects& placed, Scratch& s);
-  // s.product = object vertex q's (of object a) visibility, as object_visibility.
-  void object_cut(std::size_t q, std::size_t a, const PlacedObjects& placed, Scratch& s) const;
+  // (cleared when none does): its rest (made again with `rebuild`) times the moving objects'.
+  void room_product(std::size_t i, const PlacedObjects& placed, bool rebuild, Scratch& s);
+  // object_products_[q] = object vertex q's (of object a) visibility, as object_visibility: its
+  // rest (made again with `rebuild`) times the moving objects' fields.
+  void object_cut(std::size_t q, std::size_t a, const PlacedObjects& placed, bool rebuild,
+                  Scratch& s);
+  // The compact sources at the room's receivers near the objects and at the objects' vertices.
+  void trace_compact(const RoomCompact& compact, const PlacedObjects& placed,
+                     std::span<const MovablePlacement> placements);
   // Object vertex q's view of the static scene (1,024 coarse directions), traced again.
   void trace_static(std::size_t q, const PlacedObjects& placed, double frame_deg);
 
@@ -115,7 +146,17 @@ class EnvironmentObjects {
   // The visibilities as last placed (products made again only when a placement changes; a new
   // environment only sums them again).
   std::vector<ValueCut> room_products_, object_products_;
+  // A drag: the objects the last update moved (1), and every receiver's product of everything
+  // else — its own cut, the static scene, the objects left where they were — so that while the
+  // same objects move again only their fields are interpolated and multiplied in. Made again
+  // when another set of objects moves.
+  std::vector<std::uint8_t> moving_;
+  bool rests_valid_ = false;
+  std::vector<ValueCut> room_rests_, object_rests_;  // room: empty when no object stays in reach
+  std::vector<std::uint8_t> room_reached_;           // a moving object reached the receiver
   std::vector<float> room_delta_, object_direct_;
+  const CompactSources* compact_ = nullptr;  // the last update's
+  std::vector<float> room_compact_, object_compact_;
   double seconds_ = 0;
 };
 

@@ -342,6 +342,21 @@ void ObjectLighting::update(const ObjectLightInputs& in, bool light_changed) {
       }
     }
   }
+  const bool traced = !in.traced_room.empty() || !in.traced_objects.empty();
+  if (traced) {
+    if (in.traced_room.size() != 3 * receivers || in.traced_objects.size() != 3 * objects) {
+      throw std::invalid_argument("ObjectLighting: the traced direct light has the wrong size");
+    }
+    for (std::size_t r = 0; r < receivers; ++r) {
+      const std::size_t u = r < vertices ? r : r + objects;
+      for (std::size_t k = 0; k < 3; ++k) source_[3 * u + k] += in.traced_room[3 * r + k];
+    }
+    for (std::size_t q = 0; q < objects; ++q) {
+      for (std::size_t k = 0; k < 3; ++k) {
+        source_[3 * (vertices + q) + k] += in.traced_objects[3 * q + k];
+      }
+    }
+  }
   if (!direct_only_) {
     apply_object_rows(static_light_, source_, false);
     if (in.glass) add_glass_light(in.glass, source_);
@@ -379,14 +394,15 @@ void ObjectLighting::update(const ObjectLightInputs& in, bool light_changed) {
     const std::size_t u = indexing.solver_row(r);
     for (std::size_t k = 0; k < 3; ++k) {
       room_delta_[3 * r + k] = source_[3 * u + k] + indirect_[3 * u + k];
-      room_delta_direct_[3 * r + k] = direct_[3 * u + k];
+      room_delta_direct_[3 * r + k] = direct_[3 * u + k] + (traced ? in.traced_room[3 * r + k] : 0);
     }
   }
   for (std::size_t q = 0; q < objects; ++q) {
     const std::size_t u = vertices + q;
     for (std::size_t k = 0; k < 3; ++k) {
       object_total_[3 * q + k] = source_[3 * u + k] + indirect_[3 * u + k];
-      object_indirect_[3 * q + k] = object_total_[3 * q + k] - direct_[3 * u + k];
+      object_indirect_[3 * q + k] = object_total_[3 * q + k] - direct_[3 * u + k] -
+                                    (traced ? in.traced_objects[3 * q + k] : 0);
     }
   }
   timings_.bounce_seconds = seconds_since(start);

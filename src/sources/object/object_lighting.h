@@ -67,6 +67,10 @@ struct ObjectLightInputs {
   // (3 per object vertex, PlacedObjects order); empty: none. Part of D, and kept with or without
   // direct light in every output: no renderer traces it per pixel.
   std::span<const float> extra_room, extra_objects;
+  // The same for light that renderers tracing direct light per pixel trace too (the
+  // environment's compact sources, sources/cuts/compact_light.h): part of D and of ΔE_d, so left
+  // out of the outputs without direct light. Empty: none.
+  std::span<const float> traced_room, traced_objects;
 };
 
 struct ObjectTimings {

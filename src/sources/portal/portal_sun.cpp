@@ -15,15 +15,8 @@ bool passes(const SunGeometry& g, const PortalSun& sun, Vec3 origin, Vec3 w) {
   return !(sun.exterior && sun.exterior->occluded({origin, w}));
 }
 
-// Whether some direction within the disc's cone comes within the portal's bounding sphere:
-// the sphere not behind the point, and the sun's axis from the point passing its centre
-// within its radius plus the cone's spread at that distance.
 bool may_reach(const BoundingSphere& b, const SunDisc& disc, Vec3 origin) {
-  const Vec3 v = b.centre - origin;
-  const double along = dot(v, disc.direction);
-  if (along < -b.radius) return false;
-  const double across = length(v - disc.direction * along);
-  return across <= b.radius + length(v) * disc.tan_angular_radius * 1.01 + 1e-9;
+  return disc_may_reach(disc, origin, b.centre, b.radius);
 }
 
 // Whether a ray of the disc's cone from some point of the triangle (a, b, c) may cross the
@@ -60,16 +53,7 @@ bool may_cross_glass(const GlassBounds& g, Vec3 s, double tan_spread, const Vec3
 
 PortalSun make_portal_sun(std::uint32_t portal, const SunDisc& disc, Rgb illuminance,
                           std::shared_ptr<const RayTracer> exterior) {
-  PortalSun sun{portal, disc, illuminance, std::move(exterior), {}};
-  for (int i = 0; i < kSunRimDirections; ++i) {
-    const double a = 2 * kPi * i / kSunRimDirections;
-    sun.directions[static_cast<std::size_t>(i)] =
-        sun_disc_direction(disc, std::cos(a), std::sin(a));
-  }
-  // The penumbra: equal areas of the disc.
-  const std::vector<Vec3> spiral = sun_disc_spiral(disc, kSunPenumbraDirections);
-  std::copy(spiral.begin(), spiral.end(), sun.directions.begin() + kSunRimDirections);
-  return sun;
+  return {portal, disc, illuminance, std::move(exterior), disc_directions(disc)};
 }
 
 double sun_disc_fraction(const SunGeometry& g, const PortalSun& sun, Vec3 origin, bool penumbra) {
@@ -77,20 +61,8 @@ double sun_disc_fraction(const SunGeometry& g, const PortalSun& sun, Vec3 origin
       !may_reach(g.portals[sun.portal].sphere, sun.disc, origin)) {
     return 0;
   }
-  const bool centre = passes(g, sun, origin, sun.disc.direction);
-  if (!penumbra) return centre ? 1.0 : 0.0;
-  for (int i = 0; i < kSunRimDirections; ++i) {
-    if (passes(g, sun, origin, sun.directions[static_cast<std::size_t>(i)]) != centre) {
-      int seen = 0;  // the penumbra
-      for (int k = 0; k < kSunPenumbraDirections; ++k) {
-        const Vec3 w = sun.directions[static_cast<std::size_t>(kSunRimDirections) +
-                                      static_cast<std::size_t>(k)];
-        seen += passes(g, sun, origin, w) ? 1 : 0;
-      }
-      return static_cast<double>(seen) / kSunPenumbraDirections;
-    }
-  }
-  return centre ? 1.0 : 0.0;
+  return disc_fraction(
+      sun.disc, sun.directions, [&](Vec3 w) { return passes(g, sun, origin, w); }, penumbra);
 }
 
 Rgb sun_irradiance(const SunGeometry& g, std::span<const PortalSun> suns, Vec3 p, Vec3 n,

@@ -11,25 +11,19 @@
 // state places them.
 //
 //     E = E_sun,n · tint · f · max(0, n · s),
-// f the fraction of the disc seen that way. Unoccluded, the mean of n·ω over the disc is n·s
-// exactly (∫_disc ω dω = s·π sin²r), so f = 1 gives the closed form. f is found in two
-// steps: 9 directions — the disc's centre and 8 points on its rim — and when they disagree
-// (the point is in a penumbra) 64 directions spread evenly over the disc's area (a Vogel
-// spiral): for a straight edge at any offset and direction f is then within 0.047 of the
-// closed form (32 points: 0.074, 128: 0.026; the penumbra is a centimetre or two wide, so
-// its few receivers can afford it); a straight edge that cuts off less than the segment
-// between two neighbouring rim points (1.2 % of the disc) goes unseen. Before any ray, a
-// point from which no direction of the disc comes within the portal's bounding sphere gets
-// nothing. Pinned by tests/sources/portal/portal_sun_test.cpp (f at and across a window's edge
-// against the closed form) and tests/render/sun_accuracy_test.cpp (against the reference).
+// f the fraction of the disc seen that way, found by light/disc_visibility.h (9 directions, 64
+// in a penumbra). Before any ray, a point from which no direction of the disc comes within the
+// portal's bounding sphere gets nothing. Pinned by tests/sources/portal/portal_sun_test.cpp (f at
+// and across a window's edge against the closed form) and tests/render/sun_accuracy_test.cpp
+// (against the reference).
 #pragma once
 
-#include <array>
 #include <cstdint>
 #include <memory>
 #include <span>
 
 #include "engine/runtime_scene.h"
+#include "light/disc_visibility.h"
 #include "light/sky_model.h"
 #include "math/rgb.h"
 #include "math/vec3.h"
@@ -37,16 +31,12 @@
 
 namespace relight {
 
-inline constexpr int kSunRimDirections = 8;
-inline constexpr int kSunPenumbraDirections = 64;
-
 struct PortalSun {
   std::uint32_t portal = 0;                   // the portal the sun shines through (scene order)
   SunDisc disc;                               // direction and angular radius
   Rgb illuminance;                            // lx on a plane facing the sun, tint included
   std::shared_ptr<const RayTracer> exterior;  // the exterior objects as placed; null: none
-  // The disc's directions: its rim, then the penumbra's spiral (make_portal_sun fills them).
-  std::array<Vec3, kSunRimDirections + kSunPenumbraDirections> directions{};
+  DiscDirections directions;                  // make_portal_sun fills them
 };
 
 PortalSun make_portal_sun(std::uint32_t portal, const SunDisc& disc, Rgb illuminance,
