@@ -82,8 +82,33 @@ void check_height_cuts(const HeightCutsView& cuts) {
   }
 }
 
+std::uint64_t IndexCutsView::bytes() const {
+  return (node_count() * 17 + 7) / 8 + first.size() * sizeof(std::uint64_t);
+}
+
+IndexCutsView IndexCuts::view() const {
+  return {leaf_count, first, index, visible, static_cast<int>(std::bit_width(leaf_count)) - 1};
+}
+
+IndexCuts index_encoded(const HeightCutsView& cuts) {
+  IndexCuts out;
+  out.leaf_count = cuts.leaf_count;
+  out.first.assign(cuts.first.begin(), cuts.first.end());
+  out.index.reserve(cuts.node_count());
+  for (std::size_t c = 0; c < cuts.cut_count(); ++c) {
+    std::uint64_t leaf = 0;
+    for (std::uint64_t k = cuts.first[c]; k < cuts.first[c + 1]; ++k) {
+      const int h = cuts.height(k);
+      out.index.push_back(static_cast<std::uint16_t>((cuts.leaf_count + leaf) >> h));
+      leaf += std::uint64_t{1} << h;
+    }
+  }
+  out.visible.assign(cuts.visible.begin(), cuts.visible.end());
+  return out;
+}
+
 std::uint64_t index_encoded_bytes(const HeightCutsView& cuts) {
-  return (cuts.node_count() * 17 + 7) / 8 + cuts.first.size() * sizeof(std::uint64_t);
+  return IndexCutsView{cuts.leaf_count, cuts.first, {}, {}, 0}.bytes();
 }
 
 }  // namespace relight

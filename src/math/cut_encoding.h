@@ -5,8 +5,9 @@
 // is node (N + leaf) >> h of the heap (math/direction_tree.h), and the next node starts 2^h
 // leaves on. The paper's height encoding keeps h in 4 bits and the node's visibility in 1 bit;
 // the previous methods (Akerlund et al. 2007; Cheslack-Postava et al. 2008) keep the node's
-// 2-byte index instead of its height, which `index_encoded_bytes` sizes for comparison
-// (17 bits a node against 5).
+// 2-byte index instead of its height (17 bits a node against 5), built here too (IndexCuts) as
+// the baseline of the height encoding's size and of the merge's speed (math/cut_merge.h takes
+// both; bench/cuts_bench.cpp times them).
 //
 // Storage: heights two a byte, low nibble first; visibility bits eight a byte, lowest bit
 // first; both indexed by the node's place among all the cuts' nodes; cut c's nodes are
@@ -16,6 +17,7 @@
 // Pinned by tests/math/cut_encoding_test.cpp.
 #pragma once
 
+#include <bit>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -36,10 +38,7 @@ struct HeightCutsView {
 
   std::size_t cut_count() const { return first.empty() ? 0 : first.size() - 1; }
   std::uint64_t node_count() const { return first.empty() ? 0 : first.back(); }
-  int height(std::uint64_t node) const {
-    const std::uint8_t b = heights[node >> 1];
-    return (node & 1) != 0 ? b >> 4 : b & 0xF;
-  }
+  int height(std::uint64_t node) const { return (heights[node >> 1] >> ((node & 1) << 2)) & 0xF; }
   bool is_visible(std::uint64_t node) const {
     return ((visible[node >> 3] >> (node & 7)) & 1) != 0;
   }
@@ -79,8 +78,41 @@ HeightCuts make_height_cuts(const DirectionTree& tree);
 // not a cut of the store's tree in leaf order.
 void append_cut(HeightCuts& cuts, const DirectionCut& cut);
 
-// Bytes of the same cuts with each node's position as a 2-byte heap index instead of its
-// height: 17 bits a node, and the cuts' starts.
+// The previous methods' encoding (Akerlund et al. 2007; Cheslack-Postava et al. 2008): each
+// node by its 2-byte heap index and 1 visibility bit, the height derived from the index
+// (log2 N − ⌊log2 index⌋).
+struct IndexCutsView {
+  std::uint32_t leaf_count = 0;
+  std::span<const std::uint64_t> first;   // per cut, into the nodes; cuts + 1 entries
+  std::span<const std::uint16_t> index;   // the heap index of every node
+  std::span<const std::uint8_t> visible;  // 1 bit a node
+  int log_n = 0;                          // log2 leaf_count
+
+  std::size_t cut_count() const { return first.empty() ? 0 : first.size() - 1; }
+  std::uint64_t node_count() const { return first.empty() ? 0 : first.back(); }
+  int height(std::uint64_t node) const {
+    return log_n - (std::bit_width(static_cast<unsigned>(index[node])) - 1);
+  }
+  bool is_visible(std::uint64_t node) const {
+    return ((visible[node >> 3] >> (node & 7)) & 1) != 0;
+  }
+  // Bytes: 17 bits a node and the cuts' starts.
+  std::uint64_t bytes() const;
+};
+
+struct IndexCuts {
+  std::uint32_t leaf_count = 0;
+  std::vector<std::uint64_t> first;
+  std::vector<std::uint16_t> index;
+  std::vector<std::uint8_t> visible;
+
+  IndexCutsView view() const;
+};
+
+// The same cuts index encoded.
+IndexCuts index_encoded(const HeightCutsView& cuts);
+
+// Bytes of the same cuts index encoded (IndexCutsView::bytes), without encoding them.
 std::uint64_t index_encoded_bytes(const HeightCutsView& cuts);
 
 }  // namespace relight

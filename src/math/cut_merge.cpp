@@ -10,14 +10,15 @@ namespace {
 constexpr std::size_t kMaxOperands = 16;
 
 // A pointer into one operand and its counter (Steps 1 and 3), with the pointed node's height
-// and value read once when the pointer moves.
+// and value read once when the pointer moves. View: the stored cuts' encoding (height or index).
+template <typename View>
 struct Cursor {
-  const HeightCutsView* stored = nullptr;  // a stored binary cut, or
-  const ValueCut* values = nullptr;        // a cut with values
-  std::uint64_t k = 0, end = 0;            // the pointed node and the end
-  std::uint64_t counter = 0;               // leaves of the pointed node already passed
-  int h = 0;                               // the pointed node's height
-  float v = 0;                             // and value
+  const View* stored = nullptr;      // a stored binary cut, or
+  const ValueCut* values = nullptr;  // a cut with values
+  std::uint64_t k = 0, end = 0;      // the pointed node and the end
+  std::uint64_t counter = 0;         // leaves of the pointed node already passed
+  int h = 0;                         // the pointed node's height
+  float v = 0;                       // and value
 
   void load() {
     if (k >= end) return;
@@ -57,10 +58,10 @@ void expand_cut(const ValueCut& cut, std::span<float> leaves) {
 namespace {
 
 // Steps 1–4 over `cursors`; op(values of the pointed nodes) is each output node's value.
-template <typename Op>
-void merge(std::span<Cursor> cursors, const Op& op, ValueCut& out) {
+template <typename View, typename Op>
+void merge(std::span<Cursor<View>> cursors, const Op& op, ValueCut& out) {
   out.clear();
-  for (Cursor& c : cursors) c.load();
+  for (Cursor<View>& c : cursors) c.load();
   std::uint64_t leaf = 0;
   float values[kMaxOperands];
   const std::size_t count = cursors.size();
@@ -71,7 +72,7 @@ void merge(std::span<Cursor> cursors, const Op& op, ValueCut& out) {
     for (std::size_t j = 0; j < count; ++j) values[j] = cursors[j].v;
     push_cut_node(out, leaf, h_min, op(std::span<const float>(values, count)));
     leaf += std::uint64_t{1} << h_min;
-    for (Cursor& c : cursors) {
+    for (Cursor<View>& c : cursors) {
       if (c.h == h_min) {
         ++c.k;
         c.counter = 0;
@@ -105,14 +106,17 @@ float CutLeafLookup::at(std::uint64_t leaf) const {
   return cut_->value[static_cast<std::size_t>(it - starts_.begin()) - 1];
 }
 
-void interpolate_cuts(std::span<const WeightedCut> operands, ValueCut& out) {
+namespace {
+
+template <typename View>
+void interpolate(std::span<const WeightedCutOf<View>> operands, ValueCut& out) {
   if (operands.empty() || operands.size() > kMaxOperands) {
     throw std::invalid_argument("interpolate_cuts: 1 to 16 operands");
   }
-  Cursor cursors[kMaxOperands];
+  Cursor<View> cursors[kMaxOperands];
   float weights[kMaxOperands];
   std::size_t count = 0;
-  for (const WeightedCut& o : operands) {
+  for (const WeightedCutOf<View>& o : operands) {
     // An operand of weight 0 adds nothing but its nodes' boundaries.
     if (o.weight == 0) continue;
     cursors[count].stored = o.cuts;
@@ -122,7 +126,7 @@ void interpolate_cuts(std::span<const WeightedCut> operands, ValueCut& out) {
     ++count;
   }
   if (count == 0) {
-    const WeightedCut& o = operands.front();
+    const WeightedCutOf<View>& o = operands.front();
     cursors[0].stored = o.cuts;
     cursors[0].k = o.cuts->first[o.cut];
     cursors[0].end = o.cuts->first[o.cut + 1];
@@ -130,7 +134,7 @@ void interpolate_cuts(std::span<const WeightedCut> operands, ValueCut& out) {
     count = 1;
   }
   merge(
-      std::span<Cursor>(cursors, count),
+      std::span<Cursor<View>>(cursors, count),
       [&](std::span<const float> v) {
         float sum = 0;
         for (std::size_t j = 0; j < v.size(); ++j) sum += weights[j] * v[j];
@@ -139,10 +143,9 @@ void interpolate_cuts(std::span<const WeightedCut> operands, ValueCut& out) {
       out);
 }
 
-namespace {
-
 // out = Π over the cursors' cuts.
-void multiply(std::span<Cursor> cursors, ValueCut& out) {
+template <typename View>
+void multiply(std::span<Cursor<View>> cursors, ValueCut& out) {
   merge(
       cursors,
       [](std::span<const float> v) {
@@ -153,14 +156,13 @@ void multiply(std::span<Cursor> cursors, ValueCut& out) {
       out);
 }
 
-}  // namespace
-
-void multiply_cuts(const HeightCutsView& cuts, std::size_t cut,
-                   std::span<const ValueCut* const> factors, ValueCut& out) {
+template <typename View>
+void multiply_stored(const View& cuts, std::size_t cut, std::span<const ValueCut* const> factors,
+                     ValueCut& out) {
   if (factors.size() + 1 > kMaxOperands) {
     throw std::invalid_argument("multiply_cuts: at most 15 factors");
   }
-  Cursor cursors[kMaxOperands];
+  Cursor<View> cursors[kMaxOperands];
   cursors[0].stored = &cuts;
   cursors[0].k = cuts.first[cut];
   cursors[0].end = cuts.first[cut + 1];
@@ -168,19 +170,39 @@ void multiply_cuts(const HeightCutsView& cuts, std::size_t cut,
     cursors[j + 1].values = factors[j];
     cursors[j + 1].end = factors[j]->size();
   }
-  multiply(std::span<Cursor>(cursors, factors.size() + 1), out);
+  multiply(std::span<Cursor<View>>(cursors, factors.size() + 1), out);
+}
+
+}  // namespace
+
+void interpolate_cuts(std::span<const WeightedCut> operands, ValueCut& out) {
+  interpolate(operands, out);
+}
+
+void interpolate_cuts(std::span<const WeightedIndexCut> operands, ValueCut& out) {
+  interpolate(operands, out);
+}
+
+void multiply_cuts(const HeightCutsView& cuts, std::size_t cut,
+                   std::span<const ValueCut* const> factors, ValueCut& out) {
+  multiply_stored(cuts, cut, factors, out);
+}
+
+void multiply_cuts(const IndexCutsView& cuts, std::size_t cut,
+                   std::span<const ValueCut* const> factors, ValueCut& out) {
+  multiply_stored(cuts, cut, factors, out);
 }
 
 void multiply_cuts(std::span<const ValueCut* const> factors, ValueCut& out) {
   if (factors.empty() || factors.size() > kMaxOperands) {
     throw std::invalid_argument("multiply_cuts: 1 to 16 factors");
   }
-  Cursor cursors[kMaxOperands];
+  Cursor<HeightCutsView> cursors[kMaxOperands];
   for (std::size_t j = 0; j < factors.size(); ++j) {
     cursors[j].values = factors[j];
     cursors[j].end = factors[j]->size();
   }
-  multiply(std::span<Cursor>(cursors, factors.size()), out);
+  multiply(std::span<Cursor<HeightCutsView>>(cursors, factors.size()), out);
 }
 
 }  // namespace relight

@@ -52,18 +52,26 @@ class CutLeafLookup {
   std::vector<std::uint64_t> starts_;  // per node, its first leaf
 };
 
-// A stored binary cut (cut `cut` of `cuts`) with its weight in an interpolation.
-struct WeightedCut {
-  const HeightCutsView* cuts = nullptr;
+// A stored binary cut (cut `cut` of `cuts`) with its weight in an interpolation; View the
+// encoding (math/cut_encoding.h): the paper's height encoding, or the previous methods' index
+// encoding as the baseline (the same merge, each node's height derived from its index).
+template <typename View>
+struct WeightedCutOf {
+  const View* cuts = nullptr;
   std::size_t cut = 0;
   float weight = 0;
 };
+using WeightedCut = WeightedCutOf<HeightCutsView>;
+using WeightedIndexCut = WeightedCutOf<IndexCutsView>;
 
 // out = Σ weight · cut, over at most 16 operands of the same tree.
 void interpolate_cuts(std::span<const WeightedCut> operands, ValueCut& out);
+void interpolate_cuts(std::span<const WeightedIndexCut> operands, ValueCut& out);
 
 // out = the stored binary cut (cuts, cut) times every factor. N is the tree's leaf count.
 void multiply_cuts(const HeightCutsView& cuts, std::size_t cut,
+                   std::span<const ValueCut* const> factors, ValueCut& out);
+void multiply_cuts(const IndexCutsView& cuts, std::size_t cut,
                    std::span<const ValueCut* const> factors, ValueCut& out);
 // out = the product of 1 to 16 value cuts (each non-empty) of the same tree.
 void multiply_cuts(std::span<const ValueCut* const> factors, ValueCut& out);

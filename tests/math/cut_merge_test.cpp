@@ -2,7 +2,7 @@
 // binary cuts of caps about nearby axes (as the samples of a visibility cut field around a
 // point) interpolated with trilinear-like weights, and a horizon cut times two such
 // interpolations, equal at every leaf, and the same product taken in two steps; a product with
-// a cut of ones keeps the cut's nodes.
+// a cut of ones keeps the cut's nodes; the index encoding merges to the same cuts.
 #include <cstdint>
 #include <cstdio>
 #include <vector>
@@ -58,6 +58,22 @@ TEST(CutMerge, EightInterpolatedCutsEqualTheWeightedSumAtEveryLeaf) {
     for (std::size_t s = 0; s < 8; ++s) expected += w[s] * leaf_values[s][i];
     ASSERT_NEAR(got[i], expected, 1e-6) << i;
   }
+  // The previous methods' index encoding of the same cuts: each node's height from its index, the
+  // same merge giving the same cut.
+  const IndexCuts indexed = index_encoded(view);
+  const IndexCutsView iv = indexed.view();
+  ASSERT_EQ(iv.node_count(), view.node_count());
+  for (std::uint64_t k = 0; k < view.node_count(); ++k) {
+    ASSERT_EQ(iv.height(k), view.height(k)) << k;
+    ASSERT_EQ(iv.is_visible(k), view.is_visible(k)) << k;
+  }
+  EXPECT_EQ(iv.bytes(), index_encoded_bytes(view));
+  std::vector<WeightedIndexCut> index_operands;
+  for (std::size_t s = 0; s < 8; ++s) index_operands.push_back({&iv, s, w[s]});
+  ValueCut from_index;
+  interpolate_cuts(index_operands, from_index);
+  EXPECT_EQ(from_index.height, out.height);
+  EXPECT_EQ(from_index.value, out.value);
   // The same values looked up leaf by leaf, without expanding the cut.
   CutLeafLookup lookup;
   lookup.reset(out);
