@@ -82,7 +82,7 @@ std::vector<RgbMoment> environment_moments(const Environment& env, const Directi
       break;
     }
     case EnvironmentKind::kSky: {
-      const int height = static_cast<int>(std::ceil(kPi / (0.5 * spacing)));
+      const int height = static_cast<int>(std::ceil(kPi / (1.0 * spacing)));
       deposit_grid(
           2 * height, height, 1,
           [&](int, int, double u, double v) {
