@@ -14,8 +14,10 @@
 
 #include <array>
 #include <cstddef>
+#include <span>
 
 #include "light/sky_model.h"
+#include "math/rgb.h"
 #include "math/vec3.h"
 
 namespace relight {
@@ -29,6 +31,21 @@ struct DiscDirections {
 };
 
 DiscDirections disc_directions(const SunDisc& disc);
+
+// Σ over `sources` (each with a `disc` and its `illuminance`, Rgb lx at normal incidence) of
+// E_n · f · max(0, n · s) at a surface of unit normal n, f = fraction(source) in [0, 1] asked
+// only of sources above the surface.
+template <typename Source, typename Fraction>
+Rgb disc_irradiance(std::span<const Source> sources, Vec3 n, const Fraction& fraction) {
+  Rgb e;
+  for (const Source& s : sources) {
+    const double c = dot(n, s.disc.direction);
+    if (c <= 0) continue;
+    const double f = fraction(s);
+    if (f > 0) e += s.illuminance * (f * c);
+  }
+  return e;
+}
 
 // Whether some direction within the disc's cone from `origin` comes within the sphere (centre,
 // radius): the sphere not behind the point, and the disc's axis passing its centre within its

@@ -14,14 +14,9 @@ double compact_fraction(const Occluders& occluders, const CompactSource& source,
 
 Rgb compact_irradiance(const Occluders& occluders, std::span<const CompactSource> sources,
                        Vec3 origin, Vec3 n, bool penumbra) {
-  Rgb e;
-  for (const CompactSource& s : sources) {
-    const double c = dot(n, s.disc.direction);
-    if (c <= 0) continue;
-    const double f = compact_fraction(occluders, s, origin, penumbra);
-    if (f > 0) e += s.illuminance * (f * c);
-  }
-  return e;
+  return disc_irradiance(sources, n, [&](const CompactSource& s) {
+    return compact_fraction(occluders, s, origin, penumbra);
+  });
 }
 
 }  // namespace relight

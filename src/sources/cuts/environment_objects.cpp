@@ -383,14 +383,7 @@ void EnvironmentObjects::trace_compact(const RoomCompact& compact, const PlacedO
     tbb::parallel_for(tbb::blocked_range<std::size_t>(first, last, 64), [&](const auto& r) {
       for (std::size_t q = r.begin(); q < r.end(); ++q) {
         const Vec3 n = placed.normals[q], x = offset_from_surface(placed.ray_points[q], n);
-        Rgb e;
-        for (std::size_t k = 0; k < count; ++k) {
-          const CompactSource& s = sources[k];
-          const double c = dot(n, s.disc.direction);
-          if (c <= 0) continue;
-          e += s.illuminance * (compact_fraction(occluders, s, x) * c);
-        }
-        store_rgb(e, &object_compact_[3 * q]);
+        store_rgb(compact_irradiance(occluders, sources, x, n), &object_compact_[3 * q]);
       }
     });
   }

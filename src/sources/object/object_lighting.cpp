@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -328,35 +329,26 @@ void ObjectLighting::update(const ObjectLightInputs& in, bool light_changed) {
   std::fill(static_light_.begin(), static_light_.end(), 0.0f);
   for (std::size_t i = 0; i < 3 * vertices; ++i) static_light_[i] = albedo_[i] * in.room[i];
   std::copy(direct_.begin(), direct_.end(), source_.begin());
-  if (!in.extra_room.empty() || !in.extra_objects.empty()) {
-    if (in.extra_room.size() != 3 * receivers || in.extra_objects.size() != 3 * objects) {
-      throw std::invalid_argument("ObjectLighting: the extra direct light has the wrong size");
+  // Direct light other terms computed with the objects in place: 3 per room receiver, then 3
+  // per object vertex, into their solver rows.
+  const auto add_source = [&](std::span<const float> at_room, std::span<const float> at_objects,
+                              const char* what) {
+    if (at_room.empty() && at_objects.empty()) return false;
+    if (at_room.size() != 3 * receivers || at_objects.size() != 3 * objects) {
+      throw std::invalid_argument(std::string("ObjectLighting: the ") + what +
+                                  " direct light has the wrong size");
     }
     for (std::size_t r = 0; r < receivers; ++r) {
       const std::size_t u = r < vertices ? r : r + objects;
-      for (std::size_t k = 0; k < 3; ++k) source_[3 * u + k] += in.extra_room[3 * r + k];
+      for (std::size_t k = 0; k < 3; ++k) source_[3 * u + k] += at_room[3 * r + k];
     }
     for (std::size_t q = 0; q < objects; ++q) {
-      for (std::size_t k = 0; k < 3; ++k) {
-        source_[3 * (vertices + q) + k] += in.extra_objects[3 * q + k];
-      }
+      for (std::size_t k = 0; k < 3; ++k) source_[3 * (vertices + q) + k] += at_objects[3 * q + k];
     }
-  }
-  const bool traced = !in.traced_room.empty() || !in.traced_objects.empty();
-  if (traced) {
-    if (in.traced_room.size() != 3 * receivers || in.traced_objects.size() != 3 * objects) {
-      throw std::invalid_argument("ObjectLighting: the traced direct light has the wrong size");
-    }
-    for (std::size_t r = 0; r < receivers; ++r) {
-      const std::size_t u = r < vertices ? r : r + objects;
-      for (std::size_t k = 0; k < 3; ++k) source_[3 * u + k] += in.traced_room[3 * r + k];
-    }
-    for (std::size_t q = 0; q < objects; ++q) {
-      for (std::size_t k = 0; k < 3; ++k) {
-        source_[3 * (vertices + q) + k] += in.traced_objects[3 * q + k];
-      }
-    }
-  }
+    return true;
+  };
+  add_source(in.extra_room, in.extra_objects, "extra");
+  const bool traced = add_source(in.traced_room, in.traced_objects, "traced");
   if (!direct_only_) {
     apply_object_rows(static_light_, source_, false);
     if (in.glass) add_glass_light(in.glass, source_);

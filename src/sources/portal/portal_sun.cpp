@@ -67,15 +67,9 @@ double sun_disc_fraction(const SunGeometry& g, const PortalSun& sun, Vec3 origin
 
 Rgb sun_irradiance(const SunGeometry& g, std::span<const PortalSun> suns, Vec3 p, Vec3 n,
                    bool penumbra) {
-  Rgb e;
   const Vec3 origin = offset_from_surface(p, n);
-  for (const PortalSun& sun : suns) {
-    const double c = dot(n, sun.disc.direction);
-    if (c <= 0) continue;
-    const double f = sun_disc_fraction(g, sun, origin, penumbra);
-    if (f > 0) e += sun.illuminance * (f * c);
-  }
-  return e;
+  return disc_irradiance(
+      suns, n, [&](const PortalSun& sun) { return sun_disc_fraction(g, sun, origin, penumbra); });
 }
 
 bool sun_may_light_triangle(const SunGeometry& g, std::span<const PortalSun> suns, Vec3 a, Vec3 b,
