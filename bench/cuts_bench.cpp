@@ -46,7 +46,8 @@ const CutSet& cut_set() {
     for (std::size_t k = 0; k < kFieldSamples; ++k) {
       // An object 12–20° across seen from points a little apart, its outline ragged (legs,
       // a backrest) by a wobble of the cap's edge with the azimuth about its axis.
-      const double a = 0.04 * static_cast<double>(k % 8), b = 0.04 * static_cast<double>(k / 8);
+      const std::size_t column = k % 8, row = k / 8;  // a grid of 8 × 8 viewpoints
+      const double a = 0.04 * static_cast<double>(column), b = 0.04 * static_cast<double>(row);
       const Vec3 axis = normalize(Vec3{0.6 + a, 0.3, -0.7 + b});
       const Frame f = frame_from_normal(axis);
       const double half = (6.0 + 0.05 * static_cast<double>(k)) * kPi / 180;
