@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
 
 namespace relight {
 
@@ -13,9 +12,17 @@ DiscDirections disc_directions(const SunDisc& disc) {
     out.directions[static_cast<std::size_t>(i)] =
         sun_disc_direction(disc, std::cos(a), std::sin(a));
   }
-  // The penumbra: equal areas of the disc.
-  const std::vector<Vec3> spiral = sun_disc_spiral(disc, kDiscPenumbraDirections);
-  std::copy(spiral.begin(), spiral.end(), out.directions.begin() + kDiscRimDirections);
+  // The penumbra: equal areas of the disc, each point with its reflection through the centre
+  // (its tangent-plane offset negated).
+  const double golden = kPi * (3 - std::sqrt(5.0));
+  constexpr int kPairs = kDiscPenumbraDirections / 2;
+  for (int i = 0; i < kPairs; ++i) {
+    const double radius = std::sqrt((i + 0.5) / kPairs), a = golden * i;
+    const double x = radius * std::cos(a), y = radius * std::sin(a);
+    const auto k = static_cast<std::size_t>(kDiscRimDirections + 2 * i);
+    out.directions[k] = sun_disc_direction(disc, x, y);
+    out.directions[k + 1] = sun_disc_direction(disc, -x, -y);
+  }
   return out;
 }
 

@@ -3,7 +3,7 @@
 // when its ray from the point meets nothing of `occluders` — the static scene, and the placed
 // objects where they are included — on its way to infinity, and
 //     E = Σ_s E_s,n · f_s · max(0, n · s),
-// f_s the fraction of the disc seen that way (light/disc_visibility.h: 9 directions, 64 in a
+// f_s the fraction of the disc seen that way (light/disc_visibility.h: 9 directions, 80 in a
 // penumbra). The run time evaluates it at receivers and object vertices
 // (sources/cuts/environment_lighting.h, environment_objects.h), `render --direct pixel` at every
 // pixel's hit. Pinned by tests/cli/environment_cuts_test.cpp (the shadow's edge and penumbra of a

@@ -11,7 +11,7 @@
 // state places them.
 //
 //     E = E_sun,n · tint · f · max(0, n · s),
-// f the fraction of the disc seen that way, found by light/disc_visibility.h (9 directions, 64
+// f the fraction of the disc seen that way, found by light/disc_visibility.h (9 directions, 80
 // in a penumbra). Before any ray, a point from which no direction of the disc comes within the
 // portal's bounding sphere gets nothing. Pinned by tests/sources/portal/portal_sun_test.cpp (f at
 // and across a window's edge against the closed form) and tests/render/sun_accuracy_test.cpp
