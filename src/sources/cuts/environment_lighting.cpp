@@ -111,16 +111,15 @@ void EnvironmentLighting::update() {
   }
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, receivers_, 256), [&](const auto& range) {
     for (std::size_t r = range.begin(); r < range.end(); ++r) {
-      const Vec3 n = runtime_.normal(r);
-      Rgb traced;
-      for (std::size_t k = 0; k < sources; ++k) {
-        const CompactSource& s = compact_.sources[k];
-        const double c = dot(n, s.disc.direction);
-        if (c <= 0) continue;
-        const double f = compact_fraction(room, s, offset_from_surface(runtime_.ray_point(r), n));
-        compact_fraction_[r * sources + k] = static_cast<float>(f);
-        traced += s.illuminance * (f * c);
-      }
+      const Vec3 n = runtime_.normal(r), origin = offset_from_surface(runtime_.ray_point(r), n);
+      // Each source's fraction kept for the objects (sources below the surface stay 0).
+      const Rgb traced = disc_irradiance(
+          std::span<const CompactSource>(compact_.sources), n, [&](const CompactSource& s) {
+            const double f = compact_fraction(room, s, origin);
+            const auto k = static_cast<std::size_t>(&s - compact_.sources.data());
+            compact_fraction_[r * sources + k] = static_cast<float>(f);
+            return f;
+          });
       store_rgb(irradiance(r) + traced, &direct_[3 * r]);
       store_rgb(traced, &compact_direct_[3 * r]);
     }
