@@ -16,7 +16,9 @@ double area_element_integral(double u, double v) {
   return std::atan2(u * v, std::sqrt(1.0 + u * u + v * v));
 }
 
-Vec3 face_point(int face, double u, double v) {
+}  // namespace
+
+Vec3 cubemap_face_point(int face, double u, double v) {
   switch (face) {
     case kPosX:
       return {1.0, -v, -u};
@@ -32,6 +34,8 @@ Vec3 face_point(int face, double u, double v) {
       return {-u, -v, -1.0};
   }
 }
+
+namespace {
 
 // Y_lm(centre) · Ω per texel and coefficient (texel-major, sh_count(order) a texel).
 std::vector<double> tabulate_sh_weights(int order, int n) {
@@ -86,7 +90,7 @@ const std::vector<Vec3>& cubemap_texel_directions(int n) {
 }
 
 Vec3 cubemap_direction(CubemapCoord c) {
-  return normalize(face_point(c.face, 2.0 * c.s - 1.0, 2.0 * c.t - 1.0));
+  return normalize(cubemap_face_point(c.face, 2.0 * c.s - 1.0, 2.0 * c.t - 1.0));
 }
 
 Vec3 cubemap_texel_direction(int n, CubemapTexel c) {

@@ -51,6 +51,9 @@ constexpr CubemapTexel cubemap_texel_from_index(int n, std::size_t index) {
           static_cast<int>((index % nn) / n)};
 }
 
+// The unnormalised direction of face point (u, v) ∈ [−1, 1]² (the table above): the face's
+// axis + u · its s axis + v · its t axis.
+Vec3 cubemap_face_point(int face, double u, double v);
 // Unit direction of a face point.
 Vec3 cubemap_direction(CubemapCoord c);
 // Unit direction of a texel centre.

@@ -372,11 +372,16 @@ TEST(DaylightAccuracy, TintScalesFluxExactlyPerChannel) {
   EXPECT_NEAR(r, tint.r, 1e-6 * tint.r);
   EXPECT_NEAR(g, tint.g, 1e-6 * tint.g);
   EXPECT_NEAR(b, tint.b, 1e-6 * tint.b);
-  // And per sensor, wherever light arrives.
+  // And per sensor, wherever light arrives: within 1e-5 of its light, or 1e-9 of the peak's
+  // where a dim sensor's Haar-coded record sums large terms of both signs in float (a ceiling
+  // sensor that sees the window below its horizon: 0.6 lx, ±6e-6 lx).
   for (std::size_t i = 0; i < clear.sensors.size(); ++i) {
     if (clear.sensors[i].r <= 0) continue;
-    ASSERT_NEAR(tinted.sensors[i].r, 0.5 * clear.sensors[i].r, 1e-5 * clear.sensors[i].r) << i;
-    ASSERT_NEAR(tinted.sensors[i].b, 0.9 * clear.sensors[i].b, 1e-5 * clear.sensors[i].b) << i;
+    const double floor = 1e-9 * clear.peak;
+    ASSERT_NEAR(tinted.sensors[i].r, 0.5 * clear.sensors[i].r, 1e-5 * clear.sensors[i].r + floor)
+        << i;
+    ASSERT_NEAR(tinted.sensors[i].b, 0.9 * clear.sensors[i].b, 1e-5 * clear.sensors[i].b + floor)
+        << i;
   }
 }
 

@@ -1,7 +1,6 @@
 #include "sources/portal/portal_direct.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <utility>
@@ -12,6 +11,7 @@
 
 #include "common/progress.h"
 #include "math/cubemap.h"
+#include "math/cubemap_polygon.h"
 #include "math/sampling.h"
 #include "math/sh.h"
 
@@ -21,26 +21,19 @@ namespace {
 
 constexpr std::size_t kChunk = 64;  // receivers per unit of parallel work
 
-// Solid angle of the triangle (a, b, c) seen from the origin (Van Oosterom & Strackee 1983).
-double triangle_solid_angle(Vec3 a, Vec3 b, Vec3 c) {
-  const double la = length(a), lb = length(b), lc = length(c);
-  const double numerator = std::abs(dot(a, cross(b, c)));
-  const double denominator = la * lb * lc + dot(a, b) * lc + dot(a, c) * lb + dot(b, c) * la;
-  return 2 * std::atan2(numerator, denominator);
-}
-
 struct Scratch {
-  Scratch(int n, std::size_t triangles, int bases)
+  Scratch(int n, int bases)
       : cells(cubemap_texel_count(n), 0.0),
         marked(cubemap_texel_count(n), 0),
-        omega(triangles),
-        cdf(triangles),
         sh(static_cast<std::size_t>(bases)),
         basis(static_cast<std::size_t>(bases)) {}
   std::vector<double> cells;
   std::vector<std::uint8_t> marked;
-  std::vector<std::uint32_t> touched;
-  std::vector<double> omega, cdf, sh, basis;
+  std::vector<std::uint32_t> touched, listed;
+  std::vector<Vec3> piece;
+  CubemapPolygonScratch polygon;
+  PieceCones cones;
+  std::vector<double> sh, basis;
   std::vector<std::pair<Vec3, double>> hits;  // of the cell being traced
   CubemapEncodeScratch encode;
 };
@@ -52,27 +45,6 @@ struct ChunkOutput {
   Vec3 flow{0, 0, 0};  // Σ weight · direction: where the light comes from
   std::uint64_t rays = 0, samples = 0;
 };
-
-struct PortalTriangles {
-  std::vector<Vec3> a, b, c;
-};
-
-PortalTriangles portal_triangles(const PreparedMesh& mesh, const PortalGeometry& portal) {
-  PortalTriangles t;
-  for (std::uint32_t id : portal.triangles) {
-    const Triangle& tri = mesh.triangles[id];
-    t.a.push_back(mesh.positions[tri[0]]);
-    t.b.push_back(mesh.positions[tri[1]]);
-    t.c.push_back(mesh.positions[tri[2]]);
-  }
-  return t;
-}
-
-std::uint32_t next_power_of_two(std::uint64_t v) {
-  std::uint32_t p = 1;
-  while (p < v && p < (1u << 30)) p <<= 1;
-  return p;
-}
 
 // The directions through one cubemap cell: k×k jittered sub-cells, each with its solid angle
 // (tabulated for the N·k grid of a face); cells on the window's outline are traced again on
@@ -99,69 +71,49 @@ CellGrid make_cell_grid(int n, int samples_per_cell) {
   return g;
 }
 
-// Step 1 (no rays): which cells the portal may cover, seen from `origin`. Points sampled on
-// the portal (triangle by solid angle, point uniform) mark their cells; each marked cell's
-// eight neighbours (across face edges too) are added, so cells the portal covers only in part
-// are not missed. Returns false when no part of the portal lies in front.
-bool candidate_cells(Vec3 origin, Vec3 normal, std::size_t receiver, const PortalTriangles& tris,
-                     const PortalDirectSettings& s, Scratch& scratch) {
-  const int n = s.face_size;
-  double total = 0;
-  for (std::size_t i = 0; i < tris.a.size(); ++i) {
-    const Vec3 a = tris.a[i] - origin, b = tris.b[i] - origin, c = tris.c[i] - origin;
-    const bool in_front = dot(a, normal) > 0 || dot(b, normal) > 0 || dot(c, normal) > 0;
-    scratch.omega[i] = in_front ? triangle_solid_angle(a, b, c) : 0.0;
-    total += scratch.omega[i];
-    scratch.cdf[i] = total;
+// Whether a direction from a receiver passes through the portal before any other portal: by
+// the pieces' cones where the portal has few edges (and, when the scene has other portals, a
+// ray that must meet this one's triangles first), else by that ray alone.
+struct PortalPass {
+  const TracedScene* traced = nullptr;
+  const std::vector<std::uint8_t>* in_portal = nullptr;
+  bool by_cones = false;
+  bool other_portals = false;
+
+  bool operator()(Vec3 origin, Vec3 dir, const PieceCones& cones, ChunkOutput& out) const {
+    if (by_cones && !cones.contains(dir)) return false;
+    if (by_cones && !other_portals) return true;
+    ++out.rays;
+    const RayHit window = traced->portals.intersect({origin, dir});
+    return window.hit() && (*in_portal)[window.triangle];
   }
-  if (!(total > 0)) return false;
-  const double mean_cell = 4 * kPi / static_cast<double>(cubemap_texel_count(n));
-  const double wanted = std::ceil(4 * total / mean_cell);
-  // No rays here: about 4 points per covered cell (at most 4 per cell of the whole cubemap).
-  const std::uint32_t count = std::min(
-      next_power_of_two(4 * cubemap_texel_count(n)),
-      next_power_of_two(static_cast<std::uint64_t>(std::max<double>(s.min_samples, wanted))));
-  Pcg32 rng(s.seed, receiver);
-  const std::uint32_t scramble_1 = rng.next_u32(), scramble_2 = rng.next_u32();
-  // marked: 1 where a point on the portal was found, 2 for a neighbour only.
-  const auto mark = [&](Vec3 dir, std::uint8_t how) {
-    const std::size_t cell = cubemap_texel_index(n, cubemap_texel(n, dir));
-    if (!scratch.marked[cell]) {
-      scratch.marked[cell] = how;
-      scratch.touched.push_back(static_cast<std::uint32_t>(cell));
-    }
-  };
-  for (std::uint32_t i = 0; i < count; ++i) {
-    const double u1 = unit_interval(van_der_corput(i, scramble_1)) * total;
-    const double u2 = unit_interval(sobol2(i, scramble_2));
-    const auto it = std::upper_bound(scratch.cdf.begin(), scratch.cdf.end(), u1);
-    const std::size_t k = std::min<std::size_t>(static_cast<std::size_t>(it - scratch.cdf.begin()),
-                                                tris.a.size() - 1);
-    if (!(scratch.omega[k] > 0)) continue;
-    const double below = k == 0 ? 0.0 : scratch.cdf[k - 1];
-    const double root = std::sqrt(std::clamp((u1 - below) / scratch.omega[k], 0.0, 1.0));
-    const double b0 = 1 - root, b1 = u2 * root;
-    const Vec3 d = tris.a[k] * b0 + tris.b[k] * b1 + tris.c[k] * (1 - b0 - b1) - origin;
-    if (dot(d, normal) > 0) mark(d, 1);
-  }
-  const std::size_t found = scratch.touched.size();
-  for (std::size_t t = 0; t < found; ++t) {
-    const CubemapTexel c = cubemap_texel_from_index(n, scratch.touched[t]);
-    for (int dj = -1; dj <= 1; ++dj) {
-      for (int di = -1; di <= 1; ++di) {
-        if (di == 0 && dj == 0) continue;
-        mark(cubemap_direction({c.face, (c.i + 0.5 + di) / n, (c.j + 0.5 + dj) / n}), 2);
+};
+
+// Step 1 (no rays): the cells the portal covers seen from `origin`, in front of the receiver's
+// tangent plane (math/cubemap_polygon.h over its convex pieces), each listed once in
+// scratch.touched. Returns false when none.
+bool candidate_cells(Vec3 origin, Vec3 normal, const std::vector<PortalPiece>& pieces, int n,
+                     Scratch& scratch) {
+  for (const PortalPiece& piece : pieces) {
+    scratch.piece.clear();
+    for (const Vec3& v : piece) scratch.piece.push_back(v - origin);
+    scratch.listed.clear();
+    cubemap_polygon_texels(n, scratch.piece, normal, scratch.polygon, scratch.listed);
+    for (const std::uint32_t cell : scratch.listed) {
+      if (!scratch.marked[cell]) {
+        scratch.marked[cell] = 1;
+        scratch.touched.push_back(cell);
       }
     }
   }
-  return true;
+  return !scratch.touched.empty();
 }
 
 // One cell on one sub-cell grid: the directions that pass this portal first and then reach
 // the exterior, as (direction, cos θ · Ω_sub) in scratch.hits.
 void trace_cell(Vec3 origin, Vec3 normal, CubemapTexel c, int n, const SubcellGrid& grid,
-                const std::vector<std::uint8_t>& in_portal, const TracedScene& traced, Pcg32& rng,
-                Scratch& scratch, ChunkOutput& out) {
+                const PortalPass& pass, const TracedScene& traced, Pcg32& rng, Scratch& scratch,
+                ChunkOutput& out) {
   const int k = grid.k, m = n * k;
   scratch.hits.clear();
   for (int b = 0; b < k; ++b) {
@@ -172,9 +124,7 @@ void trace_cell(Vec3 origin, Vec3 normal, CubemapTexel c, int n, const SubcellGr
       const double cos_r = dot(normal, dir);
       if (cos_r <= 0) continue;
       ++out.samples;
-      ++out.rays;
-      const RayHit window = traced.portals.intersect({origin, dir});
-      if (!window.hit() || !in_portal[window.triangle]) continue;
+      if (!pass(origin, dir, scratch.cones, out)) continue;
       ++out.rays;
       if (traced.opaque.occluded({origin, dir})) continue;  // before or past the portal
       scratch.hits.push_back({dir, cos_r * grid.omega[static_cast<std::size_t>(sj) * m + si]});
@@ -182,39 +132,34 @@ void trace_cell(Vec3 origin, Vec3 normal, CubemapTexel c, int n, const SubcellGr
   }
 }
 
-// Step 2: t_c of every candidate cell from k×k jittered directions through it, each traced
-// once through the portal (the first portal triangle it meets must be this portal's) and
-// once against opaque geometry to infinity (visibility and backward occlusion together). A
-// cell wholly inside the window's outline gets ∫_c cos θ dω over its unoccluded part up to
-// the sub-cell quadrature, with no sampling noise from the portal's outline — a sun in the
-// middle of the window lights neighbouring receivers alike. A cell is inside the outline when
-// the directions of its four corners meet the portal (exact for a convex window: the gnomonic
+// Step 2: t_c of every candidate cell from k×k jittered directions through it, each checked
+// to pass through the portal (the first portal it meets must be this one) and traced once
+// against opaque geometry to infinity (visibility and backward occlusion together). A cell
+// wholly inside the window's outline gets ∫_c cos θ dω over its unoccluded part up to the
+// sub-cell quadrature, with no sampling noise from the portal's outline — a sun in the middle
+// of the window lights neighbouring receivers alike. A cell is inside the outline when the
+// directions of its four corners pass the portal (exact for a convex window: the gnomonic
 // projection keeps cells and the window's outline straight-edged); every other cell is traced
 // on a grid kEdgeRefinement times finer, so the outline costs sampling noise only on that
 // finer scale.
 void trace_cells(Vec3 origin, Vec3 normal, std::size_t receiver, const CellGrid& grid,
-                 const std::vector<std::uint8_t>& in_portal, const TracedScene& traced,
-                 const PortalDirectSettings& s, Scratch& scratch, ChunkOutput& out) {
+                 const PortalPass& pass, const TracedScene& traced, const PortalDirectSettings& s,
+                 Scratch& scratch, ChunkOutput& out) {
   Pcg32 rng(s.seed ^ 0x5bd1e995u, receiver);
   std::size_t kept = 0;
   for (const std::uint32_t cell : scratch.touched) {
-    const bool found = scratch.marked[cell] == 1;
     scratch.marked[cell] = 0;
     const CubemapTexel c = cubemap_texel_from_index(grid.n, cell);
     int corners_in = 0;
     for (int corner = 0; corner < 4; ++corner) {
       const int ci = c.i + (corner & 1), cj = c.j + (corner >> 1);
       const Vec3 dir = cubemap_direction({c.face, double(ci) / grid.n, double(cj) / grid.n});
-      ++out.rays;
-      const RayHit window = traced.portals.intersect({origin, dir});
-      corners_in += window.hit() && in_portal[window.triangle] ? 1 : 0;
+      corners_in += pass(origin, dir, scratch.cones, out) ? 1 : 0;
     }
-    // All corners in: inside. Some: the outline crosses. None: the cell holds at most a
-    // corner of the window — finely traced when a point of the portal was found in it,
-    // coarsely (to catch what the search missed) otherwise.
-    const bool fine = (corners_in > 0 && corners_in < 4) || (corners_in == 0 && found);
-    trace_cell(origin, normal, c, grid.n, fine ? grid.fine : grid.coarse, in_portal, traced, rng,
-               scratch, out);
+    // All corners in: inside. Otherwise the outline crosses the cell, or the cell holds a
+    // corner of the window: finely traced.
+    trace_cell(origin, normal, c, grid.n, corners_in == 4 ? grid.coarse : grid.fine, pass, traced,
+               rng, scratch, out);
     double sum = 0;
     for (const auto& [dir, weight] : scratch.hits) {
       sum += weight;
@@ -232,14 +177,14 @@ void trace_cells(Vec3 origin, Vec3 normal, std::size_t receiver, const CellGrid&
 }
 
 // Fills scratch.cells (non-zero cells listed in scratch.touched) and scratch.sh.
-void sample_receiver(Vec3 point, Vec3 normal, std::size_t receiver, const PortalTriangles& tris,
-                     const CellGrid& grid, const std::vector<std::uint8_t>& in_portal,
-                     const TracedScene& traced, const PortalDirectSettings& s, Scratch& scratch,
-                     ChunkOutput& out) {
+void sample_receiver(Vec3 point, Vec3 normal, std::size_t receiver, const PortalGeometry& portal,
+                     const CellGrid& grid, const PortalPass& pass, const TracedScene& traced,
+                     const PortalDirectSettings& s, Scratch& scratch, ChunkOutput& out) {
   std::fill(scratch.sh.begin(), scratch.sh.end(), 0.0);
   const Vec3 origin = offset_from_surface(point, normal);
-  if (!candidate_cells(origin, normal, receiver, tris, s, scratch)) return;
-  trace_cells(origin, normal, receiver, grid, in_portal, traced, s, scratch, out);
+  if (!candidate_cells(origin, normal, portal.pieces, grid.n, scratch)) return;
+  if (pass.by_cones) scratch.cones.reset(origin, portal.pieces);
+  trace_cells(origin, normal, receiver, grid, pass, traced, s, scratch, out);
 }
 
 // What the portal's summary needs of every chunk, the records staying with their rank
@@ -288,18 +233,20 @@ PortalDirect compute_portal_direct(const Receivers& receivers, const std::vector
                                    const PortalDirectSettings& settings, bool progress,
                                    const RankShares* ranks) {
   const int n = settings.face_size;
-  if (n < 1 || (n & (n - 1)) != 0 || settings.sh_order < 1 || settings.samples_per_cell < 1 ||
-      settings.min_samples < 1) {
+  if (n < 1 || (n & (n - 1)) != 0 || settings.sh_order < 1 || settings.samples_per_cell < 1) {
     throw std::invalid_argument("portal direct: bad settings");
   }
   if (ray_points.size() != receivers.size() || skip.size() != receivers.size() ||
       portal.triangles.empty()) {
     throw std::invalid_argument("portal direct: inputs do not match");
   }
-  const PortalTriangles tris = portal_triangles(mesh, portal);
   const CellGrid grid = make_cell_grid(n, settings.samples_per_cell);
   std::vector<std::uint8_t> in_portal(mesh.triangles.size(), 0);
   for (std::uint32_t t : portal.triangles) in_portal[t] = 1;
+  std::size_t edges = 0;
+  for (const PortalPiece& piece : portal.pieces) edges += piece.size();
+  const PortalPass pass{&traced, &in_portal, edges <= settings.max_cone_edges,
+                        traced.portals.triangle_count() > portal.triangles.size()};
   const int bases = sh_count(settings.sh_order);
   const std::size_t rows = receivers.size();
   const std::size_t chunk_count = (rows + kChunk - 1) / kChunk;
@@ -311,7 +258,7 @@ PortalDirect compute_portal_direct(const Receivers& receivers, const std::vector
   result.face_size = n;
   result.sh_columns = Eigen::MatrixXf::Zero(static_cast<Eigen::Index>(rows), bases);
   std::vector<ChunkOutput> chunks(chunk_count);
-  tbb::enumerable_thread_specific<Scratch> scratches(n, tris.a.size(), bases);
+  tbb::enumerable_thread_specific<Scratch> scratches(n, bases);
   Progress bar("portal \"" + portal.name + "\" direct", own.my_receivers(), progress);
   const std::vector<std::size_t> my_chunks = own.my_blocks();
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, my_chunks.size()), [&](const auto& range) {
@@ -323,7 +270,7 @@ PortalDirect compute_portal_direct(const Receivers& receivers, const std::vector
       for (std::size_t r = first; r < last; ++r) {
         scratch.touched.clear();
         if (!skip[r]) {
-          sample_receiver(ray_points[r], receivers.normals[r], r, tris, grid, in_portal, traced,
+          sample_receiver(ray_points[r], receivers.normals[r], r, portal, grid, pass, traced,
                           settings, scratch, out);
         }
         const std::size_t before = out.bytes.size();

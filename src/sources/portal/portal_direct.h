@@ -2,14 +2,15 @@
 // 2009 §4.1.2 and Figure 5(a)): per receiver, a cubemap of the light arriving from the
 // portal's shell through the portal, geometry only — cell c holds
 //   t_c = ∫_{ω ∈ c, through the portal, unoccluded} cos θ_r dω,
-// so that the irradiance from a shell of radiance L is E = Σ_c t_c · L_c. Per receiver:
-// points sampled on the portal (the triangle by its solid angle seen from the receiver, the
-// point uniformly on it; no rays) find the cells the portal covers, widened by their
-// neighbours; then each such cell is integrated over its own directions — about
-// `samples_per_cell` jittered sub-cells (k×k), each direction traced once through the portal
-// (it must meet this portal first) and once against opaque geometry to infinity, which checks
-// the visibility of the portal and the paper's *backward occlusion* (the continuation past
-// the portal must reach the shell) together. Cells whose four corners all see the portal are
+// so that the irradiance from a shell of radiance L is E = Σ_c t_c · L_c. Per receiver: the
+// cells the portal covers, in front of the receiver, are found without rays from the
+// portal's convex pieces (sources/portal/portal_outline.h, math/cubemap_polygon.h); then each
+// such cell is integrated over its own directions — about `samples_per_cell` jittered
+// sub-cells (k×k), each direction checked to pass through the portal (it must meet this
+// portal first: the pieces' cones, and a ray into the portals' BVH where other portals could
+// come first) and traced once against opaque geometry to infinity, which checks the
+// visibility of the portal and the paper's *backward occlusion* (the continuation past the
+// portal must reach the shell) together. Cells whose four corners all see the portal are
 // inside the window's outline and need no more; cells the outline crosses are traced on a
 // 4× finer grid. So a cell inside the window carries no sampling noise from the outline — the
 // sun, which the shell puts in one cell, lights neighbouring receivers alike — and only the
@@ -39,7 +40,10 @@ struct PortalDirectSettings {
   int face_size = 32;
   int sh_order = 6;
   int samples_per_cell = 4;  // directions per cell inside the window (k×k, k = round(√·))
-  int min_samples = 64;      // points on the portal to find its cells, at least
+  // Up to this many edges over its convex pieces, whether a direction passes through the portal
+  // is answered by the pieces' cones (sources/portal/portal_outline.h), past it by a ray into
+  // the portals' BVH (a curved window cut into many triangles); both give the same records.
+  std::size_t max_cone_edges = 64;
   std::uint64_t seed = 1;
 };
 

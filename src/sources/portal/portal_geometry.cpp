@@ -34,6 +34,7 @@ std::vector<PortalGeometry> portal_geometry(const Scene& scene, const PreparedMe
                  "its materials have no triangles with area in the geometry");
     }
     g.centre = g.centre * (1.0 / g.area);
+    g.pieces = portal_pieces(mesh, g.triangles);
     const double n = length(weighted_normal[p]);
     g.normal = n > 1e-6 * g.area ? weighted_normal[p] * (1.0 / n) : Vec3{0, 0, 0};
     // Diameter over the distinct vertices (portals are small: the quadratic loop is cheap

@@ -1,7 +1,8 @@
 // A portal as the precompute and the run time see it (Yue et al.
 // 2009 §3.1): the prepared-mesh triangles of its window materials, its area, the
 // area-weighted centre (the centre of the portal's shell), a unit normal and the largest
-// distance between two of its points (l in the paper's §6 criterion l/(2r) < θ_M).
+// distance between two of its points (l in the paper's §6 criterion l/(2r) < θ_M), and its
+// outline as convex pieces (sources/portal/portal_outline.h).
 #pragma once
 
 #include <cstdint>
@@ -11,12 +12,14 @@
 #include "math/vec3.h"
 #include "scene/mesh_preparation.h"
 #include "scene/scene.h"
+#include "sources/portal/portal_outline.h"
 
 namespace relight {
 
 struct PortalGeometry {
   std::string name;
   std::vector<std::uint32_t> triangles;  // prepared-mesh triangle ids
+  std::vector<PortalPiece> pieces;       // convex planar pieces, their union the triangles'
   double area = 0;                       // m²
   Vec3 centre;                           // area-weighted centroid
   Vec3 normal;          // unit, area-weighted geometric normal (front side); (0,0,0) if they cancel
