@@ -59,6 +59,8 @@ std::vector<float> with_objects(std::span<const float> room, std::size_t vertice
 
 // BRDF samples of the room's reflection per glossy sub-pixel (the image takes 2 × 2 of them).
 constexpr int kGlossySamples = 64;
+// Primary rays per pixel along each axis (shade_vertices' default).
+constexpr int kSamplesPerAxis = 2;
 
 // The windows' light along a ray: the shell of the first portal it crosses, and with
 // `with_suns` the suns' discs (traced exactly, so not in the shell).
@@ -252,8 +254,9 @@ class GlossyShading {
 
   // Per vertex of the shown scene (3 each): the luminance of a glossy vertex (the room's, then
   // the shown objects') toward `eye`, with `samples` BRDF samples of the room's reflection;
-  // NaN elsewhere.
-  std::vector<float> vertex_luminance(Vec3 eye, int samples) const {
+  // NaN elsewhere, and at the vertices `needed` (when given, 1 per vertex) leaves out.
+  std::vector<float> vertex_luminance(Vec3 eye, int samples,
+                                      std::span<const std::uint8_t> needed = {}) const {
     std::vector<float> out(pixels_.positions.size() * 3, std::numeric_limits<float>::quiet_NaN());
     if (glossy_.empty()) return out;
     const std::vector<std::uint32_t>& material = t_.view.scene.vertex_material;
@@ -262,6 +265,7 @@ class GlossyShading {
     tbb::parallel_for(
         tbb::blocked_range<std::size_t>(0, t_.vertex_count + objects, 64), [&](const auto& r) {
           for (std::size_t v = r.begin(); v != r.end(); ++v) {
+            if (!needed.empty() && needed[v] == 0) continue;
             std::optional<MetallicRoughness> brdf;
             Vec3 p, n;
             if (v < t_.vertex_count) {
@@ -391,16 +395,21 @@ std::vector<Rgb> relit_scene_luminance(RelitScene& scene, std::span<const Ray> r
   VertexShadingInput input = vertex_input(scene, view, [&](Vec3 origin, Vec3 dir) {
     return window_luminance(lit, windows, origin, dir, with_suns);
   });
-  // Glossy vertices as seen from the rays' eye (the first ray's origin: one observer).
+  // Glossy vertices as seen from the rays' eye (the first ray's origin: one observer), only
+  // those of the triangles the rays meet.
+  std::vector<RayHit> hits(rays.size());
+  input.tracer.intersect(rays, hits);
   const GlossyShading glossy(scene, view.shown ? &*view.shown : nullptr);
   const std::vector<float> toward_eye =
-      glossy.empty() || rays.empty() ? std::vector<float>{}
-                                     : glossy.vertex_luminance(rays.front().origin, kGlossySamples);
+      glossy.empty() || rays.empty()
+          ? std::vector<float>{}
+          : glossy.vertex_luminance(rays.front().origin, kGlossySamples,
+                                    vertices_hit(hits, input.triangles, input.positions.size()));
   input.vertex_luminance = toward_eye;
   std::vector<Rgb> out(rays.size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rays.size(), 256), [&](const auto& r) {
     for (std::size_t i = r.begin(); i != r.end(); ++i) {
-      out[i] = shade_ray(input, rays[i].origin, rays[i].direction).luminance;
+      out[i] = shade_hit(input, rays[i].origin, rays[i].direction, hits[i]).luminance;
     }
   });
   return out;
@@ -417,15 +426,17 @@ ShadedImages render_relit_scene(RelitScene& scene, const Camera& camera, int wid
     return window_luminance(lit, windows, origin, dir, true);
   };
   if (!pixel_direct) {
-    // Glossy vertices send their own luminance toward the eye.
+    // Glossy vertices send their own luminance toward the eye: only those of the triangles the
+    // image's rays meet are shaded (the capture paper's §V.B), and the rays are traced once.
     const VertexView view = make_vertex_view(scene);
-    const GlossyShading glossy(scene, view.shown ? &*view.shown : nullptr);
-    const std::vector<float> toward_eye =
-        glossy.empty() ? std::vector<float>{}
-                       : glossy.vertex_luminance(pinhole.eye, kGlossySamples);
     VertexShadingInput input = vertex_input(scene, view, background);
+    const GlossyShading glossy(scene, view.shown ? &*view.shown : nullptr);
+    if (glossy.empty()) return shade_vertices(pinhole, input, kSamplesPerAxis);
+    const std::vector<RayHit> hits = trace_primary(pinhole, input.tracer, kSamplesPerAxis);
+    const std::vector<float> toward_eye = glossy.vertex_luminance(
+        pinhole.eye, kGlossySamples, vertices_hit(hits, input.triangles, input.positions.size()));
     input.vertex_luminance = toward_eye;
-    return shade_vertices(pinhole, input);
+    return shade_vertices(pinhole, input, kSamplesPerAxis, hits);
   }
   const ObjectLighting* objects = lit.objects();
   const std::optional<ShownScene> shown =
@@ -459,10 +470,20 @@ ShadedImages render_relit_scene(RelitScene& scene, const Camera& camera, int wid
                                   {}});
 }
 
-std::vector<float> glossy_vertex_luminance(RelitScene& scene, Vec3 eye, int samples) {
+std::vector<float> glossy_vertex_luminance(RelitScene& scene, Vec3 eye, int samples,
+                                           std::span<const std::uint8_t> needed) {
   const VertexView view = make_vertex_view(scene);
   const GlossyShading glossy(scene, view.shown ? &*view.shown : nullptr);
-  return glossy.vertex_luminance(eye, samples);
+  return glossy.vertex_luminance(eye, samples, needed);
+}
+
+std::vector<std::uint8_t> vertices_in_view(RelitScene& scene, const Camera& camera, int width,
+                                           int height) {
+  const VertexView view = make_vertex_view(scene);
+  const VertexShadingInput input = vertex_input(scene, view, {});
+  return vertices_hit(
+      trace_primary(make_pinhole_camera(camera, width, height), input.tracer, kSamplesPerAxis),
+      input.triangles, input.positions.size());
 }
 
 }  // namespace relight

@@ -5,6 +5,7 @@
 // the current shell of their portal.
 #pragma once
 
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -29,6 +30,14 @@ std::vector<Rgb> relit_scene_luminance(RelitScene& scene, std::span<const Ray> r
 // (render/glossy_pixels.h) — and NaN at the other vertices (and at glossy ones seen from
 // behind or of hidden objects): what render_relit_scene interpolates without pixel_direct, and
 // the studio's view-dependent shading (RLGV).
-std::vector<float> glossy_vertex_luminance(RelitScene& scene, Vec3 eye, int samples);
+// With `needed` (1 per vertex), only those vertices are shaded; the others are NaN.
+std::vector<float> glossy_vertex_luminance(RelitScene& scene, Vec3 eye, int samples,
+                                           std::span<const std::uint8_t> needed = {});
+
+// The vertices (of the shown scene, as above) of the triangles render_relit_scene's rays meet
+// without pixel_direct at this camera and size: the ones it shades toward the eye (the capture
+// paper's §V.B visible vertices).
+std::vector<std::uint8_t> vertices_in_view(RelitScene& scene, const Camera& camera, int width,
+                                           int height);
 
 }  // namespace relight

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -10,12 +11,15 @@
 namespace relight {
 
 RaySample shade_ray(const VertexShadingInput& in, Vec3 origin, Vec3 dir) {
+  return shade_hit(in, origin, dir, in.tracer.intersect({origin, dir}));
+}
+
+RaySample shade_hit(const VertexShadingInput& in, Vec3 origin, Vec3 dir, const RayHit& hit) {
   const auto vertex_rgb = [](std::span<const float> values, std::uint32_t v) {
     const std::size_t i = 3 * std::size_t{v};
     return Rgb{values[i], values[i + 1], values[i + 2]};
   };
   RaySample out;
-  const RayHit hit = in.tracer.intersect({origin, dir});
   if (!hit.hit()) {
     if (in.background) {
       out.background = true;
@@ -60,22 +64,65 @@ RaySample shade_ray(const VertexShadingInput& in, Vec3 origin, Vec3 dir) {
   return out;
 }
 
+namespace {
+
+// Primary ray s (row-major in the pixel's samples_per_axis² strata) of pixel (x, y).
+Vec3 primary_direction(const PinholeCamera& camera, int x, int y, int s, int samples_per_axis) {
+  const int row = s / samples_per_axis, column = s % samples_per_axis;
+  return camera.direction(x + (column + 0.5) / samples_per_axis,
+                          y + (row + 0.5) / samples_per_axis);
+}
+
+}  // namespace
+
+std::vector<RayHit> trace_primary(const PinholeCamera& camera, const RayTracer& tracer,
+                                  int samples_per_axis) {
+  const int w = camera.width, spp = samples_per_axis * samples_per_axis;
+  std::vector<RayHit> hits(static_cast<std::size_t>(w) * camera.height * spp);
+  tbb::parallel_for(tbb::blocked_range<int>(0, camera.height), [&](const auto& rows) {
+    for (int y = rows.begin(); y != rows.end(); ++y) {
+      for (int x = 0; x < w; ++x) {
+        for (int s = 0; s < spp; ++s) {
+          hits[(static_cast<std::size_t>(y) * w + x) * spp + s] =
+              tracer.intersect({camera.eye, primary_direction(camera, x, y, s, samples_per_axis)});
+        }
+      }
+    }
+  });
+  return hits;
+}
+
+std::vector<std::uint8_t> vertices_hit(std::span<const RayHit> hits,
+                                       const std::vector<Triangle>& triangles,
+                                       std::size_t vertex_count) {
+  std::vector<std::uint8_t> seen(vertex_count, 0);
+  for (const RayHit& hit : hits) {
+    if (!hit.hit()) continue;
+    for (const std::uint32_t v : triangles[hit.triangle]) seen[v] = 1;
+  }
+  return seen;
+}
+
 ShadedImages shade_vertices(const PinholeCamera& camera, const VertexShadingInput& in,
-                            int samples_per_axis) {
+                            int samples_per_axis, std::span<const RayHit> hits) {
   const int w = camera.width, h = camera.height;
   const double nan = std::numeric_limits<double>::quiet_NaN();
   ShadedImages out{make_image(w, h), make_image(w, h)};
   const int spp = samples_per_axis * samples_per_axis;
+  if (!hits.empty() && hits.size() != static_cast<std::size_t>(w) * h * spp) {
+    throw std::invalid_argument("shade_vertices: hits of other rays");
+  }
   tbb::parallel_for(tbb::blocked_range<int>(0, h), [&](const tbb::blocked_range<int>& rows) {
     for (int y = rows.begin(); y != rows.end(); ++y) {
       for (int x = 0; x < w; ++x) {
         Rgb l_sum, e_sum;
         int covered = 0, escaped = 0;
         for (int s = 0; s < spp; ++s) {
-          const int row = s / samples_per_axis, column = s % samples_per_axis;
-          const double sx = (column + 0.5) / samples_per_axis;
-          const double sy = (row + 0.5) / samples_per_axis;
-          const RaySample sample = shade_ray(in, camera.eye, camera.direction(x + sx, y + sy));
+          const Vec3 dir = primary_direction(camera, x, y, s, samples_per_axis);
+          const RaySample sample =
+              hits.empty() ? shade_ray(in, camera.eye, dir)
+                           : shade_hit(in, camera.eye, dir,
+                                       hits[(static_cast<std::size_t>(y) * w + x) * spp + s]);
           l_sum += sample.luminance;
           if (sample.background) ++escaped;
           if (!sample.surface) continue;

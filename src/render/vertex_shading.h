@@ -7,6 +7,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 
 #include <functional>
 #include <optional>
@@ -52,14 +53,30 @@ struct RaySample {
   Rgb luminance, illuminance;
 };
 RaySample shade_ray(const VertexShadingInput& input, Vec3 origin, Vec3 dir);
+// The same for a ray whose hit in input.tracer is already known.
+RaySample shade_hit(const VertexShadingInput& input, Vec3 origin, Vec3 dir, const RayHit& hit);
 
 struct ShadedImages {
   Image luminance;    // cd/m² per channel; NaN where no front surface (or background) is seen
   Image illuminance;  // lux per channel; NaN likewise
 };
 
-// `samples_per_axis`² stratified primary rays per pixel.
+// `samples_per_axis`² stratified primary rays per pixel. With `hits` (trace_primary's of the
+// same camera, tracer and samples) the rays are not traced again.
 ShadedImages shade_vertices(const PinholeCamera& camera, const VertexShadingInput& input,
-                            int samples_per_axis = 2);
+                            int samples_per_axis = 2, std::span<const RayHit> hits = {});
+
+// The hits of shade_vertices' primary rays in `tracer`, pixel by pixel (rows from the top),
+// sample by sample within a pixel.
+std::vector<RayHit> trace_primary(const PinholeCamera& camera, const RayTracer& tracer,
+                                  int samples_per_axis = 2);
+
+// 1 for each vertex of a triangle that one of `hits` meets: the only vertices an image of those
+// rays interpolates, so the only ones whose view-dependent shading it needs (Iwasaki et al.,
+// Cyberworlds, §V.B, the capture paper: "calculates only the radiances of visible vertices",
+// found there from a buffer of triangle IDs).
+std::vector<std::uint8_t> vertices_hit(std::span<const RayHit> hits,
+                                       const std::vector<Triangle>& triangles,
+                                       std::size_t vertex_count);
 
 }  // namespace relight
