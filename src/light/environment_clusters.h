@@ -50,6 +50,16 @@ struct RgbMoment {
     }
     return *this;
   }
+  // += weight · o: a cut's nodes summed first and turned to irradiance once (n · Σ v M is
+  // Σ v n · M, with one dot product a receiver instead of one a node).
+  RgbMoment& add(const RgbMoment& o, float weight) {
+    for (int i = 0; i < 3; ++i) {
+      r[i] += weight * o.r[i];
+      g[i] += weight * o.g[i];
+      b[i] += weight * o.b[i];
+    }
+    return *this;
+  }
   // n · M per channel: the irradiance the moment's directions give a surface of normal n.
   Rgb irradiance(Vec3 n) const {
     return {n.x * r[0] + n.y * r[1] + n.z * r[2], n.x * g[0] + n.y * g[1] + n.z * g[2],

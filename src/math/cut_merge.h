@@ -76,9 +76,12 @@ void multiply_cuts(const IndexCutsView& cuts, std::size_t cut,
 // out = the product of 1 to 16 value cuts (each non-empty) of the same tree.
 void multiply_cuts(std::span<const ValueCut* const> factors, ValueCut& out);
 
-// Calls visit(heap_node, value) for every node of `cut`, in leaf order (N leaves).
+// Calls visit(heap_node, value) for every node of `cut`, in leaf order (N leaves). Always
+// inlined, so that what a visitor sums stays in registers (the showroom's objects' sums:
+// 67 -> 61 ms a sun frame).
 template <typename Visit>
-void for_each_node(const ValueCut& cut, std::uint32_t leaf_count, const Visit& visit) {
+[[gnu::always_inline]] inline void for_each_node(const ValueCut& cut, std::uint32_t leaf_count,
+                                                 const Visit& visit) {
   std::uint64_t leaf = 0;
   for (std::size_t i = 0; i < cut.height.size(); ++i) {
     const int h = cut.height[i];

@@ -76,11 +76,10 @@ Vec3 EnvironmentLighting::light_direction(const RgbMoment& m, std::uint32_t j) c
 }
 
 Rgb EnvironmentLighting::irradiance(std::size_t r) const {
-  const Vec3 n = runtime_.normal(r);
-  Rgb out{};
+  RgbMoment sum;
   cuts_.self_visibility.for_each_visible(
-      r, [&](std::uint32_t node, int) { out += moments_[node].irradiance(n); });
-  return out;
+      r, [&](std::uint32_t node, int) { sum.add(moments_[node], 1); });
+  return sum.irradiance(runtime_.normal(r));
 }
 
 void EnvironmentLighting::update_objects(const PlacedObjects& placed,

@@ -36,11 +36,11 @@ Vec3 to_object_frame(Vec3 x, Vec3 pivot, const Placement& p) {
 // Σ value · n · M over a cut's nodes.
 Rgb cut_irradiance(const ValueCut& cut, std::uint32_t leaves, std::span<const RgbMoment> m,
                    Vec3 n) {
-  Rgb e{};
-  for_each_node(cut, leaves, [&](std::uint32_t node, float v) {
-    if (v > 0) e += m[node].irradiance(n) * v;
-  });
-  return e;
+  // No test of v > 0: a fifth of a product's nodes are 0 in no order a branch predicts (the
+  // showroom's sun frame: 55 -> 39 ms for its 30 M nodes); values are never negative.
+  RgbMoment sum;
+  for_each_node(cut, leaves, [&](std::uint32_t node, float v) { sum.add(m[node], v); });
+  return sum.irradiance(n);
 }
 
 }  // namespace
