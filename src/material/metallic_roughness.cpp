@@ -190,7 +190,9 @@ void for_each_reflection_node(Vec3 v, double alpha, int points,
   }
 }
 
-void prepare_metallic_roughness_tables() { (void)SpecularAlbedoTable::get(); }
+void prepare_metallic_roughness_tables() {
+  (void)SpecularAlbedoTable::get();
+}
 
 Rgb specular_directional_albedo(const MetallicRoughness& m, double n_dot_v) {
   const auto [a, b] = SpecularAlbedoTable::get().at(n_dot_v, m.roughness);
@@ -210,34 +212,57 @@ Rgb hemispherical_albedo(const MetallicRoughness& m) {
   return {channel(f0.r, m.albedo.r), channel(f0.g, m.albedo.g), channel(f0.b, m.albedo.b)};
 }
 
+MetallicRoughnessToward::MetallicRoughnessToward(const MetallicRoughness& m, Vec3 n, Vec3 v)
+    : n_(n),
+      v_(v),
+      n_dot_v_(dot(n, v)),
+      roughness_(m.roughness),
+      alpha_(alpha_of(m)),
+      f0_(f0_of(m)) {
+  const double a2 = alpha_ * alpha_;
+  masking_v_ = std::sqrt(a2 + (1 - a2) * n_dot_v_ * n_dot_v_);
+  if (n_dot_v_ <= 0 || m.metallic >= 1) return;
+  // The diffuse layer gets what the specular lobe leaves, coupled reciprocally (header):
+  // (1 − E_s(v)) (1 − E_s(l)) / (1 − Ē_s) · (1 − metallic) ρ / π; all but 1 − E_s(l) here.
+  const Rgb ev = specular_directional_albedo(m, n_dot_v_);
+  const std::pair<double, double> means = SpecularAlbedoTable::get().mean(m.roughness);
+  const auto channel = [&](double f0c, double evc, double albedo) {
+    const double mean = f0c * means.first + means.second;
+    return (1 - evc) / (1 - mean) * albedo * (1 - m.metallic) / kPi;
+  };
+  diffuse_ = {channel(f0_.r, ev.r, m.albedo.r), channel(f0_.g, ev.g, m.albedo.g),
+              channel(f0_.b, ev.b, m.albedo.b)};
+}
+
+Rgb MetallicRoughnessToward::specular(Vec3 l) const {
+  const double n_dot_l = dot(n_, l);
+  if (n_dot_l <= 0 || n_dot_v_ <= 0) return {};
+  const Vec3 h = normalize(l + v_);
+  // Height-correlated Smith V = G / (4 |n·l| |n·v|), the viewer's half kept (smith_v).
+  const double a2 = alpha_ * alpha_;
+  const double sum = n_dot_l * masking_v_ + n_dot_v_ * std::sqrt(a2 + (1 - a2) * n_dot_l * n_dot_l);
+  const double visibility = sum > 0 ? 0.5 / sum : 0;
+  return schlick(f0_, dot(v_, h)) * (ggx_d(alpha_, dot(n_, h)) * visibility);
+}
+
+Rgb MetallicRoughnessToward::diffuse(Vec3 l) const {
+  const double n_dot_l = dot(n_, l);
+  if (n_dot_l <= 0 || n_dot_v_ <= 0 || diffuse_ == Rgb{}) return {};
+  const auto [a, b] = SpecularAlbedoTable::get().at(n_dot_l, roughness_);
+  return {(1 - (f0_.r * a + b)) * diffuse_.r, (1 - (f0_.g * a + b)) * diffuse_.g,
+          (1 - (f0_.b * a + b)) * diffuse_.b};
+}
+
 Rgb metallic_roughness_specular(const MetallicRoughness& m, Vec3 n, Vec3 l, Vec3 v) {
-  const double n_dot_l = dot(n, l), n_dot_v = dot(n, v);
-  if (n_dot_l <= 0 || n_dot_v <= 0) return {};
-  const Vec3 h = normalize(l + v);
-  const double alpha = alpha_of(m);
-  return schlick(f0_of(m), dot(v, h)) *
-         (ggx_d(alpha, dot(n, h)) * smith_v(alpha, n_dot_l, n_dot_v));
+  return MetallicRoughnessToward(m, n, v).specular(l);
 }
 
 Rgb metallic_roughness_diffuse(const MetallicRoughness& m, Vec3 n, Vec3 l, Vec3 v) {
-  const double n_dot_l = dot(n, l), n_dot_v = dot(n, v);
-  if (n_dot_l <= 0 || n_dot_v <= 0 || m.metallic >= 1) return {};
-  // The diffuse layer gets what the specular lobe leaves, coupled reciprocally (header):
-  // (1 − E_s(v)) (1 − E_s(l)) / (1 − Ē_s) · (1 − metallic) ρ / π.
-  const Rgb f0 = f0_of(m);
-  const Rgb ev = specular_directional_albedo(m, n_dot_v);
-  const Rgb el = specular_directional_albedo(m, n_dot_l);
-  const std::pair<double, double> means = SpecularAlbedoTable::get().mean(m.roughness);
-  const auto channel = [&](double f0c, double evc, double elc, double albedo) {
-    const double mean = f0c * means.first + means.second;
-    return (1 - evc) * (1 - elc) / (1 - mean) * albedo * (1 - m.metallic) / kPi;
-  };
-  return {channel(f0.r, ev.r, el.r, m.albedo.r), channel(f0.g, ev.g, el.g, m.albedo.g),
-          channel(f0.b, ev.b, el.b, m.albedo.b)};
+  return MetallicRoughnessToward(m, n, v).diffuse(l);
 }
 
 Rgb metallic_roughness_brdf(const MetallicRoughness& m, Vec3 n, Vec3 l, Vec3 v) {
-  return metallic_roughness_specular(m, n, l, v) + metallic_roughness_diffuse(m, n, l, v);
+  return MetallicRoughnessToward(m, n, v)(l);
 }
 
 double metallic_roughness_pdf(const MetallicRoughness& m, Vec3 n, Vec3 l, Vec3 v) {

@@ -42,6 +42,24 @@ struct MetallicRoughness {
   double metallic = 0, roughness = 1;
 };
 
+// f(·, v) of one material at one normal for one viewer, for many l (a vertex's cut or BRDF
+// samples toward the eye): what depends on v alone — F0, α, the masking of v, the diffuse
+// layer's 1 − E_s(v) — is computed once. It owns the formulas above: metallic_roughness_brdf
+// and its layers below are one of these for one l.
+class MetallicRoughnessToward {
+ public:
+  MetallicRoughnessToward(const MetallicRoughness& m, Vec3 n, Vec3 v);
+  Rgb operator()(Vec3 l) const { return specular(l) + diffuse(l); }
+  Rgb specular(Vec3 l) const;
+  Rgb diffuse(Vec3 l) const;
+
+ private:
+  Vec3 n_, v_;
+  double n_dot_v_ = 0, roughness_ = 0, alpha_ = 0, masking_v_ = 0;
+  Rgb f0_;
+  Rgb diffuse_;  // (1 − E_s(v)) (1 − metallic) ρ / (π (1 − Ē_s)); 0 for a metal
+};
+
 // f(l, v) per channel (1/sr) at a surface of unit normal n; l toward the light, v toward the
 // viewer, both unit.
 Rgb metallic_roughness_brdf(const MetallicRoughness& m, Vec3 n, Vec3 l, Vec3 v);

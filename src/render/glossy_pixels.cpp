@@ -11,12 +11,13 @@ Rgb glossy_pixel_radiance(const GlossyPixelScene& scene, const MetallicRoughness
   Pcg32 rng(seed, 0x9e3779b97f4a7c15ull);
   const Vec3 origin = offset_from_surface(p, n);
   Rgb gathered;
+  const MetallicRoughnessToward toward(m, n, v);
   for (int i = 0; i < samples; ++i) {
     const double u0 = rng.next_double(), u1 = rng.next_double(), u2 = rng.next_double();
     const BrdfSample s = sample_metallic_roughness(m, n, v, u0, u1, u2);
     const double cos_l = dot(s.l, n);
     if (s.pdf <= 0 || cos_l <= 0) continue;
-    const Rgb weight = metallic_roughness_brdf(m, n, s.l, v) * (cos_l / s.pdf);
+    const Rgb weight = toward(s.l) * (cos_l / s.pdf);
     const RayHit hit = scene.visible.intersect({origin, s.l});
     if (!hit.hit()) {
       gathered += weight * scene.outside(origin, s.l);

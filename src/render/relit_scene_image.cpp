@@ -243,10 +243,9 @@ class GlossyShading {
       }
     } else if (const EnvironmentLighting* env = lit_.environment(); env != nullptr) {
       const Triangle& tri = objects_->placed().triangles[triangle - t_.triangles.size()];
+      const MetallicRoughnessToward toward(*brdf, n, v);
       for (std::size_t k = 0; k < 3; ++k) {
-        l += env->reflected_object(tri[k], objects_->placed(), [&](Vec3 in) {
-          return metallic_roughness_brdf(*brdf, n, in, v);
-        }) * bary[k];
+        l += env->reflected_object(tri[k], objects_->placed(), toward) * bary[k];
       }
     }
     return l;
@@ -290,9 +289,7 @@ class GlossyShading {
             const double d = length(to_eye);
             if (!(d > 0) || dot(to_eye, n) <= 0) continue;  // seen from behind: as diffuse
             Rgb l = glossy_pixel_radiance(pixels_, *brdf, p, n, to_eye / d, samples, v);
-            const auto weight = [&](Vec3 in) {
-              return metallic_roughness_brdf(*brdf, n, in, to_eye / d);
-            };
+            const MetallicRoughnessToward weight(*brdf, n, to_eye / d);
             // The environment through the cuts (its compact sources are in direct()).
             if (const EnvironmentLighting* env = lit_.environment(); env != nullptr) {
               l += v < t_.vertex_count
@@ -316,7 +313,7 @@ class GlossyShading {
     const EnvironmentLighting* env = lit_.environment();
     if (env == nullptr) return {};
     const Vec3 n = t_.view.scene.receiver_normals[v];
-    return env->reflected(v, [&](Vec3 l) { return metallic_roughness_brdf(brdf, n, l, v_out); });
+    return env->reflected(v, MetallicRoughnessToward(brdf, n, v_out));
   }
 
   // The BRDF of object vertex q (PlacedObjects order) when its material is glossy; none for
