@@ -211,6 +211,41 @@ TEST(CubemapEncoding, SparseDotEqualsDenseDotOfDecodedTo1e6) {
     }
 }
 
+// The pulse sum's fast loop (two entries a step, the last 0-7 apart; indices checked sixteen at
+// a time, the last sixteen overlapping) against the decoded record's dense dot, for every entry
+// count from 1 to 70; and an index out of range anywhere in a record is an InputError before
+// the shell is read.
+TEST(CubemapEncoding, PulseDotOfEveryLengthEqualsDenseDotTo1e6AndChecksEveryIndex) {
+  const int n = 32;
+  Pcg32 rng(31, 32);
+  const std::vector<Rgb> l = random_radiance(n, rng);
+  const ShellCubemap shell = prepare_shell_cubemap(n, l);
+  for (int m = 1; m <= 70; ++m) {
+    std::vector<double> t(cubemap_texel_count(n), 0.0);
+    for (int placed = 0; placed < m;) {
+      double& cell = t[rng.next_u32() % t.size()];
+      if (cell > 0) continue;
+      cell = 0.1 + rng.next_double();
+      ++placed;
+    }
+    std::vector<std::uint8_t> out;
+    ASSERT_EQ(encode(n, t, out, CubemapBasisChoice::kPulse).kind, CubemapCodeKind::kPulse);
+    ASSERT_EQ(parse_cubemap_record(n, out).count, static_cast<std::size_t>(m));
+    const Rgb sparse = dot_receiver_cubemap(out, shell);
+    const Rgb dense = dense_dot(decode_receiver_cubemap(n, out), l);
+    EXPECT_NEAR(sparse.r / dense.r, 1.0, 1e-6) << m;
+    EXPECT_NEAR(sparse.g / dense.g, 1.0, 1e-6) << m;
+    EXPECT_NEAR(sparse.b / dense.b, 1.0, 1e-6) << m;
+    for (const int e : {0, m / 2, m - 1}) {
+      std::vector<std::uint8_t> bad = out;
+      const std::size_t at = 1 + 4 + 2 + 2 * static_cast<std::size_t>(e);  // kind, S, count
+      bad[at] = 0xff;
+      bad[at + 1] = 0xff;  // 65535 ≥ 6·32²
+      EXPECT_THROW(dot_receiver_cubemap(bad, shell), InputError) << m << " " << e;
+    }
+  }
+}
+
 // Against the unquantised vector: pulse |Σ(t̂ − t)L| ≤ S/510·Σ_{t>0}|L|; Haar ≤ S/254·Σ_k|S_k
 // H(L)_k| (Parseval), per channel.
 TEST(CubemapEncoding, DotWithinQuantisationBoundOfOriginal) {
