@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "math/equirect.h"
+#include "math/rgb.h"
 
 namespace relight {
 
@@ -11,10 +12,6 @@ namespace {
 
 constexpr int kSkyGridWidth = 256;
 constexpr double kFloor = 0.01;  // of the mean texel weight, for grids of point values
-
-double rgb_luminance(Rgb c) {
-  return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b;
-}
 
 // The index of the interval of `cdf` (ascending, from 0 to 1) that holds u.
 std::size_t interval(const double* cdf, std::size_t count, double u) {
@@ -38,7 +35,7 @@ EnvironmentSampler::EnvironmentSampler(const Environment& env) {
       const Rgb l = map ? env.map->texels[j * w + i]
                         : env.diffuse_radiance(equirect_texel_direction(
                               width_, height_, static_cast<int>(i), static_cast<int>(j)));
-      weight_[j * w + i] = std::max(0.0, rgb_luminance(l)) * omega;
+      weight_[j * w + i] = std::max(0.0, luminance(l)) * omega;
     }
   }
   double sum = 0;

@@ -10,6 +10,7 @@
 #include "common/input_error.h"
 #include "light/environment_clusters.h"
 #include "light/environment_map_io.h"
+#include "math/rgb.h"
 #include "sources/cuts/compact_light.h"
 
 namespace relight {
@@ -68,10 +69,9 @@ void EnvironmentLighting::set_bounce(bool bounce) {
 }
 
 Vec3 EnvironmentLighting::light_direction(const RgbMoment& m, std::uint32_t j) const {
-  // Rec.709 luminance weights.
-  const Vec3 d{0.2126 * m.r[0] + 0.7152 * m.g[0] + 0.0722 * m.b[0],
-               0.2126 * m.r[1] + 0.7152 * m.g[1] + 0.0722 * m.b[1],
-               0.2126 * m.r[2] + 0.7152 * m.g[2] + 0.0722 * m.b[2]};
+  // The luminance moment (math/rgb.h's weights).
+  const Vec3 d{luminance({m.r[0], m.g[0], m.b[0]}), luminance({m.r[1], m.g[1], m.b[1]}),
+               luminance({m.r[2], m.g[2], m.b[2]})};
   return length(d) > 0 ? normalize(d) : tree_.axis[j];
 }
 
