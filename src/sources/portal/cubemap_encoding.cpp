@@ -223,10 +223,10 @@ std::uint64_t eight_bytes(const std::uint8_t* p) {
 // A pulse record with 2-byte indices (the default N = 32; nearly every record of a room seen
 // through a window), with AVX2 and FMA: the indices checked at once, then two entries a step,
 // their texels in one 8-float register and their levels spread from eight converted at a time
-// by a permute, multiplied-added into four accumulators (two or four measured the same); the
-// record's scale applied once at the end (Σ q·S/255·L = S/255·Σ q·L). Against the generic loop
-// (a range test, a select on the entry's kind and a scale multiply an entry), the window-mini
-// sky frame's sum ran 15.2-15.9 -> 11.8-12.3 ms (docs/performance.md). Confining the lookups
+// by a permute, multiplied-added into four accumulators; the record's scale applied once at the end
+// (Σ q·S/255·L = S/255·Σ q·L). Against the generic loop (a range test, a select on the entry's kind
+// and a scale multiply an entry), the window-mini sky frame's sum ran 15.2-15.9 -> 11.8-12.3
+// ms, 11.3-11.5 with the tail's levels read as below (docs/performance.md). Confining the lookups
 // to 16 kB of the 96 kB shell changed nothing: the loop is bound by its instructions, not the
 // cache. Test: CubemapEncoding.PulseDotOfEveryLengthEqualsDenseDotTo1e6AndChecksEveryIndex.
 __attribute__((target("avx2,fma"))) Rgb pulse_dot16_avx2(const CubemapRecord& rec,
@@ -240,8 +240,7 @@ __attribute__((target("avx2,fma"))) Rgb pulse_dot16_avx2(const CubemapRecord& re
   const __m256i spread[4] = {
       _mm256_setr_epi32(0, 0, 0, 0, 1, 1, 1, 1), _mm256_setr_epi32(2, 2, 2, 2, 3, 3, 3, 3),
       _mm256_setr_epi32(4, 4, 4, 4, 5, 5, 5, 5), _mm256_setr_epi32(6, 6, 6, 6, 7, 7, 7, 7)};
-  // Four accumulators: an FMA waits four cycles on its accumulator, and two of them held the
-  // loop to an entry a cycle.
+  // Four accumulators, as an FMA waits four cycles on its accumulator (two measured the same).
   __m256 acc[4] = {_mm256_setzero_ps(), _mm256_setzero_ps(), _mm256_setzero_ps(),
                    _mm256_setzero_ps()};
   std::size_t e = 0;
