@@ -1,7 +1,6 @@
 #include "engine/transfer_blocks.h"
 
 #include <Imath/half.h>
-#include <cpuid.h>
 #include <immintrin.h>
 
 #include <algorithm>
@@ -52,17 +51,6 @@ __attribute__((target("avx2,f16c,fma"))) void add_weighted_half_block_f16c(
 }
 
 }  // namespace
-
-bool has_f16c() {
-  // F16C is CPUID leaf 1, ECX bit 29 (Intel SDM vol. 2A, CPUID); clang 14 has no
-  // __builtin_cpu_supports("f16c"). AVX2's check includes the OS saving the YMM registers.
-  static const bool has = [] {
-    unsigned eax = 0, ebx = 0, ecx = 0, edx = 0;
-    const bool f16c = __get_cpuid(1, &eax, &ebx, &ecx, &edx) != 0 && (ecx & (1u << 29)) != 0;
-    return f16c && __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-  }();
-  return has;
-}
 
 void add_weighted_half_block(const RltHalf* t, std::size_t k, const float* w, float scale,
                              float (&acc)[3][kBlock], bool f16c) {

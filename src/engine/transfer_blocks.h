@@ -23,6 +23,7 @@
 
 #include <Eigen/Dense>
 
+#include "common/cpu_features.h"
 #include "store/rlt_format.h"
 
 namespace relight {
@@ -101,7 +102,6 @@ float half_scale(float largest_magnitude);
 // (the caller checks has_f16c()) or through a table.
 void add_weighted_half_block(const RltHalf* t, std::size_t k, const float* w, float scale,
                              float (&acc)[3][kBlock], bool f16c);
-bool has_f16c();
 
 // add_weighted_block over block b of `t`, whichever its storage.
 void add_weighted_block(const BlockedTransfer& t, std::size_t b, std::size_t k, const float* w,

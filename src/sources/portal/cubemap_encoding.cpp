@@ -13,6 +13,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "common/cpu_features.h"
 #include "common/input_error.h"
 #include "math/haar.h"
 
@@ -268,11 +269,6 @@ __attribute__((target("avx2,fma"))) Rgb pulse_dot16_avx2(const CubemapRecord& re
   alignas(16) float out[4];
   _mm_store_ps(out, _mm_mul_ps(sum, _mm_set1_ps(scale)));
   return {out[0], out[1], out[2]};
-}
-
-bool has_avx2_fma() {
-  static const bool has = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-  return has;
 }
 
 // `radiance` as floats into `out`, reusing its storage.
