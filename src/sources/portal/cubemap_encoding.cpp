@@ -1,5 +1,5 @@
-// Pulse / per-face Haar encoding of a receiver's portal cubemap, 8-bit quantised, and the
-// run-time sparse dot product (paper 000 §4.1.2, §5, Eq. 7); layout and bounds in
+// Pulse / pulse-run / per-face Haar encoding of a receiver's portal cubemap, 8-bit quantised,
+// and the run-time sparse dot product (paper 000 §4.1.2, §5, Eq. 7); layout and bounds in
 // cubemap_encoding.h.
 #include "sources/portal/cubemap_encoding.h"
 
@@ -46,7 +46,8 @@ float scale_at_least(double x) {
 void to_amplitudes(std::span<double> coefficients, int n) {
   for (std::size_t start = 0; start < coefficients.size(); start += std::size_t(n) * n)
     for (int r = 0; r < n; ++r)
-      for (int c = 0; c < n; ++c) coefficients[start + r * n + c] /= haar2d_support(n, r, c);
+      for (int c = 0; c < n; ++c)
+        coefficients[start + std::size_t(r) * n + c] /= haar2d_support(n, r, c);
 }
 
 // How a record's values are quantised: uint8 against `scale` (pulse S, Haar S₀), or for a Haar
@@ -109,6 +110,45 @@ void write_record(int n, CubemapCodeKind kind, const Quantiser& quantise,
   });
 }
 
+// The runs of the pulse record's kept cells, as [start, end) pairs in `runs`: a gap of at most
+// 2W cells joins its two runs (stored as zero levels, never more bytes than a run's start and
+// length). Returns the levels the runs hold.
+std::size_t find_runs(int n, std::span<const double> cells, const Quantiser& quantise,
+                      std::vector<std::uint32_t>& runs) {
+  const std::size_t join = 2 * cubemap_code_index_bytes(n);
+  runs.clear();
+  std::size_t levels = 0;
+  for_each_kept(cells, quantise, [&](std::size_t k, long) {
+    const auto cell = static_cast<std::uint32_t>(k);
+    if (!runs.empty() && k - runs.back() <= join) {
+      levels += k + 1 - runs.back();
+      runs.back() = cell + 1;
+      return;
+    }
+    runs.push_back(cell);
+    runs.push_back(cell + 1);
+    ++levels;
+  });
+  return levels;
+}
+
+void write_runs_record(int n, const Quantiser& quantise, std::span<const double> cells,
+                       std::span<const std::uint32_t> runs, std::size_t levels,
+                       std::vector<std::uint8_t>& out) {
+  const std::size_t w = cubemap_code_index_bytes(n);
+  out.push_back(static_cast<std::uint8_t>(CubemapCodeKind::kRuns));
+  put_float(out, static_cast<float>(quantise.scale));
+  put_uint(out, static_cast<std::uint32_t>(runs.size() / 2), w);
+  put_uint(out, static_cast<std::uint32_t>(levels), w);
+  for (std::size_t j = 0; j < runs.size(); j += 2) {
+    put_uint(out, runs[j], w);
+    put_uint(out, runs[j + 1] - runs[j], w);
+  }
+  for (std::size_t j = 0; j < runs.size(); j += 2)
+    for (std::uint32_t k = runs[j]; k < runs[j + 1]; ++k)
+      out.push_back(static_cast<std::uint8_t>(quantise(k, cells[k])));
+}
+
 [[noreturn]] void bad_record(const std::string& reason) {
   throw InputError("cubemap record: " + reason);
 }
@@ -140,6 +180,30 @@ void for_each_entry(const CubemapRecord& rec, int n, F&& visit) {
     previous = k;
     visit(k, value(k, rec.values[e]));
   }
+}
+
+// Checks a run of a run record: it starts at or after `end` (the previous run's end) and holds
+// `length` of the `left` levels not yet taken; `limit` cells in all.
+void check_run(std::size_t start, std::size_t length, std::size_t end, std::size_t left,
+               std::size_t limit) {
+  if (start < end || length == 0 || length > left || start + length > limit)
+    bad_record("run out of range, overlapping or beyond the record's levels");
+}
+
+// Calls visit(cell, level) for each cell of a run record, checking its runs.
+template <class F>
+void for_each_run_cell(const CubemapRecord& rec, int n, F&& visit) {
+  const std::size_t w = cubemap_code_index_bytes(n), limit = cell_count(n);
+  std::size_t end = 0, used = 0;
+  for (std::size_t j = 0; j < rec.runs; ++j) {
+    const std::size_t start = get_uint(rec.indices.data() + 2 * j * w, w);
+    const std::size_t length = get_uint(rec.indices.data() + (2 * j + 1) * w, w);
+    check_run(start, length, end, rec.count - used, limit);
+    for (std::size_t i = 0; i < length; ++i) visit(start + i, rec.values[used + i]);
+    used += length;
+    end = start + length;
+  }
+  if (used != rec.count) bad_record("runs hold fewer cells than the record's levels");
 }
 
 // The hot loop: Σ table[k]·value(k, q) over the entries, in float: a texel is one 4-float
@@ -176,10 +240,15 @@ Rgb sparse_dot(const CubemapRecord& rec, const std::vector<ShellTexel>& table,
   return {sum[0], sum[1], sum[2]};
 }
 
+// The 16-bit word at `p` (little-endian, as x86).
+std::uint16_t word16(const std::uint8_t* p) {
+  std::uint16_t v;
+  std::memcpy(&v, p, 2);
+  return v;
+}
+
 std::uint16_t index16(const std::uint8_t* idx, std::size_t e) {
-  std::uint16_t k;
-  std::memcpy(&k, idx + 2 * e, 2);  // little-endian, as x86
-  return k;
+  return word16(idx + 2 * e);
 }
 
 // The largest of `count` little-endian uint16 indices, sixteen at a time: checked before the
@@ -271,6 +340,72 @@ __attribute__((target("avx2,fma"))) Rgb pulse_dot16_avx2(const CubemapRecord& re
   return {out[0], out[1], out[2]};
 }
 
+// Σ of eight floats.
+__attribute__((target("avx2"))) float horizontal_sum(__m256 v) {
+  __m128 s = _mm_add_ps(_mm256_castps256_ps128(v), _mm256_extractf128_ps(v, 1));
+  s = _mm_add_ps(s, _mm_movehl_ps(s, s));
+  s = _mm_add_ss(s, _mm_movehdup_ps(s));
+  return _mm_cvtss_f32(s);
+}
+
+// Σ over a run record's cells of level × the shell's cells, per channel (the record's scale not
+// applied), with AVX2 and FMA for 2-byte starts and lengths: `runs` (start, length) pairs at
+// `table`, then `levels` levels. Each run eight cells at a time: their levels converted at once
+// and multiplied-added with eight consecutive floats of each of the shell's planes (no lookup,
+// no permute). A run's last 1-7 levels are the eight bytes that end them shifted down (the
+// record's header lies before its levels, so the bytes read stay inside it), and the planes'
+// padding keeps the cells read past a run that ends the cubemap inside (their levels are 0). The
+// whole eights and the last few go to separate sums. Measured on window-mini's records, one
+// core, through dot_receiver_cubemap (docs/performance.md): 11.3-11.6 ms against 13.5 for the
+// same cells as pulse records, 8.7 ms by blocks through add_receiver_cubemaps (3.5 of it
+// streaming and parsing the records). Taking each run's first sixteen cells as two eights
+// without a branch on its length, to spare the mispredicted loop exits, ran slower (15.0 ms).
+// Test:
+// CubemapEncoding.RunDotOfEveryLengthAndGapEqualsDenseDotTo1e6AndChecksEveryRun.
+__attribute__((target("avx2,fma"))) inline Rgb runs_sum16_avx2(const std::uint8_t* table,
+                                                               std::size_t runs,
+                                                               const std::uint8_t* level,
+                                                               std::size_t levels,
+                                                               const ShellCubemap& shell) {
+  const std::size_t limit = cell_count(shell.n);
+  const float* plane[3] = {shell.planes[0].data(), shell.planes[1].data(), shell.planes[2].data()};
+  __m256 whole[3] = {_mm256_setzero_ps(), _mm256_setzero_ps(), _mm256_setzero_ps()};
+  __m256 last[3] = {_mm256_setzero_ps(), _mm256_setzero_ps(), _mm256_setzero_ps()};
+  std::size_t end = 0, used = 0;
+  for (std::size_t j = 0; j < runs; ++j) {
+    const std::size_t start = word16(table + 4 * j), length = word16(table + 4 * j + 2);
+    check_run(start, length, end, levels - used, limit);
+    std::size_t i = 0;
+    for (; i + 8 <= length; i += 8) {
+      const __m256 q = levels_as_floats(eight_bytes(level + i));
+      for (int c = 0; c < 3; ++c)
+        whole[c] = _mm256_fmadd_ps(q, _mm256_loadu_ps(plane[c] + start + i), whole[c]);
+    }
+    if (i < length) {
+      const __m256 q =
+          levels_as_floats(eight_bytes(level + length - 8) >> (8 * (8 - (length - i))));
+      for (int c = 0; c < 3; ++c)
+        last[c] = _mm256_fmadd_ps(q, _mm256_loadu_ps(plane[c] + start + i), last[c]);
+    }
+    level += length;
+    used += length;
+    end = start + length;
+  }
+  if (used != levels) bad_record("runs hold fewer cells than the record's levels");
+  return {horizontal_sum(_mm256_add_ps(whole[0], last[0])),
+          horizontal_sum(_mm256_add_ps(whole[1], last[1])),
+          horizontal_sum(_mm256_add_ps(whole[2], last[2]))};
+}
+
+// The same on any processor and index width.
+Rgb runs_dot(const CubemapRecord& rec, const ShellCubemap& shell) {
+  float sum[3] = {0, 0, 0};
+  for_each_run_cell(rec, shell.n, [&](std::size_t k, std::uint8_t q) {
+    for (int c = 0; c < 3; ++c) sum[c] += static_cast<float>(q) * shell.planes[c][k];
+  });
+  return {sum[0], sum[1], sum[2]};
+}
+
 // `radiance` as floats into `out`, reusing its storage.
 void to_texels(const std::vector<Rgb>& radiance, std::vector<ShellTexel>& out) {
   out.resize(radiance.size());
@@ -302,7 +437,7 @@ EncodedReceiver encode_receiver_cubemap(int n, std::span<const double> cells,
   EncodedReceiver result;
   if (vmax == 0.0) {
     out.push_back(static_cast<std::uint8_t>(CubemapCodeKind::kEmpty));
-    result.bytes = result.pulse_bytes = result.haar_bytes = 1;
+    result.bytes = result.pulse_bytes = result.haar_bytes = result.runs_bytes = 1;
     return result;
   }
 
@@ -331,21 +466,39 @@ EncodedReceiver encode_receiver_cubemap(int n, std::span<const double> cells,
   haar.detail_scale = scale_at_least(detail_max);
   const std::size_t haar_count = for_each_kept(amp, haar, none);
 
+  const std::size_t run_levels = find_runs(n, cells, pulse, scratch.runs);
   result.pulse_bytes = cubemap_record_bytes(n, CubemapCodeKind::kPulse, pulse_count);
   result.haar_bytes = cubemap_record_bytes(n, CubemapCodeKind::kHaar, haar_count);
-  const bool use_haar =
-      options.choice == CubemapBasisChoice::kHaar ||
-      (options.choice == CubemapBasisChoice::kSmaller && result.haar_bytes < result.pulse_bytes);
+  result.runs_bytes =
+      cubemap_record_bytes(n, CubemapCodeKind::kRuns, run_levels, scratch.runs.size() / 2);
+  CubemapCodeKind kind = CubemapCodeKind::kRuns;
+  switch (options.choice) {
+    case CubemapBasisChoice::kSmaller:
+      if (result.pulse_bytes < result.runs_bytes) kind = CubemapCodeKind::kPulse;
+      if (result.haar_bytes < std::min(result.pulse_bytes, result.runs_bytes))
+        kind = CubemapCodeKind::kHaar;
+      break;
+    case CubemapBasisChoice::kPulse:
+      kind = CubemapCodeKind::kPulse;
+      break;
+    case CubemapBasisChoice::kHaar:
+      kind = CubemapCodeKind::kHaar;
+      break;
+    case CubemapBasisChoice::kRuns:
+      break;
+  }
   const std::size_t before = out.size();
-  if (use_haar) {
-    result.kind = CubemapCodeKind::kHaar;
+  result.kind = kind;
+  if (kind == CubemapCodeKind::kHaar) {
     result.scale = static_cast<float>(haar.scale);
     result.detail_scale = static_cast<float>(haar.detail_scale);
-    write_record(n, result.kind, haar, amp, haar_count, out);
-  } else {
-    result.kind = CubemapCodeKind::kPulse;
+    write_record(n, kind, haar, amp, haar_count, out);
+  } else if (kind == CubemapCodeKind::kPulse) {
     result.scale = static_cast<float>(pulse.scale);
-    write_record(n, result.kind, pulse, cells, pulse_count, out);
+    write_record(n, kind, pulse, cells, pulse_count, out);
+  } else {
+    result.scale = static_cast<float>(pulse.scale);
+    write_runs_record(n, pulse, cells, scratch.runs, run_levels, out);
   }
   result.bytes = out.size() - before;
   return result;
@@ -365,10 +518,26 @@ CubemapRecord parse_cubemap_record(int n, std::span<const std::uint8_t> bytes) {
   const std::uint8_t kind = bytes[0];
   if (kind == static_cast<std::uint8_t>(CubemapCodeKind::kEmpty)) return rec;
   if (kind != static_cast<std::uint8_t>(CubemapCodeKind::kPulse) &&
-      kind != static_cast<std::uint8_t>(CubemapCodeKind::kHaar))
+      kind != static_cast<std::uint8_t>(CubemapCodeKind::kHaar) &&
+      kind != static_cast<std::uint8_t>(CubemapCodeKind::kRuns))
     bad_record("unknown kind " + std::to_string(kind));
   rec.kind = static_cast<CubemapCodeKind>(kind);
   const std::size_t w = cubemap_code_index_bytes(n);
+  if (rec.kind == CubemapCodeKind::kRuns) {
+    if (bytes.size() < 1 + 4 + 2 * w) bad_record("truncated header");
+    rec.scale = std::bit_cast<float>(get_uint(bytes.data() + 1, 4));
+    if (!(rec.scale > 0.0f && std::isfinite(rec.scale)))
+      bad_record("scale not positive and finite");
+    rec.runs = get_uint(bytes.data() + 5, w);
+    rec.count = get_uint(bytes.data() + 5 + w, w);
+    if (rec.count == 0 || rec.count > cell_count(n)) bad_record("level count out of range");
+    if (rec.runs == 0 || rec.runs > rec.count) bad_record("run count out of range");
+    rec.bytes = cubemap_record_bytes(n, rec.kind, rec.count, rec.runs);
+    if (bytes.size() < rec.bytes) bad_record("truncated runs");
+    rec.indices = bytes.subspan(5 + 2 * w, 2 * w * rec.runs);
+    rec.values = bytes.subspan(5 + 2 * w + 2 * w * rec.runs, rec.count);
+    return rec;
+  }
   const std::size_t scales = rec.kind == CubemapCodeKind::kHaar ? 8 : 4;
   if (bytes.size() < 1 + scales + w) bad_record("truncated header");
   rec.scale = std::bit_cast<float>(get_uint(bytes.data() + 1, 4));
@@ -395,6 +564,9 @@ std::size_t decode_receiver_cubemap(int n, std::span<const std::uint8_t> bytes,
   std::fill(cells.begin(), cells.end(), 0.0);
   if (rec.kind == CubemapCodeKind::kPulse) {
     for_each_entry(rec, n, [&](std::size_t k, double t) { cells[k] = t; });
+  } else if (rec.kind == CubemapCodeKind::kRuns) {
+    const double step = rec.scale / kPulseLevels;
+    for_each_run_cell(rec, n, [&](std::size_t k, std::uint8_t q) { cells[k] = q * step; });
   } else if (rec.kind == CubemapCodeKind::kHaar) {
     const std::size_t nn = std::size_t(n) * n;
     for_each_entry(rec, n, [&](std::size_t k, double a) {
@@ -425,9 +597,17 @@ void prepare_shell_cubemap(int n, std::span<const Rgb> radiance, ShellCubemap& s
   const std::size_t nn = std::size_t(n) * n;
   for (std::size_t start = 0; start < shell.haar.size(); start += nn)
     for (int r = 0; r < n; ++r)
-      for (int c = 0; c < n; ++c) shell.haar[start + r * n + c] *= haar2d_support(n, r, c);
+      for (int c = 0; c < n; ++c)
+        shell.haar[start + std::size_t(r) * n + c] *= haar2d_support(n, r, c);
   to_texels(shell.cells, shell.cells_float);
   to_texels(shell.haar, shell.haar_float);
+  for (std::vector<float>& plane : shell.planes)
+    plane.assign(radiance.size() + ShellCubemap::kPlanePadding, 0.0f);
+  for (std::size_t k = 0; k < radiance.size(); ++k) {
+    shell.planes[0][k] = static_cast<float>(radiance[k].r);
+    shell.planes[1][k] = static_cast<float>(radiance[k].g);
+    shell.planes[2][k] = static_cast<float>(radiance[k].b);
+  }
 }
 
 ShellCubemap prepare_shell_cubemap(int n, std::span<const Rgb> radiance) {
@@ -440,6 +620,13 @@ Rgb dot_receiver_cubemap(std::span<const std::uint8_t> bytes, const ShellCubemap
   const CubemapRecord rec = parse_cubemap_record(shell.n, bytes);
   if (rec.kind == CubemapCodeKind::kEmpty) return {};
   const EntryValue value = entry_value(rec, shell.n);
+  if (rec.kind == CubemapCodeKind::kRuns) {
+    const Rgb sum =
+        cubemap_code_index_bytes(shell.n) == 2 && has_avx2_fma()
+            ? runs_sum16_avx2(rec.indices.data(), rec.runs, rec.values.data(), rec.count, shell)
+            : runs_dot(rec, shell);
+    return sum * static_cast<double>(static_cast<float>(value.scale));
+  }
   const std::vector<ShellTexel>& table =
       rec.kind == CubemapCodeKind::kPulse ? shell.cells_float : shell.haar_float;
   if (rec.kind == CubemapCodeKind::kPulse && cubemap_code_index_bytes(shell.n) == 2 &&
@@ -449,11 +636,78 @@ Rgb dot_receiver_cubemap(std::span<const std::uint8_t> bytes, const ShellCubemap
                                                 : sparse_dot<4>(rec, table, value);
 }
 
+namespace {
+
+// Record i of a block: bytes [offsets[i], offsets[i + 1]) of `records`, checked.
+std::span<const std::uint8_t> record_of(std::span<const std::uint8_t> records,
+                                        std::span<const std::uint64_t> offsets, std::size_t i) {
+  if (offsets[i + 1] > records.size() || offsets[i] >= offsets[i + 1])
+    bad_record("offsets out of order or beyond the records");
+  return records.subspan(offsets[i], offsets[i + 1] - offsets[i]);
+}
+
+// add_receiver_cubemaps with AVX2 and FMA and 2-byte indices: a run record parsed and summed
+// here (runs_sum16_avx2 inlined), the other kinds through dot_receiver_cubemap. Through
+// dot_receiver_cubemap, each record's parse and checks in parse_cubemap_record took half of
+// window-mini's records' sum; with the loop here 9.2 → 8.7 ms on one core.
+__attribute__((target("avx2,fma"))) void add_records_avx2(std::span<const std::uint8_t> records,
+                                                          std::span<const std::uint64_t> offsets,
+                                                          const ShellCubemap& shell,
+                                                          std::span<float> red,
+                                                          std::span<float> green,
+                                                          std::span<float> blue) {
+  const std::size_t count = offsets.size() - 1;
+  const std::size_t limit = cell_count(shell.n);
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::span<const std::uint8_t> record = record_of(records, offsets, i);
+    const std::uint8_t* p = record.data();
+    const std::size_t size = record.size();
+    if (p[0] == static_cast<std::uint8_t>(CubemapCodeKind::kEmpty)) continue;
+    if (p[0] == static_cast<std::uint8_t>(CubemapCodeKind::kRuns) && size >= 9) {
+      float scale;
+      std::memcpy(&scale, p + 1, 4);
+      const std::size_t runs = word16(p + 5), levels = word16(p + 7);
+      if (!(scale > 0.0f && std::isfinite(scale)) || levels == 0 || levels > limit || runs == 0 ||
+          runs > levels || 9 + 4 * runs + levels > size)
+        parse_cubemap_record(shell.n, {p, size});  // throws, saying why
+      const Rgb e = runs_sum16_avx2(p + 9, runs, p + 9 + 4 * runs, levels, shell);
+      const float step = static_cast<float>(scale / kPulseLevels);
+      red[i] += static_cast<float>(e.r) * step;
+      green[i] += static_cast<float>(e.g) * step;
+      blue[i] += static_cast<float>(e.b) * step;
+      continue;
+    }
+    const Rgb e = dot_receiver_cubemap({p, size}, shell);
+    red[i] += static_cast<float>(e.r);
+    green[i] += static_cast<float>(e.g);
+    blue[i] += static_cast<float>(e.b);
+  }
+}
+
+}  // namespace
+
+void add_receiver_cubemaps(std::span<const std::uint8_t> records,
+                           std::span<const std::uint64_t> offsets, const ShellCubemap& shell,
+                           std::span<float> red, std::span<float> green, std::span<float> blue) {
+  const std::size_t count = offsets.empty() ? 0 : offsets.size() - 1;
+  if (red.size() < count || green.size() < count || blue.size() < count)
+    throw std::invalid_argument("add_receiver_cubemaps: a sum for each record");
+  if (count > 0 && cubemap_code_index_bytes(shell.n) == 2 && has_avx2_fma())
+    return add_records_avx2(records, offsets, shell, red, green, blue);
+  for (std::size_t i = 0; i < count; ++i) {
+    const Rgb e = dot_receiver_cubemap(record_of(records, offsets, i), shell);
+    red[i] += static_cast<float>(e.r);
+    green[i] += static_cast<float>(e.g);
+    blue[i] += static_cast<float>(e.b);
+  }
+}
+
 void add_receiver(CubemapEncodingStats& stats, const EncodedReceiver& receiver) {
   ++stats.receivers;
   stats.bytes += receiver.bytes;
   stats.all_pulse_bytes += receiver.pulse_bytes;
   stats.all_haar_bytes += receiver.haar_bytes;
+  stats.all_runs_bytes += receiver.runs_bytes;
   switch (receiver.kind) {
     case CubemapCodeKind::kEmpty:
       ++stats.empty;
@@ -466,7 +720,26 @@ void add_receiver(CubemapEncodingStats& stats, const EncodedReceiver& receiver) 
       ++stats.haar;
       stats.haar_bytes += receiver.bytes;
       break;
+    case CubemapCodeKind::kRuns:
+      ++stats.runs;
+      stats.runs_bytes += receiver.bytes;
+      break;
   }
+}
+
+void add_stats(CubemapEncodingStats& sum, const CubemapEncodingStats& part) {
+  sum.receivers += part.receivers;
+  sum.empty += part.empty;
+  sum.pulse += part.pulse;
+  sum.haar += part.haar;
+  sum.runs += part.runs;
+  sum.bytes += part.bytes;
+  sum.pulse_bytes += part.pulse_bytes;
+  sum.haar_bytes += part.haar_bytes;
+  sum.runs_bytes += part.runs_bytes;
+  sum.all_pulse_bytes += part.all_pulse_bytes;
+  sum.all_haar_bytes += part.all_haar_bytes;
+  sum.all_runs_bytes += part.all_runs_bytes;
 }
 
 CubemapEncodingStats cubemap_encoding_stats(int n, std::span<const std::uint8_t> records) {
@@ -479,7 +752,7 @@ CubemapEncodingStats cubemap_encoding_stats(int n, std::span<const std::uint8_t>
     add_receiver(stats, r);
     offset += rec.bytes;
   }
-  stats.all_pulse_bytes = stats.all_haar_bytes = 0;
+  stats.all_pulse_bytes = stats.all_haar_bytes = stats.all_runs_bytes = 0;
   return stats;
 }
 

@@ -213,18 +213,6 @@ void share_summaries(const RankShares& ranks, std::vector<ChunkSummary>& summari
       });
 }
 
-void add_stats(CubemapEncodingStats& sum, const CubemapEncodingStats& s) {
-  sum.receivers += s.receivers;
-  sum.empty += s.empty;
-  sum.pulse += s.pulse;
-  sum.haar += s.haar;
-  sum.bytes += s.bytes;
-  sum.pulse_bytes += s.pulse_bytes;
-  sum.haar_bytes += s.haar_bytes;
-  sum.all_pulse_bytes += s.all_pulse_bytes;
-  sum.all_haar_bytes += s.all_haar_bytes;
-}
-
 }  // namespace
 
 PortalDirect compute_portal_direct(const Receivers& receivers, const std::vector<Vec3>& ray_points,
@@ -276,7 +264,11 @@ PortalDirect compute_portal_direct(const Receivers& receivers, const std::vector
         const std::size_t before = out.bytes.size();
         if (scratch.touched.empty()) {
           out.bytes.push_back(static_cast<std::uint8_t>(CubemapCodeKind::kEmpty));
-          out.encoded.push_back({CubemapCodeKind::kEmpty, 1, 1, 1, 0, 0});
+          out.encoded.push_back({.kind = CubemapCodeKind::kEmpty,
+                                 .bytes = 1,
+                                 .pulse_bytes = 1,
+                                 .haar_bytes = 1,
+                                 .runs_bytes = 1});
         } else {
           out.encoded.push_back(
               encode_receiver_cubemap(n, scratch.cells, {}, out.bytes, scratch.encode));

@@ -307,14 +307,9 @@ void PortalSetLighting::add_block(std::size_t b, bool include_direct,
     const PortalLighting& l = portals_[p];
     if (!l.active) continue;
     const PortalTransferView& v = transfer_.portals[p];
-    for (std::size_t i = 0; i < count; ++i) {
-      const std::uint64_t at = v.offsets[base + i];
-      const Rgb e =
-          dot_receiver_cubemap(v.records.subspan(at, v.offsets[base + i + 1] - at), l.cubemap);
-      acc[0][i] += static_cast<float>(e.r);
-      acc[1][i] += static_cast<float>(e.g);
-      acc[2][i] += static_cast<float>(e.b);
-    }
+    add_receiver_cubemaps(v.records, v.offsets.subspan(base, count + 1), l.cubemap,
+                          std::span(acc[0], count), std::span(acc[1], count),
+                          std::span(acc[2], count));
     add_weighted_block(v.indirect, b, kp, l.weights.data(), acc);
   }
   if (sun_direct_.empty()) return;
