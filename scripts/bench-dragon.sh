@@ -9,6 +9,7 @@
 # through `make bench`.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/rlt-cache.sh
 scene=${1:-dragon-room}
 build=${BUILD:-build}
 out="$build/bench"
@@ -18,7 +19,7 @@ if [[ ! -f "$out/dragon_vrip.ply" ]]; then
   mv "$out/dragon_vrip.ply.tmp" "$out/dragon_vrip.ply"
 fi
 cp "bench/$scene.json" "$out/$scene.json"
-if [[ ! -f "$out/$scene.rlt" || "bench/$scene.json" -nt "$out/$scene.rlt" ]]; then
+if needs_precompute "bench/$scene.json" "$out/$scene.rlt"; then
   "$build/relight" precompute "$out/$scene.json" -o "$out/$scene.rlt"
 fi
 sky=()

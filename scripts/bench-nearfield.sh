@@ -7,6 +7,7 @@
 #   scripts/bench-nearfield.sh [dragon|church]   (default: both)
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/rlt-cache.sh
 build=${BUILD:-build}
 out="$build/bench"
 face=${FACE_SIZE:-8}
@@ -26,7 +27,7 @@ run() {  # label, scene, arguments...
 bench_scene() {  # scene, epsilon1 epsilon2 epsilon3, far-state JSON
   local scene=$1 e1=$2 e2=$3 e3=$4 far=$5
   cp "bench/nearfield-$scene.json" "$out/nearfield-$scene.json"
-  if [[ ! -f "$out/nearfield-$scene.rlt" || "bench/nearfield-$scene.json" -nt "$out/nearfield-$scene.rlt" ]]; then
+  if needs_precompute "bench/nearfield-$scene.json" "$out/nearfield-$scene.rlt"; then
     "$build/relight" precompute "$out/nearfield-$scene.json" -o "$out/nearfield-$scene.rlt" --no-progress
   fi
   run "$scene truth" "$scene" --method truth

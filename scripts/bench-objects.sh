@@ -6,13 +6,14 @@
 # all 12 moving. One JSON line per run, prefixed with its label.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/rlt-cache.sh
 build=${BUILD:-build}
 out="$build/bench"
 frames=${FRAMES:-20}
 mkdir -p "$out"
 photometry=$(cd ../shared/data/photometry/photometric-viewer/ies && pwd)
 sed "s|PHOTOMETRY|$photometry|g" bench/furnished-office.json > "$out/furnished-office.json"
-if [[ ! -f "$out/furnished-office.rlt" || bench/furnished-office.json -nt "$out/furnished-office.rlt" ]]; then
+if needs_precompute bench/furnished-office.json "$out/furnished-office.rlt"; then
   "$build/relight" precompute "$out/furnished-office.json" -o "$out/furnished-office.rlt" --no-progress
 fi
 run() {  # label, arguments...

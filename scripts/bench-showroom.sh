@@ -9,11 +9,12 @@
 # run, prefixed with its label.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/rlt-cache.sh
 build=${BUILD:-build}
 out="$build/bench"
 frames=${FRAMES:-20}
 mkdir -p "$out"
-if [[ ! -f "$out/furniture-showroom.rlt" || bench/furniture-showroom.json -nt "$out/furniture-showroom.rlt" ]]; then
+if needs_precompute bench/furniture-showroom.json "$out/furniture-showroom.rlt"; then
   "$build/relight" precompute bench/furniture-showroom.json -o "$out/furniture-showroom.rlt" --no-progress
 fi
 run() {  # label, arguments...
