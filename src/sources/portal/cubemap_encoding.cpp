@@ -668,8 +668,10 @@ __attribute__((target("avx2,fma"))) void add_records_avx2(std::span<const std::u
       std::memcpy(&scale, p + 1, 4);
       const std::size_t runs = word16(p + 5), levels = word16(p + 7);
       if (!(scale > 0.0f && std::isfinite(scale)) || levels == 0 || levels > limit || runs == 0 ||
-          runs > levels || 9 + 4 * runs + levels > size)
+          runs > levels || 9 + 4 * runs + levels > size) {
         parse_cubemap_record(shell.n, {p, size});  // throws, saying why
+        bad_record("malformed run record");
+      }
       const Rgb e = runs_sum16_avx2(p + 9, runs, p + 9 + 4 * runs, levels, shell);
       const float step = static_cast<float>(scale / kPulseLevels);
       red[i] += static_cast<float>(e.r) * step;

@@ -14,8 +14,8 @@
 // inside the window's outline and need no more; cells the outline crosses are traced on a
 // 4× finer grid. So a cell inside the window carries no sampling noise from the outline — the
 // sun, which the shell puts in one cell, lights neighbouring receivers alike — and only the
-// outline is noisy, on the finer scale. Each cubemap is stored in the smaller of pulse or
-// per-face Haar, 8-bit (sources/portal/cubemap_encoding.h).
+// outline is noisy, on the finer scale. Each cubemap is stored in the smallest of pulse, pulse
+// runs or per-face Haar, 8-bit (sources/portal/cubemap_encoding.h).
 //
 // The same directions give the response to each SH basis Y_k (l < sh_order) as direct
 // irradiance columns for the bounce solver (the indirect component, §4.1.1): where the

@@ -1,9 +1,9 @@
 // The run-time side of one portal (Yue et al. 2009 §5, issue 4 item 4): from the
 // portal's lighting state (environment, window tint, frost, where the exterior objects are)
-// to the two things the weighted sum needs — the shell's radiance cubemap in pulse and Haar
-// form for the direct component (a sparse dot product per receiver, the paper's Appendix
-// Eq. 7), and the shell's SH coefficients times colour as weights of the stored indirect
-// responses. Rebuilt only when the portal's state changes.
+// to the two things the weighted sum needs — the shell's radiance cubemap in pulse (as texels
+// and as planes for the runs) and Haar form for the direct component (a sparse dot product per
+// receiver, the paper's Appendix Eq. 7), and the shell's SH coefficients times colour as weights of
+// the stored indirect responses. Rebuilt only when the portal's state changes.
 //
 // Behind clear glass the sun is not in the shell (issue 21): it is traced exactly at every
 // receiver (sources/portal/portal_sun.h), and its interreflection is that exact direct light
