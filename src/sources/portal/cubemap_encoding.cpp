@@ -190,6 +190,29 @@ void check_run(std::size_t start, std::size_t length, std::size_t end, std::size
     bad_record("run out of range, overlapping or beyond the record's levels");
 }
 
+// Reads the header of the run record at bytes[0] (kind 3) for face size n into `rec`: nullptr,
+// or why it is malformed. The one check of a run header, for parse_cubemap_record and the block
+// loop of add_receiver_cubemaps, which inlines it (a call through parse_cubemap_record a record
+// was half that loop's time).
+[[gnu::always_inline]] inline const char* read_runs_header(int n,
+                                                           std::span<const std::uint8_t> bytes,
+                                                           CubemapRecord& rec) {
+  const std::size_t w = cubemap_code_index_bytes(n);
+  if (bytes.size() < 1 + 4 + 2 * w) return "truncated header";
+  rec.kind = CubemapCodeKind::kRuns;
+  rec.scale = std::bit_cast<float>(get_uint(bytes.data() + 1, 4));
+  if (!(rec.scale > 0.0f && std::isfinite(rec.scale))) return "scale not positive and finite";
+  rec.runs = get_uint(bytes.data() + 5, w);
+  rec.count = get_uint(bytes.data() + 5 + w, w);
+  if (rec.count == 0 || rec.count > cell_count(n)) return "level count out of range";
+  if (rec.runs == 0 || rec.runs > rec.count) return "run count out of range";
+  rec.bytes = cubemap_record_bytes(n, rec.kind, rec.count, rec.runs);
+  if (bytes.size() < rec.bytes) return "truncated runs";
+  rec.indices = bytes.subspan(5 + 2 * w, 2 * w * rec.runs);
+  rec.values = bytes.subspan(5 + 2 * w + 2 * w * rec.runs, rec.count);
+  return nullptr;
+}
+
 // Calls visit(cell, level) for each cell of a run record, checking its runs.
 template <class F>
 void for_each_run_cell(const CubemapRecord& rec, int n, F&& visit) {
@@ -357,7 +380,7 @@ __attribute__((target("avx2"))) float horizontal_sum(__m256 v) {
 // padding keeps the cells read past a run that ends the cubemap inside (their levels are 0). The
 // whole eights and the last few go to separate sums. Measured on window-mini's records, one
 // core, through dot_receiver_cubemap (docs/performance.md): 11.3-11.6 ms against 13.5 for the
-// same cells as pulse records, 8.7 ms by blocks through add_receiver_cubemaps (3.5 of it
+// same cells as pulse records, 9.2–9.3 ms by blocks through add_receiver_cubemaps (~3.5 of it
 // streaming and parsing the records). Taking each run's first sixteen cells as two eights
 // without a branch on its length, to spare the mispredicted loop exits, ran slower (15.0 ms).
 // Test:
@@ -524,18 +547,7 @@ CubemapRecord parse_cubemap_record(int n, std::span<const std::uint8_t> bytes) {
   rec.kind = static_cast<CubemapCodeKind>(kind);
   const std::size_t w = cubemap_code_index_bytes(n);
   if (rec.kind == CubemapCodeKind::kRuns) {
-    if (bytes.size() < 1 + 4 + 2 * w) bad_record("truncated header");
-    rec.scale = std::bit_cast<float>(get_uint(bytes.data() + 1, 4));
-    if (!(rec.scale > 0.0f && std::isfinite(rec.scale)))
-      bad_record("scale not positive and finite");
-    rec.runs = get_uint(bytes.data() + 5, w);
-    rec.count = get_uint(bytes.data() + 5 + w, w);
-    if (rec.count == 0 || rec.count > cell_count(n)) bad_record("level count out of range");
-    if (rec.runs == 0 || rec.runs > rec.count) bad_record("run count out of range");
-    rec.bytes = cubemap_record_bytes(n, rec.kind, rec.count, rec.runs);
-    if (bytes.size() < rec.bytes) bad_record("truncated runs");
-    rec.indices = bytes.subspan(5 + 2 * w, 2 * w * rec.runs);
-    rec.values = bytes.subspan(5 + 2 * w + 2 * w * rec.runs, rec.count);
+    if (const char* why = read_runs_header(n, bytes, rec)) bad_record(why);
     return rec;
   }
   const std::size_t scales = rec.kind == CubemapCodeKind::kHaar ? 8 : 4;
@@ -649,7 +661,8 @@ std::span<const std::uint8_t> record_of(std::span<const std::uint8_t> records,
 // add_receiver_cubemaps with AVX2 and FMA and 2-byte indices: a run record parsed and summed
 // here (runs_sum16_avx2 inlined), the other kinds through dot_receiver_cubemap. Through
 // dot_receiver_cubemap, each record's parse and checks in parse_cubemap_record took half of
-// window-mini's records' sum; with the loop here 9.2 → 8.7 ms on one core.
+// window-mini's records' sum; with the loop here 9.2 → 8.7 ms on one core, 9.2–9.3 ms since the
+// header's checks are read_runs_header's, written once for both (inlined; a call was 30 ms).
 __attribute__((target("avx2,fma"))) void add_records_avx2(std::span<const std::uint8_t> records,
                                                           std::span<const std::uint64_t> offsets,
                                                           const ShellCubemap& shell,
@@ -657,29 +670,21 @@ __attribute__((target("avx2,fma"))) void add_records_avx2(std::span<const std::u
                                                           std::span<float> green,
                                                           std::span<float> blue) {
   const std::size_t count = offsets.size() - 1;
-  const std::size_t limit = cell_count(shell.n);
   for (std::size_t i = 0; i < count; ++i) {
     const std::span<const std::uint8_t> record = record_of(records, offsets, i);
-    const std::uint8_t* p = record.data();
-    const std::size_t size = record.size();
-    if (p[0] == static_cast<std::uint8_t>(CubemapCodeKind::kEmpty)) continue;
-    if (p[0] == static_cast<std::uint8_t>(CubemapCodeKind::kRuns) && size >= 9) {
-      float scale;
-      std::memcpy(&scale, p + 1, 4);
-      const std::size_t runs = word16(p + 5), levels = word16(p + 7);
-      if (!(scale > 0.0f && std::isfinite(scale)) || levels == 0 || levels > limit || runs == 0 ||
-          runs > levels || 9 + 4 * runs + levels > size) {
-        parse_cubemap_record(shell.n, {p, size});  // throws, saying why
-        bad_record("malformed run record");
-      }
-      const Rgb e = runs_sum16_avx2(p + 9, runs, p + 9 + 4 * runs, levels, shell);
-      const float step = static_cast<float>(scale / kPulseLevels);
+    if (record[0] == static_cast<std::uint8_t>(CubemapCodeKind::kEmpty)) continue;
+    if (record[0] == static_cast<std::uint8_t>(CubemapCodeKind::kRuns)) {
+      CubemapRecord rec;
+      if (const char* why = read_runs_header(shell.n, record, rec)) bad_record(why);
+      const Rgb e =
+          runs_sum16_avx2(rec.indices.data(), rec.runs, rec.values.data(), rec.count, shell);
+      const float step = static_cast<float>(rec.scale / kPulseLevels);
       red[i] += static_cast<float>(e.r) * step;
       green[i] += static_cast<float>(e.g) * step;
       blue[i] += static_cast<float>(e.b) * step;
       continue;
     }
-    const Rgb e = dot_receiver_cubemap({p, size}, shell);
+    const Rgb e = dot_receiver_cubemap(record, shell);
     red[i] += static_cast<float>(e.r);
     green[i] += static_cast<float>(e.g);
     blue[i] += static_cast<float>(e.b);
