@@ -91,21 +91,6 @@ void merge(std::span<Cursor<View>> cursors, const Op& op, ValueCut& out) {
 
 }  // namespace
 
-void CutLeafLookup::reset(const ValueCut& cut) {
-  cut_ = &cut;
-  starts_.resize(cut.size());
-  std::uint64_t leaf = 0;
-  for (std::size_t i = 0; i < cut.size(); ++i) {
-    starts_[i] = leaf;
-    leaf += std::uint64_t{1} << cut.height[i];
-  }
-}
-
-float CutLeafLookup::at(std::uint64_t leaf) const {
-  const auto it = std::upper_bound(starts_.begin(), starts_.end(), leaf);
-  return cut_->value[static_cast<std::size_t>(it - starts_.begin()) - 1];
-}
-
 namespace {
 
 template <typename View>

@@ -39,19 +39,6 @@ void push_cut_node(ValueCut& out, std::uint64_t first_leaf, int h, float v);
 // The value of every leaf of `cut` (N leaves) into `leaves`.
 void expand_cut(const ValueCut& cut, std::span<float> leaves);
 
-// A cut's value at single leaves, without expanding it: the first leaf of every node, searched
-// (log of the node count a lookup). For a few leaves of a cut (those within an object's cone).
-class CutLeafLookup {
- public:
-  // `cut` must outlive the lookups (until the next reset).
-  void reset(const ValueCut& cut);
-  float at(std::uint64_t leaf) const;
-
- private:
-  const ValueCut* cut_ = nullptr;
-  std::vector<std::uint64_t> starts_;  // per node, its first leaf
-};
-
 // A stored binary cut (cut `cut` of `cuts`) with its weight in an interpolation; View the
 // encoding (math/cut_encoding.h): the paper's height encoding, or the previous methods' index
 // encoding as the baseline (the same merge, each node's height derived from its index).

@@ -142,6 +142,39 @@ bool RayTracer::occluded(const Ray& r) const {
   return ray.tfar < 0;  // Embree sets tfar = -inf on an occlusion
 }
 
+void RayTracer::occluded_from(Vec3 origin, std::span<const Vec3> directions,
+                              std::span<std::uint8_t> blocked) const {
+  if (directions.size() != blocked.size()) {
+    throw std::invalid_argument("RayTracer: directions and answers differ");
+  }
+  constexpr std::size_t kPacket = 8;
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  alignas(32) RTCRay8 packet{};
+  alignas(32) int valid[kPacket];
+  for (std::size_t i = 0; i < kPacket; ++i) {
+    packet.org_x[i] = static_cast<float>(origin.x);
+    packet.org_y[i] = static_cast<float>(origin.y);
+    packet.org_z[i] = static_cast<float>(origin.z);
+    packet.mask[i] = 0xFFFFFFFFu;
+  }
+  for (std::size_t first = 0; first < directions.size(); first += kPacket) {
+    const std::size_t count = std::min(kPacket, directions.size() - first);
+    for (std::size_t i = 0; i < kPacket; ++i) {
+      const Vec3 d = directions[first + std::min(i, count - 1)];
+      packet.dir_x[i] = static_cast<float>(d.x);
+      packet.dir_y[i] = static_cast<float>(d.y);
+      packet.dir_z[i] = static_cast<float>(d.z);
+      packet.tnear[i] = 0.0f;
+      packet.tfar[i] = std::numeric_limits<float>::infinity();
+      valid[i] = i < count ? -1 : 0;
+    }
+    rtcOccluded8(valid, handles_->scene, &context, &packet);
+    for (std::size_t i = 0; i < count; ++i) blocked[first + i] = packet.tfar[i] < 0 ? 1 : 0;
+  }
+}
+
 std::vector<std::uint32_t> sequential_ids(std::size_t n) {
   std::vector<std::uint32_t> ids(n);
   std::iota(ids.begin(), ids.end(), 0u);

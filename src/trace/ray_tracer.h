@@ -54,6 +54,12 @@ class RayTracer {
   // tests/trace/ray_tracer_test.cpp (the same hits as single rays).
   void intersect(std::span<const Ray> rays, std::span<RayHit> hits) const;
   bool occluded(const Ray& ray) const;
+  // Whether each ray from `origin` along directions[i] (t in (0, ∞)) is blocked, in packets of
+  // eight (rtcOccluded8, flagged coherent: one point's view of nearby directions, as a
+  // direction tree's leaves in order). Throws std::invalid_argument when the sizes differ.
+  // Pinned by tests/trace/ray_tracer_test.cpp (the same answers as single rays).
+  void occluded_from(Vec3 origin, std::span<const Vec3> directions,
+                     std::span<std::uint8_t> blocked) const;
   std::size_t triangle_count() const { return ids_.size(); }
 
  private:

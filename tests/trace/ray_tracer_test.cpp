@@ -72,6 +72,32 @@ TEST(RayTracer, ABatchOfRaysHitsWhatEachRayHitsAlone) {
   EXPECT_THROW(lone.intersect(rays, away), std::invalid_argument);
 }
 
+// Packets from one point answer as single rays: 203 directions (25 packets of eight and a
+// remainder of three) from a point above a unit square, about half of them blocked by it, each
+// the same as occluded() alone; a size mismatch throws.
+TEST(RayTracer, OneOriginsPacketsOfEightAnswerAsSingleRays) {
+  const std::vector<Vec3> p = {{0, 0, 0}, {1, 0, 0}, {1, 0, 1}, {0, 0, 1}};
+  const RayTracer tracer(p, {{0, 1, 2}, {0, 2, 3}}, {0, 1});
+  const Vec3 origin{0.3, 0.4, 0.6};
+  std::vector<Vec3> directions;
+  for (int i = 0; i < 203; ++i) {
+    const double a = 0.37 * i, b = 0.0155 * i;
+    directions.push_back({std::cos(a) * std::sin(b), -std::cos(b), std::sin(a) * std::sin(b)});
+  }
+  std::vector<std::uint8_t> blocked(directions.size(), 7);
+  tracer.occluded_from(origin, directions, blocked);
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < directions.size(); ++i) {
+    EXPECT_EQ(blocked[i] != 0, tracer.occluded({origin, directions[i]})) << i;
+    EXPECT_LE(blocked[i], 1) << i;
+    count += blocked[i];
+  }
+  EXPECT_GT(count, 50u);
+  EXPECT_LT(count, 153u);
+  std::vector<std::uint8_t> short_answers(3);
+  EXPECT_THROW(tracer.occluded_from(origin, directions, short_answers), std::invalid_argument);
+}
+
 TEST(RayTracer, IsSafeFromManyThreads) {
   std::vector<Vec3> p;
   std::vector<Triangle> t;

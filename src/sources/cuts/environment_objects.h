@@ -18,7 +18,8 @@
 // light (sources/object/object_lighting.h ObjectLightInputs::extra_room and extra_objects).
 //
 // Within a field's inner sphere (a floor beside or under the object), where the paper's field has
-// no samples, the object itself is traced from the receiver in its bounding cone, leaf by leaf.
+// no samples, the object itself is traced from the receiver in its bounding cone, leaf by leaf
+// above the receiver's horizon.
 // An object turned about the vertical relative to the frame of the receiver's cut has its
 // interpolated field re-expressed in that frame leaf by leaf within its bounding cone (each
 // leaf at the nearest leaf of the turned direction): exact to a leaf, slower than the merge
@@ -101,9 +102,16 @@ class EnvironmentObjects {
   // casts nothing there.
   bool field_factor(std::size_t o, Vec3 x, Vec3 n, double frame_deg, const PlacedObjects& placed,
                     Scratch& s, ValueCut& out) const;
-  // The cut that is 1 outside the cone (unit axis, half-angle) and leaf_value(leaf) in it.
+  // Top down over the tree's nodes in leaf order: on_node(first leaf, height) for each node
+  // disjoint from the cone (unit axis, half-angle) or wholly below the horizon of `up`,
+  // on_leaf(leaf) for every other leaf.
+  template <typename OnNode, typename OnLeaf>
+  void walk_cone(Vec3 axis, double half, Vec3 up, const OnNode& on_node,
+                 const OnLeaf& on_leaf) const;
+  // The cut that is 1 outside the cone (unit axis, half-angle) and below the horizon of `up`,
+  // leaf_value(leaf) at the other leaves.
   template <typename LeafValue>
-  void cone_cut(Vec3 axis, double half, const LeafValue& leaf_value, ValueCut& out) const;
+  void cone_cut(Vec3 axis, double half, Vec3 up, const LeafValue& leaf_value, ValueCut& out) const;
   // For a turn of `relative_deg` from a receiver's frame to an object's: per leaf of the
   // receiver's frame, the object frame's nearest leaf (made once per turn).
   const std::vector<std::uint32_t>& leaf_turn(double relative_deg) const;
