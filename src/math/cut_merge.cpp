@@ -34,18 +34,6 @@ struct Cursor {
 
 }  // namespace
 
-void push_cut_node(ValueCut& out, std::uint64_t leaf, int h, float v) {
-  while (!out.height.empty() && out.height.back() == h && out.value.back() == v &&
-         (leaf & ((std::uint64_t{2} << h) - 1)) == (std::uint64_t{1} << h)) {
-    out.height.pop_back();
-    out.value.pop_back();
-    leaf -= std::uint64_t{1} << h;
-    ++h;
-  }
-  out.height.push_back(static_cast<std::uint8_t>(h));
-  out.value.push_back(v);
-}
-
 void expand_cut(const ValueCut& cut, std::span<float> leaves) {
   std::size_t leaf = 0;
   for (std::size_t i = 0; i < cut.size(); ++i) {

@@ -34,7 +34,18 @@ struct ValueCut {
 
 // Appends the node of height h starting at leaf `first_leaf` (the end of `out`) with value v,
 // merging it with its left sibling while they are of equal height and value.
-void push_cut_node(ValueCut& out, std::uint64_t first_leaf, int h, float v);
+// Inline: called once a leaf where cuts are made leaf by leaf (sources/cuts/environment_objects.h).
+inline void push_cut_node(ValueCut& out, std::uint64_t first_leaf, int h, float v) {
+  while (!out.height.empty() && out.height.back() == h && out.value.back() == v &&
+         (first_leaf & ((std::uint64_t{2} << h) - 1)) == (std::uint64_t{1} << h)) {
+    out.height.pop_back();
+    out.value.pop_back();
+    first_leaf -= std::uint64_t{1} << h;
+    ++h;
+  }
+  out.height.push_back(static_cast<std::uint8_t>(h));
+  out.value.push_back(v);
+}
 
 // The value of every leaf of `cut` (N leaves) into `leaves`.
 void expand_cut(const ValueCut& cut, std::span<float> leaves);

@@ -48,11 +48,6 @@ std::vector<Vec3> repulsed_directions(std::size_t count, int iterations) {
   return p;
 }
 
-int DirectionTree::height(std::size_t node) const {
-  const int depth = std::bit_width(node) - 1;
-  return std::bit_width(leaves.size()) - 1 - depth;
-}
-
 DirectionTree build_direction_tree(std::vector<Vec3> directions) {
   const std::size_t n = directions.size();
   if (n < 2 || !std::has_single_bit(n)) {

@@ -17,6 +17,7 @@
 // Pinned by tests/math/direction_tree_test.cpp.
 #pragma once
 
+#include <bit>
 #include <cstdint>
 #include <vector>
 
@@ -35,7 +36,9 @@ struct DirectionTree {
   std::vector<double> cos_half_angle;
   std::size_t leaf_count() const { return leaves.size(); }
   // The height of node k: 0 for a leaf, log2 N for the root.
-  int height(std::size_t node) const;
+  int height(std::size_t node) const {
+    return std::bit_width(leaves.size()) - std::bit_width(node);
+  }
 };
 
 // Throws std::invalid_argument unless directions.size() is a power of two ≥ 2.

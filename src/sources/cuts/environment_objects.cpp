@@ -37,10 +37,34 @@ Vec3 to_object_frame(Vec3 x, Vec3 pivot, const Placement& p) {
 Rgb cut_irradiance(const ValueCut& cut, std::uint32_t leaves, std::span<const RgbMoment> m,
                    Vec3 n) {
   // No test of v > 0: a fifth of a product's nodes are 0 in no order a branch predicts (the
-  // showroom's sun frame: 55 -> 39 ms for its 30 M nodes); values are never negative.
-  RgbMoment sum;
-  for_each_node(cut, leaves, [&](std::uint32_t node, float v) { sum.add(m[node], v); });
-  return sum.irradiance(n);
+  // showroom's sun frame: 55 -> 39 ms for its 30 M nodes); values are never negative. Four
+  // sums, a node in four to each, so that a node's adds need not wait for the last node's
+  // (the objects' sums 50 -> 40 ms with two, 36 ms with four).
+  RgbMoment even, odd, s2, s3;
+  const std::size_t count = cut.size();
+  const std::uint8_t* height = cut.height.data();
+  const float* value = cut.value.data();
+  std::uint64_t leaf = 0;
+  std::size_t i = 0;
+  for (; i + 3 < count; i += 4) {
+    const int h0 = height[i], h1 = height[i + 1], h2 = height[i + 2], h3 = height[i + 3];
+    const std::uint64_t l1 = leaf + (std::uint64_t{1} << h0);
+    const std::uint64_t l2 = l1 + (std::uint64_t{1} << h1);
+    const std::uint64_t l3 = l2 + (std::uint64_t{1} << h2);
+    even.add(m[static_cast<std::uint32_t>((leaves + leaf) >> h0)], value[i]);
+    odd.add(m[static_cast<std::uint32_t>((leaves + l1) >> h1)], value[i + 1]);
+    s2.add(m[static_cast<std::uint32_t>((leaves + l2) >> h2)], value[i + 2]);
+    s3.add(m[static_cast<std::uint32_t>((leaves + l3) >> h3)], value[i + 3]);
+    leaf = l3 + (std::uint64_t{1} << h3);
+  }
+  for (; i < count; ++i) {
+    even.add(m[static_cast<std::uint32_t>((leaves + leaf) >> height[i])], value[i]);
+    leaf += std::uint64_t{1} << height[i];
+  }
+  even += odd;
+  s2 += s3;
+  even += s2;
+  return even.irradiance(n);
 }
 
 }  // namespace
@@ -65,11 +89,10 @@ EnvironmentObjects::EnvironmentObjects(const CutsTransferView& cuts, const Direc
   static_bits_.assign(vertices * static_words_, ~std::uint64_t{0});
   room_delta_.assign(3 * room.receivers(), 0.0f);
   object_direct_.assign(3 * vertices, 0.0f);
-  spread_.resize(tree.cos_half_angle.size());
-  sin_spread_.resize(spread_.size());
-  for (std::size_t k = 0; k < spread_.size(); ++k) {
-    spread_[k] = std::acos(std::clamp(tree.cos_half_angle[k], -1.0, 1.0));
-    sin_spread_[k] = std::sin(spread_[k]);
+  cones_.resize(tree.cos_half_angle.size());
+  for (std::size_t k = 1; k < cones_.size(); ++k) {
+    const double spread = std::acos(std::clamp(tree.cos_half_angle[k], -1.0, 1.0));
+    cones_[k] = {tree.axis[k], tree.cos_half_angle[k], spread, std::sin(spread)};
   }
 }
 
@@ -109,11 +132,11 @@ void EnvironmentObjects::walk_cone(Vec3 axis, double half, Vec3 up, const OnNode
     const int h = tree_.height(k);
     const std::uint64_t first = (std::uint64_t{k} << h) - n_leaves;
     // Disjoint when the angle between the axes exceeds the two half-angles together.
-    const double reach = spread_[k] + half;
-    if ((reach < kPi && dot(tree_.axis[k], axis) <
-                            tree_.cos_half_angle[k] * cos_half - sin_spread_[k] * sin_half) ||
+    const NodeCone& c = cones_[k];
+    if ((c.spread + half < kPi &&
+         dot(c.axis, axis) < c.cos_spread * cos_half - c.sin_spread * sin_half) ||
         // Wholly below the receiver's horizon, where its own cut is 0.
-        (spread_[k] < kPi / 2 && dot(tree_.axis[k], up) < -sin_spread_[k])) {
+        (c.spread < kPi / 2 && dot(c.axis, up) < -c.sin_spread)) {
       on_node(first, h);
     } else if (k >= n_leaves) {
       on_leaf(first);
@@ -258,9 +281,9 @@ void EnvironmentObjects::trace_static(std::size_t q, const PlacedObjects& placed
   const VerticalTurn turn(frame_deg);
   for (std::size_t i = 0; i < first; ++i) {
     const std::size_t k = first + i;
-    const Vec3 dir = turn(tree_.axis[k]);
+    const Vec3 dir = turn(cones_[k].axis);
     // Below the surface: the vertex's own cut is 0 there.
-    if (dot(dir, n) < -sin_spread_[k]) continue;
+    if (dot(dir, n) < -cones_[k].sin_spread) continue;
     if (room_.occluders().occluded({origin, dir})) bits[i / 64] &= ~(std::uint64_t{1} << (i % 64));
   }
 }

@@ -149,8 +149,12 @@ class EnvironmentObjects {
   int coarse_depth_ = 10;                     // depth of the static views' nodes
   std::vector<std::uint64_t> static_bits_;    // per object vertex: one bit per coarse node
   std::size_t static_words_ = 0;
-  std::vector<double> spread_, sin_spread_;  // per node: its cone's half-angle, its sine
-  bool valid_ = false;                       // updated at least once
+  struct NodeCone {  // a tree node's cone, together for the walks
+    Vec3 axis;
+    double cos_spread = 1, spread = 0, sin_spread = 0;  // its half-angle's cosine, it, its sine
+  };
+  std::vector<NodeCone> cones_;  // per node (0 unused)
+  bool valid_ = false;           // updated at least once
   // The visibilities as last placed (products made again only when a placement changes; a new
   // environment only sums them again).
   std::vector<ValueCut> room_products_, object_products_;
