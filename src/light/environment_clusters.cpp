@@ -68,6 +68,19 @@ void deposit_grid(int width, int height, int k, const Radiance& radiance, const 
 
 }  // namespace
 
+Vec3 moment_direction(const RgbMoment& m, Vec3 fallback) {
+  const Vec3 d{luminance({m.r[0], m.g[0], m.b[0]}), luminance({m.r[1], m.g[1], m.b[1]}),
+               luminance({m.r[2], m.g[2], m.b[2]})};
+  return length(d) > 0 ? normalize(d) : fallback;
+}
+
+std::vector<Vec3> moment_directions(std::span<const RgbMoment> moments, const DirectionTree& tree) {
+  std::vector<Vec3> out(moments.size());
+  for (std::size_t k = 1; k < moments.size(); ++k)
+    out[k] = moment_direction(moments[k], tree.axis[k]);
+  return out;
+}
+
 PointGrid leaf_grid(const DirectionTree& tree) {
   return PointGrid(tree.leaves, 2 * leaf_spacing(tree));
 }

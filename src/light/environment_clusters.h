@@ -27,6 +27,7 @@
 // Pinned by tests/light/environment_clusters_test.cpp.
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "light/compact_sources.h"
@@ -66,6 +67,13 @@ struct RgbMoment {
             n.x * b[0] + n.y * b[1] + n.z * b[2]};
   }
 };
+
+// The direction of a node's light, where a BRDF toward the eye is evaluated for it (the
+// capture paper's Eq. 3): its luminance moment's (math/rgb.h's weights), or `fallback` (the
+// node's axis) where that moment is 0.
+Vec3 moment_direction(const RgbMoment& m, Vec3 fallback);
+// moment_direction of every node k ≥ 1 of `tree` (index 0 unused), with its axis as fallback.
+std::vector<Vec3> moment_directions(std::span<const RgbMoment> moments, const DirectionTree& tree);
 
 // The nearest-leaf lookup of a tree: a PointGrid over its leaves at cells of twice their
 // spacing.

@@ -68,13 +68,6 @@ void EnvironmentLighting::set_bounce(bool bounce) {
   update();
 }
 
-Vec3 EnvironmentLighting::light_direction(const RgbMoment& m, std::uint32_t j) const {
-  // The luminance moment (math/rgb.h's weights).
-  const Vec3 d{luminance({m.r[0], m.g[0], m.b[0]}), luminance({m.r[1], m.g[1], m.b[1]}),
-               luminance({m.r[2], m.g[2], m.b[2]})};
-  return length(d) > 0 ? normalize(d) : tree_.axis[j];
-}
-
 Rgb EnvironmentLighting::irradiance(std::size_t r) const {
   RgbMoment sum;
   cuts_.self_visibility.for_each_visible(
@@ -85,7 +78,7 @@ Rgb EnvironmentLighting::irradiance(std::size_t r) const {
 void EnvironmentLighting::update_objects(const PlacedObjects& placed,
                                          std::span<const MovablePlacement> placements) {
   if (!objects_) return;
-  objects_->update(env_ ? &*env_ : nullptr, moments_, direct_,
+  objects_->update(env_ ? &*env_ : nullptr, moments_, light_direction_, direct_,
                    RoomCompact{compact_, compact_fraction_, compact_direct_}, placed, placements,
                    objects_stale_);
   objects_stale_ = false;
@@ -104,10 +97,7 @@ void EnvironmentLighting::update() {
   const std::size_t sources = compact_.sources.size();
   compact_fraction_.assign(sources * receivers_, 0.0f);
   const Occluders room(runtime_.occluders());
-  light_direction_.resize(moments_.size());
-  for (std::size_t k = 1; k < moments_.size(); ++k) {
-    light_direction_[k] = light_direction(moments_[k], static_cast<std::uint32_t>(k));
-  }
+  light_direction_ = moment_directions(moments_, tree_);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, receivers_, 256), [&](const auto& range) {
     for (std::size_t r = range.begin(); r < range.end(); ++r) {
       const Vec3 n = runtime_.normal(r), origin = offset_from_surface(runtime_.ray_point(r), n);

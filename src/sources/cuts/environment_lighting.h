@@ -96,8 +96,9 @@ class EnvironmentLighting : public SourceTerm {
     if (cut == nullptr) return {};
     const std::size_t a = placed.object_of_vertex(q);
     const std::span<const RgbMoment> m = objects_->object_moments(a);
+    const std::span<const Vec3> directions = objects_->object_light_directions(a);
     const Vec3 n = objects_->meshes()[a].normals[q - placed.first_vertex[a]];
-    const Placement turn{{0, 0, 0}, objects_->object_turn(a)};
+    const VerticalTurn turn(objects_->object_turn(a));  // its sine and cosine once
     Rgb out{};
     for_each_node(*cut, static_cast<std::uint32_t>(tree_.leaf_count()),
                   [&](std::uint32_t node, float v) {
@@ -105,7 +106,7 @@ class EnvironmentLighting : public SourceTerm {
                     split_glossy(node, [&](std::uint32_t j) {
                       const Rgb e = m[j].irradiance(n);
                       if (e.r > 0 || e.g > 0 || e.b > 0) {
-                        out += e * (v * weight(placed_direction(light_direction(m[j], j), turn)));
+                        out += e * (v * weight(turn(directions[j])));
                       }
                     });
                   });
@@ -155,8 +156,6 @@ class EnvironmentLighting : public SourceTerm {
       visit(j);
     }
   }
-  // The direction of node j's light: its luminance moment's, or its mean direction.
-  Vec3 light_direction(const RgbMoment& m, std::uint32_t j) const;
 
   CutsTransferView cuts_;
   const RuntimeScene& runtime_;
@@ -168,7 +167,7 @@ class EnvironmentLighting : public SourceTerm {
   std::shared_ptr<const EquirectMap> map_;  // the last map read, and its file
   std::filesystem::path map_file_;
   std::vector<RgbMoment> moments_;
-  std::vector<Vec3> light_direction_;  // per node: its luminance moment's direction, or its axis
+  std::vector<Vec3> light_direction_;  // per node: moment_direction (light/environment_clusters.h)
   double glossy_cos_;                  // cos kGlossyNodeDeg
   bool bounce_ = true, warm_ = false;
   CompactSources compact_;

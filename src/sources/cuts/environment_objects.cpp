@@ -113,9 +113,12 @@ const std::vector<std::uint32_t>& EnvironmentObjects::leaf_turn(double relative_
 std::span<const RgbMoment> EnvironmentObjects::frame_moments(double frame_deg) {
   const std::int64_t key = turn_key(frame_deg);
   if (key == 0) return world_moments_;
-  std::vector<RgbMoment>& m = turned_moments_[key];
-  if (m.empty()) m = environment_moments(*env_, tree_, leaves_, frame_deg, compact_);
-  return m;
+  FrameLight& f = turned_[key];
+  if (f.moments.empty()) {
+    f.moments = environment_moments(*env_, tree_, leaves_, frame_deg, compact_);
+    f.directions = moment_directions(f.moments, tree_);
+  }
+  return f.moments;
 }
 
 template <typename OnNode, typename OnLeaf>
@@ -267,8 +270,13 @@ const ValueCut* EnvironmentObjects::object_visibility(std::size_t q,
 }
 
 std::span<const RgbMoment> EnvironmentObjects::object_moments(std::size_t a) const {
-  const auto it = turned_moments_.find(turn_key(placements_.at(a).rotate_deg));
-  return it != turned_moments_.end() ? std::span<const RgbMoment>(it->second) : world_moments_;
+  const auto it = turned_.find(turn_key(placements_.at(a).rotate_deg));
+  return it != turned_.end() ? std::span<const RgbMoment>(it->second.moments) : world_moments_;
+}
+
+std::span<const Vec3> EnvironmentObjects::object_light_directions(std::size_t a) const {
+  const auto it = turned_.find(turn_key(placements_.at(a).rotate_deg));
+  return it != turned_.end() ? std::span<const Vec3>(it->second.directions) : world_directions_;
 }
 
 void EnvironmentObjects::trace_static(std::size_t q, const PlacedObjects& placed,
@@ -289,6 +297,7 @@ void EnvironmentObjects::trace_static(std::size_t q, const PlacedObjects& placed
 }
 
 void EnvironmentObjects::update(const Environment* env, std::span<const RgbMoment> moments,
+                                std::span<const Vec3> directions,
                                 std::span<const float> room_direct, const RoomCompact& compact,
                                 const PlacedObjects& placed,
                                 std::span<const MovablePlacement> placements, bool env_changed) {
@@ -298,8 +307,9 @@ void EnvironmentObjects::update(const Environment* env, std::span<const RgbMomen
   if (!moved_any && !env_changed && env == env_) return;
   env_ = env;
   world_moments_ = moments;
+  world_directions_ = directions;
   compact_ = &compact.sources;
-  if (env_changed) turned_moments_.clear();
+  if (env_changed) turned_.clear();
   const std::size_t objects = meshes_.size();
   tbb::enumerable_thread_specific<Scratch> scratch;
   if (moved_any) {

@@ -73,9 +73,9 @@ class EnvironmentObjects {
   // `room_direct` (3 per room receiver, the compact sources' `compact.direct` included).
   // `env_changed`: the environment changed since the last call.
   void update(const Environment* env, std::span<const RgbMoment> moments,
-              std::span<const float> room_direct, const RoomCompact& compact,
-              const PlacedObjects& placed, std::span<const MovablePlacement> placements,
-              bool env_changed);
+              std::span<const Vec3> directions, std::span<const float> room_direct,
+              const RoomCompact& compact, const PlacedObjects& placed,
+              std::span<const MovablePlacement> placements, bool env_changed);
 
   // Object vertex q's visibility (PlacedObjects order) in its object's frame, as the last update
   // placed it: its cut of itself times the static scene's coarse view and the other objects'
@@ -83,6 +83,8 @@ class EnvironmentObjects {
   const ValueCut* object_visibility(std::size_t q, const PlacedObjects& placed) const;
   // The environment's moments in object a's frame (its turn as last placed).
   std::span<const RgbMoment> object_moments(std::size_t a) const;
+  // Their nodes' light directions in the same frame.
+  std::span<const Vec3> object_light_directions(std::size_t a) const;
   std::span<const ObjectMesh> meshes() const { return meshes_; }
   // Object a's turn as last placed, degrees.
   double object_turn(std::size_t a) const { return placements_.at(a).rotate_deg; }
@@ -142,7 +144,12 @@ class EnvironmentObjects {
   std::span<const ObjectMesh> meshes_;
   const Environment* env_ = nullptr;
   std::span<const RgbMoment> world_moments_;
-  std::map<std::int64_t, std::vector<RgbMoment>> turned_moments_;  // by turn, µ°
+  std::span<const Vec3> world_directions_;
+  struct FrameLight {  // the environment in a turned frame
+    std::vector<RgbMoment> moments;
+    std::vector<Vec3> directions;  // moment_direction of each node
+  };
+  std::map<std::int64_t, FrameLight> turned_;  // by turn, µ°
   mutable std::mutex turn_mutex_;
   mutable std::map<std::int64_t, std::unique_ptr<std::vector<std::uint32_t>>> turns_;
   std::vector<MovablePlacement> placements_;  // as the static views were traced
