@@ -75,6 +75,7 @@ struct EnvironmentObjects::Scratch {
   std::vector<float> leaves;     // a turned field's interpolated cut, leaf by leaf
   std::vector<Vec3> directions;  // the leaves traced in a cone, in leaf order
   std::vector<std::uint8_t> blocked;
+  std::vector<std::uint64_t> walk;  // a cone's walk, recorded for its replay
 };
 
 EnvironmentObjects::EnvironmentObjects(const CutsTransferView& cuts, const DirectionTree& tree,
@@ -180,15 +181,31 @@ bool EnvironmentObjects::field_factor(std::size_t o, Vec3 x, Vec3 n, double fram
     // packets of eight.
     const Vec3 origin = offset_from_surface(x, n);
     const VerticalTurn turn(frame_deg);
+    // One walk, recorded (a node outside as first · 64 + height, a leaf traced as leaf · 64 +
+    // 63) and replayed once the packets are traced.
+    constexpr std::uint64_t kTraced = 63;
     s.directions.clear();
+    s.walk.clear();
     walk_cone(
-        axis, half, up, [](std::uint64_t, int) {},
-        [&](std::uint64_t leaf) { s.directions.push_back(turn(tree_.leaves[leaf])); });
+        axis, half, up,
+        [&](std::uint64_t first, int h) {
+          s.walk.push_back(first << 6 | static_cast<std::uint64_t>(h));
+        },
+        [&](std::uint64_t leaf) {
+          s.walk.push_back(leaf << 6 | kTraced);
+          s.directions.push_back(turn(tree_.leaves[leaf]));
+        });
     s.blocked.resize(s.directions.size());
     placed.own[o].occluded_from(origin, s.directions, s.blocked);
+    out.clear();
     std::size_t next = 0;
-    cone_cut(
-        axis, half, up, [&](std::size_t) { return s.blocked[next++] != 0 ? 0.0f : 1.0f; }, out);
+    for (const std::uint64_t w : s.walk) {
+      if ((w & 63) == kTraced) {
+        push_cut_node(out, w >> 6, 0, s.blocked[next++] != 0 ? 0.0f : 1.0f);
+      } else {
+        push_cut_node(out, w >> 6, static_cast<int>(w & 63), 1.0f);
+      }
+    }
     return true;
   }
   std::array<std::uint32_t, 8> ids{};
