@@ -1,6 +1,7 @@
 #include "math/cut_merge.h"
 
 #include <algorithm>
+#include <bit>
 #include <stdexcept>
 
 namespace relight {
@@ -9,14 +10,13 @@ namespace {
 
 constexpr std::size_t kMaxOperands = 16;
 
-// A pointer into one operand and its counter (Steps 1 and 3), with the pointed node's height
-// and value read once when the pointer moves. View: the stored cuts' encoding (height or index).
+// A pointer into one operand (Steps 1 and 3), with the pointed node's height and value read
+// once when the pointer moves. View: the stored cuts' encoding (height or index).
 template <typename View>
 struct Cursor {
   const View* stored = nullptr;      // a stored binary cut, or
   const ValueCut* values = nullptr;  // a cut with values
   std::uint64_t k = 0, end = 0;      // the pointed node and the end
-  std::uint64_t counter = 0;         // leaves of the pointed node already passed
   int h = 0;                         // the pointed node's height
   float v = 0;                       // and value
 
@@ -45,34 +45,35 @@ void expand_cut(const ValueCut& cut, std::span<float> leaves) {
 
 namespace {
 
-// Steps 1–4 over `cursors`; op(values of the pointed nodes) is each output node's value.
+// Steps 1–4 over `cursors`; op(values of the pointed nodes) is each output node's value. Each
+// cursor's counter is kept as the leaf its pointed node ends at: every pointed node contains
+// the current leaf, so the smallest of them starts there and ends first, and its end less the
+// current leaf is the output node's size (2^h_min).
 template <typename View, typename Op>
 void merge(std::span<Cursor<View>> cursors, const Op& op, ValueCut& out) {
   out.clear();
-  for (Cursor<View>& c : cursors) c.load();
-  std::uint64_t leaf = 0;
-  float values[kMaxOperands];
   const std::size_t count = cursors.size();
+  std::uint64_t ends[kMaxOperands];
+  float values[kMaxOperands];
+  for (std::size_t j = 0; j < count; ++j) {
+    cursors[j].load();
+    ends[j] = std::uint64_t{1} << cursors[j].h;
+    values[j] = cursors[j].v;
+  }
+  std::uint64_t leaf = 0;
   while (cursors.front().k < cursors.front().end) {
-    int h_min = cursors[0].h;
-    for (std::size_t j = 1; j < count; ++j) h_min = std::min(h_min, cursors[j].h);
-    // The pointed nodes' parts at h_min are what the output node covers.
-    for (std::size_t j = 0; j < count; ++j) values[j] = cursors[j].v;
-    push_cut_node(out, leaf, h_min, op(std::span<const float>(values, count)));
-    leaf += std::uint64_t{1} << h_min;
-    for (Cursor<View>& c : cursors) {
-      if (c.h == h_min) {
-        ++c.k;
-        c.counter = 0;
-        c.load();
-      } else {
-        c.counter += std::uint64_t{1} << h_min;
-        if (c.counter == (std::uint64_t{1} << c.h)) {
-          ++c.k;
-          c.counter = 0;
-          c.load();
-        }
-      }
+    std::uint64_t next = ends[0];
+    for (std::size_t j = 1; j < count; ++j) next = std::min(next, ends[j]);
+    push_cut_node(out, leaf, std::countr_zero(next - leaf),
+                  op(std::span<const float>(values, count)));
+    leaf = next;
+    for (std::size_t j = 0; j < count; ++j) {
+      if (ends[j] != next) continue;
+      Cursor<View>& c = cursors[j];
+      ++c.k;
+      c.load();
+      ends[j] = next + (std::uint64_t{1} << c.h);
+      values[j] = c.v;
     }
   }
 }

@@ -5,7 +5,11 @@
 // and a counter per operand (Step 1), the operation applied to the pointed nodes and stored at
 // the lowest of their heights h_min (Step 2), a pointer at h_min advanced and the others' counters
 // raised by 2^h_min, a pointer advanced when its counter reaches 2^h of its node (Step 3), until
-// every pointer is past its cut's last node (Step 4). The result is the coarsest common
+// every pointer is past its cut's last node (Step 4). Each counter is kept as the leaf its
+// pointed node ends at (the leaf reached plus what is left of the node): the smallest end is
+// the output node's, and a pointer moves when its end is reached — the same steps, without
+// raising every other counter at each output node (8 fields interpolated 14.5 -> 13.0 µs, a
+// product 65.8 -> 56.4 µs, bench/cuts_bench.cpp). The result is the coarsest common
 // refinement of the operands, with siblings of equal value merged again, so a product of
 // visibilities stays as compact as its edges allow. Pinned by tests/math/cut_merge_test.cpp
 // (against the same operations leaf by leaf).
