@@ -70,11 +70,6 @@ double specular_pdf(double alpha, double n_dot_v, double n_dot_h) {
   return smith_g1(alpha, n_dot_v) * ggx_d(alpha, n_dot_h) / (4 * n_dot_v);
 }
 
-// The specular lobe's directional albedo E_s(μ) = ∫ F D V cos θ_l dω_l split by F0 (Schlick
-// is linear in it): E_s = F0 · A(μ, r) + B(μ, r), tabulated over μ = n·v and roughness r by
-// quadrature in half-vector space (dω_l = 4 (v·h) dω_h), θ_h broken at atan(kα) so that a
-// narrow peak is resolved; bilinear between entries. The cosine-weighted means Ā, B̄ are those
-// of the interpolated table, so that the coupled diffuse term below integrates exactly.
 // acos x for 0 ≤ x ≤ 1 within 2e-8 (Abramowitz & Stegun 1964, eq. 4.4.46): √(1 − x) times a
 // polynomial of degree 7. The view's shading looks the table up once a cut's node toward the
 // eye, where libm's acos took a tenth of the frame.
@@ -86,6 +81,11 @@ double acos_unit(double x) {
   return std::sqrt(1 - x) * p;
 }
 
+// The specular lobe's directional albedo E_s(μ) = ∫ F D V cos θ_l dω_l split by F0 (Schlick
+// is linear in it): E_s = F0 · A(μ, r) + B(μ, r), tabulated over μ = n·v and roughness r by
+// quadrature in half-vector space (dω_l = 4 (v·h) dω_h), θ_h broken at atan(kα) so that a
+// narrow peak is resolved; bilinear between entries. The cosine-weighted means Ā, B̄ are those
+// of the interpolated table, so that the coupled diffuse term below integrates exactly.
 class SpecularAlbedoTable {
  public:
   static const SpecularAlbedoTable& get() {
