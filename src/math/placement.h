@@ -4,7 +4,8 @@
 // placed it), counter-clockwise seen from above (the right-handed turn about +y), then moved
 // by `translate` (m, from where the scene put it). Pinned by the lighting-state tests of
 // exterior objects and emitters (tests/runtime/lighting_state_portals_test.cpp,
-// tests/sources/nearfield/nearfield_lighting_test.cpp).
+// tests/sources/nearfield/nearfield_lighting_test.cpp); VerticalTurn by
+// tests/math/vertical_turn_test.cpp.
 #pragma once
 
 #include <cmath>
@@ -38,6 +39,8 @@ struct VerticalTurn {
   explicit VerticalTurn(double rotate_deg)
       : c(std::cos(radians(rotate_deg))), s(std::sin(radians(rotate_deg))) {}
   Vec3 operator()(Vec3 v) const { return {c * v.x + s * v.z, v.y, -s * v.x + c * v.z}; }
+  // The turn undone (by −rotate_deg), with the same sine and cosine.
+  Vec3 inverse(Vec3 v) const { return {c * v.x - s * v.z, v.y, s * v.x + c * v.z}; }
 };
 
 // The same turn applied to a direction (a normal, an aim).

@@ -171,16 +171,16 @@ bool EnvironmentObjects::field_factor(std::size_t o, Vec3 x, Vec3 n, double fram
   const Vec3 v = placed_point(layout.bounds.centre, pivot, p) - x;
   const double d = length(v), radius = layout.bounds.radius;
   if (d > layout.sphere_radius(layout.spheres - 1) || dot(n, v) < -radius) return false;
-  // The object's bounding cone in the receiver's frame.
-  const Vec3 axis = placed_direction(d > 0 ? v / d : Vec3{0, 1, 0}, {{0, 0, 0}, -frame_deg});
+  // The object's bounding cone and the receiver's normal in the receiver's frame.
+  const VerticalTurn frame(frame_deg);
+  const Vec3 axis = frame.inverse(d > 0 ? v / d : Vec3{0, 1, 0});
   const double half = d > radius ? std::asin(radius / d) : kPi;
-  const Vec3 up = placed_direction(n, {{0, 0, 0}, -frame_deg});
+  const Vec3 up = frame.inverse(n);
   if (d < layout.sphere_radius(0)) {
     // Within the inner sphere the field has no samples: the object traced, leaf by leaf in its
     // cone above the horizon (a floor beside a box, a chair under a table), from one point in
     // packets of eight.
     const Vec3 origin = offset_from_surface(x, n);
-    const VerticalTurn turn(frame_deg);
     // One walk, recorded (a node outside as first · 64 + height, a leaf traced as leaf · 64 +
     // 63) and replayed once the packets are traced.
     constexpr std::uint64_t kTraced = 63;
@@ -193,7 +193,7 @@ bool EnvironmentObjects::field_factor(std::size_t o, Vec3 x, Vec3 n, double fram
         },
         [&](std::uint64_t leaf) {
           s.walk.push_back(leaf << 6 | kTraced);
-          s.directions.push_back(turn(tree_.leaves[leaf]));
+          s.directions.push_back(frame(tree_.leaves[leaf]));
         });
     s.blocked.resize(s.directions.size());
     placed.own[o].occluded_from(origin, s.directions, s.blocked);
@@ -286,14 +286,19 @@ const ValueCut* EnvironmentObjects::object_visibility(std::size_t q,
   return &object_products_[q];
 }
 
-std::span<const RgbMoment> EnvironmentObjects::object_moments(std::size_t a) const {
+const EnvironmentObjects::FrameLight* EnvironmentObjects::object_frame(std::size_t a) const {
   const auto it = turned_.find(turn_key(placements_.at(a).rotate_deg));
-  return it != turned_.end() ? std::span<const RgbMoment>(it->second.moments) : world_moments_;
+  return it != turned_.end() ? &it->second : nullptr;
+}
+
+std::span<const RgbMoment> EnvironmentObjects::object_moments(std::size_t a) const {
+  const FrameLight* f = object_frame(a);
+  return f != nullptr ? std::span<const RgbMoment>(f->moments) : world_moments_;
 }
 
 std::span<const Vec3> EnvironmentObjects::object_light_directions(std::size_t a) const {
-  const auto it = turned_.find(turn_key(placements_.at(a).rotate_deg));
-  return it != turned_.end() ? std::span<const Vec3>(it->second.directions) : world_directions_;
+  const FrameLight* f = object_frame(a);
+  return f != nullptr ? std::span<const Vec3>(f->directions) : world_directions_;
 }
 
 void EnvironmentObjects::trace_static(std::size_t q, const PlacedObjects& placed,

@@ -119,6 +119,12 @@ class EnvironmentObjects {
   const std::vector<std::uint32_t>& leaf_turn(double relative_deg) const;
   // The moments of the environment in a frame turned by `frame_deg`.
   std::span<const RgbMoment> frame_moments(double frame_deg);
+  struct FrameLight {  // the environment in a turned frame
+    std::vector<RgbMoment> moments;
+    std::vector<Vec3> directions;  // moment_direction of each node
+  };
+  // Object a's turned frame as last placed; null for the world frame's.
+  const FrameLight* object_frame(std::size_t a) const;
   // Into s.factors[first …]: the fields at x (normal n, frame turned by `frame` degrees) of the
   // objects other than `skip` that are moving (moving_) or, with `moving` false, that are not;
   // returns how many.
@@ -145,10 +151,6 @@ class EnvironmentObjects {
   const Environment* env_ = nullptr;
   std::span<const RgbMoment> world_moments_;
   std::span<const Vec3> world_directions_;
-  struct FrameLight {  // the environment in a turned frame
-    std::vector<RgbMoment> moments;
-    std::vector<Vec3> directions;  // moment_direction of each node
-  };
   std::map<std::int64_t, FrameLight> turned_;  // by turn, µ°
   mutable std::mutex turn_mutex_;
   mutable std::map<std::int64_t, std::unique_ptr<std::vector<std::uint32_t>>> turns_;
