@@ -189,16 +189,18 @@ void precompute_and_write(const Scene& scene, const nlohmann::json& document,
     const double n = std::max<double>(1, static_cast<double>(s.receivers));
     std::printf(
         "  portal \"%s\": %.2f m², %.2f m across; direct %d² a face: %.1f B/receiver "
-        "(%zu empty, %zu pulse %.1f B avg, %zu runs %.1f B avg, %zu Haar %.1f B avg; all pulse "
-        "%.1f, all runs %.1f, all Haar %.1f B/receiver), %.0f samples/receiver; indirect l < %d "
+        "(%zu empty, %zu pulse %.1f B avg, %zu runs %.1f B avg, %zu rectangles %.1f B avg, %zu "
+        "Haar %.1f B avg; all pulse %.1f, all runs %.1f, all rectangles %.1f, all Haar %.1f "
+        "B/receiver), %.0f samples/receiver; indirect l < %d "
         "RGB: %.0f B/receiver\n",
         t.geometry.name.c_str(), t.geometry.area, t.geometry.diameter, t.direct.face_size,
         bytes_per_receiver(s), s.empty, s.pulse,
         s.pulse ? double(s.pulse_bytes) / double(s.pulse) : 0.0, s.runs,
-        s.runs ? double(s.runs_bytes) / double(s.runs) : 0.0, s.haar,
+        s.runs ? double(s.runs_bytes) / double(s.runs) : 0.0, s.rectangles,
+        s.rectangles ? double(s.rectangles_bytes) / double(s.rectangles) : 0.0, s.haar,
         s.haar ? double(s.haar_bytes) / double(s.haar) : 0.0, double(s.all_pulse_bytes) / n,
-        double(s.all_runs_bytes) / n, double(s.all_haar_bytes) / n, double(t.direct.samples) / n,
-        p.portal_sh_order,
+        double(s.all_runs_bytes) / n, double(s.all_rectangles_bytes) / n,
+        double(s.all_haar_bytes) / n, double(t.direct.samples) / n, p.portal_sh_order,
         // The whole section's bytes: on several ranks, rank 0 holds its own blocks only.
         double(block_count(p.receivers.size()) *
                static_cast<std::size_t>(sh_count(p.portal_sh_order)) * 3 * kBlock *

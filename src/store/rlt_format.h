@@ -17,7 +17,7 @@ namespace relight {
 // Bump on any change to this layout or to the layout of any section type (the
 // registry in docs/rlt-format.md). Readers accept exactly this version: a .rlt file is
 // a cache that `relight precompute` regenerates from the scene.
-inline constexpr std::uint32_t kRltFormatVersion = 4;
+inline constexpr std::uint32_t kRltFormatVersion = 5;
 
 // "\x89RLT\r\n\x1A\n": the high byte catches 7-bit transfers, CR LF and LF catch
 // line-ending conversion, ^Z stops DOS `type` (the PNG signature's scheme).

@@ -184,7 +184,7 @@ TEST(RltRoundTrip, BytesOnDiskFollowTheDocumentedLayout) {
   // 64-byte header + 2 table entries, then "{}" at 192 padded to 256, then 70 bytes at 256.
   ASSERT_EQ(raw.size(), 384u);
   EXPECT_EQ(std::memcmp(raw.data(), "\x89RLT\r\n\x1a\n", 8), 0);
-  EXPECT_EQ(u32(8), 4u);             // version (docs/rlt-format.md, "Versioning")
+  EXPECT_EQ(u32(8), 5u);             // version (docs/rlt-format.md, "Versioning")
   EXPECT_EQ(u32(12), 0x01020304u);   // byte order mark
   EXPECT_EQ(raw[12], std::byte{4});  // little-endian on disk
   EXPECT_EQ(u32(16), 2u);            // section count

@@ -2,7 +2,7 @@
 // (Yue et al. 2009 §3.4, §4.1.2, issue 4 item 3): each receiver's cubemap of
 // light arriving through a portal (6·N² non-negative transfer weights t, one per cell, in the
 // layout of math/cubemap.h, geometry only: the outgoing radiance is Σ_cells t·L_shell) is
-// stored in whichever of three records is the smallest, all quantised to 8 bits against
+// stored in whichever of four records is the smallest, all quantised to 8 bits against
 // the receiver's maximum ("we calculate the maximum contribution among all the directions for
 // the vertex"):
 //  * pulse functions: the non-zero cells, each (cell index, uint8 t/S·255). Best when the
@@ -13,11 +13,18 @@
 //    sum reads eight consecutive cells at a time instead of looking up each (issue 18: the
 //    window sum at the streaming rate). Gaps of at most 2W cells inside a run are stored as
 //    zero levels, never more bytes than a new run;
+//  * face rectangles: the same pulse functions, as the bounding rectangle of the kept cells on
+//    each face they lie on and one uint8 level a cell of it, row by row (the cells outside the
+//    window's patch are zero levels). A window's patch fills ~90 % of its rectangles
+//    (window-mini and the dragon behind a window), so the record is a fifth smaller than the
+//    runs (five bytes a face instead of four a row), and its sum walks rows of one width, eight
+//    cells at a time, with no start or length to read and check a row (issue 18);
 //  * per-face Haar wavelets (math/haar.h): the non-zero coefficients, each (index, 8 bits).
 //    Best when the portal covers a large smooth region (a receiver near a window).
 // The run time (§5, Appendix Eq. 7) never decodes: it transforms the shell's radiance cubemap
 // once per state change (ShellCubemap) and then each receiver is a sparse dot product: pulse
-// Σ t_cell·L[cell] (over runs, the cells' radiance read as planes of consecutive floats);
+// Σ t_cell·L[cell] (over runs and rectangles, the cells' radiance read as planes of consecutive
+// floats);
 // Haar Σ T_k·H(L)_k, equal to the cell-domain dot product by Parseval (the transform is
 // orthonormal).
 //
@@ -36,13 +43,17 @@
 // Record byte layout (little-endian; records are stored back to back, no padding). W, the
 // width of a cell or coefficient index and of the count, is 2 (uint16) when 6·N² ≤ 65535
 // (N ≤ 64 for powers of two; the default N = 32) and 4 (uint32) otherwise:
-//   byte 0     kind: 0 empty, 1 pulse, 2 Haar, 3 pulse runs. An all-zero receiver is this
-//              one byte.
+//   byte 0     kind: 0 empty, 1 pulse, 2 Haar, 3 pulse runs, 4 face rectangles. An all-zero
+//              receiver is this one byte.
 //   pulse:     float32 S ≥ max t | W count m | m·W indices | m uint8 q: t = q·S/255
 //   runs:      float32 S ≥ max t | W run count r | W level count m | r × (W start, W length)
 //              | m uint8 q, the runs' cells in order: t = q·S/255. 1 ≤ r ≤ m ≤ 6·N²; each
 //              length ≥ 1, the lengths sum to m, a run ends by 6·N² and starts at or after the
 //              previous run's end
+//   rectangles (N ≤ 256): float32 S ≥ max t | uint8 rectangle count f | f × (uint8 face, x0,
+//              y0, w − 1, h − 1) | m = Σ w·h uint8 q, each rectangle's cells row by row (cell
+//              (face·N + y0 + row)·N + x0 + column): t = q·S/255. 1 ≤ f ≤ 6, faces strictly
+//              increasing, x0 + w ≤ N and y0 + h ≤ N
 //   Haar:      float32 S₀ ≥ max face mean | float32 S_d ≥ max |detail amplitude| (0 when
 //              there is none) | W count m | m·W indices | m values: for a face mean (index
 //              in face 0) uint8 q, a = q·S₀/255; for a detail int8 q ∈ [−127, 127],
@@ -51,12 +62,12 @@
 // Indices are strictly increasing: a cell's (face·N + row)·N + column; for Haar the
 // coefficient (r, c) of face f is at the same (f·N + r)·N + c (math/haar.h's Mallat layout).
 // A record is 1 byte (empty), 1 + 4 + W + m·(W + 1) bytes (pulse: 7 + 3m for N ≤ 64),
-// 1 + 8 + W + m·(W + 1) bytes (Haar: 11 + 3m) or 1 + 4 + 2W + 2W·r + m bytes (runs: 9 + 4r + m);
-// 1 ≤ m ≤ 6·N².
+// 1 + 8 + W + m·(W + 1) bytes (Haar: 11 + 3m), 1 + 4 + 2W + 2W·r + m bytes (runs: 9 + 4r + m)
+// or 6 + 5f + m bytes (rectangles); 1 ≤ m ≤ 6·N².
 //
 // Error bounds (τ the relative threshold, default 0; each value is rounded to the nearest
 // level or dropped when it rounds to 0 or lies below τ × its scale):
-//  * pulse and runs, per cell: |t̂ − t| ≤ ε_p·S, ε_p = max(τ, 1/510).
+//  * pulse, runs and rectangles, per cell: |t̂ − t| ≤ ε_p·S, ε_p = max(τ, 1/510).
 //  * Haar, per coefficient amplitude: face means |â − a| ≤ e₀ = max(τ, 1/510)·S₀, details
 //    ≤ e_d = max(τ, 1/254)·S_d; per cell |t̂ − t| ≤ e₀ + 3·log2 N·e_d, since each cell lies
 //    under one scaling function and three details per level, each of magnitude 1/S_k there
@@ -64,11 +75,12 @@
 //    S₀ ≤ max t and S_d ≤ max t / 2, so this is ≤ (1/510 + 3·log2 N/508)·max t at τ = 0
 //    (≈ 0.032·max t at N = 32).
 //  * Σ t̂ vs Σ t (a uniform shell): ≤ N²·e₀ per face holding a mean (details sum to 0).
-//  * dot product with radiance L (each channel): pulse, runs ≤ ε_p·S·Σ_{t>0} |L|; Haar
+//  * dot product with radiance L (each channel): pulse, runs, rectangles ≤ ε_p·S·Σ_{t>0} |L|; Haar
 //    ≤ Σ_k e_k·|S_k·H(L)_k| (ShellCubemap::haar; e_k = e₀ or e_d), by Parseval.
 // Decoded Haar cells can be slightly negative; the dot product is linear and keeps them.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -78,12 +90,18 @@
 
 namespace relight {
 
-enum class CubemapCodeKind : std::uint8_t { kEmpty = 0, kPulse = 1, kHaar = 2, kRuns = 3 };
+enum class CubemapCodeKind : std::uint8_t {
+  kEmpty = 0,
+  kPulse = 1,
+  kHaar = 2,
+  kRuns = 3,
+  kRectangles = 4
+};
 
-// Which record the encoder writes: the smallest (ties go to runs, then pulse: the cheapest to
-// sum, and pulse functions are exact to their 8 bits where Haar's details add up), or one forced
-// (to report the alternatives, or for tests).
-enum class CubemapBasisChoice { kSmaller, kPulse, kHaar, kRuns };
+// Which record the encoder writes: the smallest (ties go to rectangles, then runs, then pulse:
+// the cheapest to sum first, and pulse functions are exact to their 8 bits where Haar's details
+// add up), or one forced (to report the alternatives, or for tests; rectangles need N ≤ 256).
+enum class CubemapBasisChoice { kSmaller, kPulse, kHaar, kRuns, kRectangles };
 
 struct CubemapEncodeOptions {
   // Relative threshold τ ∈ [0, 1]: pulse drops cells t < τ·S; Haar drops face means below τ·S₀
@@ -97,13 +115,18 @@ struct CubemapEncodeOptions {
 constexpr std::size_t cubemap_code_index_bytes(int n) {
   return std::size_t{6} * n * n <= 65535 ? 2 : 4;
 }
-// Bytes of a record of m entries (m = 0: the 1-byte empty record, whatever the kind); for runs,
-// m levels in `runs` runs.
+// Whether face rectangles can hold a face of size N (their coordinates are bytes).
+constexpr bool cubemap_rectangles_fit(int n) {
+  return n <= 256;
+}
+// Bytes of a record of m entries (m = 0: the 1-byte empty record, whatever the kind); for runs
+// and rectangles, m levels in `parts` runs or rectangles.
 constexpr std::size_t cubemap_record_bytes(int n, CubemapCodeKind kind, std::size_t entries,
-                                           std::size_t runs = 0) {
+                                           std::size_t parts = 0) {
   if (entries == 0 || kind == CubemapCodeKind::kEmpty) return 1;
   const std::size_t w = cubemap_code_index_bytes(n);
-  if (kind == CubemapCodeKind::kRuns) return 1 + 4 + 2 * w + 2 * w * runs + entries;
+  if (kind == CubemapCodeKind::kRuns) return 1 + 4 + 2 * w + 2 * w * parts + entries;
+  if (kind == CubemapCodeKind::kRectangles) return 1 + 4 + 1 + 5 * parts + entries;
   const std::size_t scales = kind == CubemapCodeKind::kHaar ? 8 : 4;
   return 1 + scales + w * (entries + 1) + entries;
 }
@@ -111,12 +134,13 @@ constexpr std::size_t cubemap_record_bytes(int n, CubemapCodeKind kind, std::siz
 // What encoding one receiver wrote, and what each basis would have cost.
 struct EncodedReceiver {
   CubemapCodeKind kind = CubemapCodeKind::kEmpty;
-  std::size_t bytes = 0;        // appended to the buffer
-  std::size_t pulse_bytes = 0;  // the pulse record's size
-  std::size_t haar_bytes = 0;   // the Haar record's size
-  std::size_t runs_bytes = 0;   // the run record's size
-  float scale = 0;              // pulse or runs S, or Haar S₀, of the record written (0: empty)
-  float detail_scale = 0;       // Haar S_d
+  std::size_t bytes = 0;             // appended to the buffer
+  std::size_t pulse_bytes = 0;       // the pulse record's size
+  std::size_t haar_bytes = 0;        // the Haar record's size
+  std::size_t runs_bytes = 0;        // the run record's size
+  std::size_t rectangles_bytes = 0;  // the rectangle record's size (0 when N > 256: none)
+  float scale = 0;  // pulse, runs or rectangles S, or Haar S₀, of the record written (0: empty)
+  float detail_scale = 0;  // Haar S_d
 };
 
 // Reused between receivers so that encoding allocates nothing once warm.
@@ -124,6 +148,8 @@ struct CubemapEncodeScratch {
   std::vector<double> coefficients;
   std::vector<double> row;
   std::vector<std::uint32_t> runs;  // start, end of each run
+  // The kept cells' bounding rectangle on each face: x0, y0, x1, y1 inclusive (x0 > x1: none).
+  std::array<std::array<int, 4>, 6> rectangles{};
 };
 
 // Appends one receiver's record to `out`. cells: 6·N² finite values ≥ 0; N a power of two.
@@ -139,12 +165,14 @@ EncodedReceiver encode_receiver_cubemap(int n, std::span<const double> cells,
 // A parsed record; spans point into the bytes given to parse_cubemap_record.
 struct CubemapRecord {
   CubemapCodeKind kind = CubemapCodeKind::kEmpty;
-  float scale = 0;                        // pulse and runs S, Haar S₀
+  float scale = 0;                        // pulse, runs and rectangles S, Haar S₀
   float detail_scale = 0;                 // Haar S_d
-  std::size_t count = 0;                  // entries (runs: levels)
+  std::size_t count = 0;                  // entries (runs, rectangles: levels)
   std::size_t runs = 0;                   // runs only
+  std::size_t rectangles = 0;             // rectangles only
   std::span<const std::uint8_t> indices;  // count·W bytes, little-endian (runs: the runs'
-                                          // runs·2·W bytes of start, length)
+                                          // runs·2·W bytes of start, length; rectangles: their
+                                          // 5·rectangles bytes of face, x0, y0, w − 1, h − 1)
   std::span<const std::uint8_t> values;   // count bytes: uint8, or int8 for Haar details
   std::size_t bytes = 1;                  // the whole record
 };
@@ -155,8 +183,9 @@ struct CubemapRecord {
 CubemapRecord parse_cubemap_record(int n, std::span<const std::uint8_t> bytes);
 
 // Decodes the record at bytes[0] into 6·N² cell values; returns the record's size. scratch
-// holds at least N values. InputError for an index out of range or not increasing, or runs
-// out of range, overlapping or not covering the levels.
+// holds at least N values. InputError for an index out of range or not increasing, runs out of
+// range, overlapping or not covering the levels, or rectangles beyond their face or out of
+// order.
 std::size_t decode_receiver_cubemap(int n, std::span<const std::uint8_t> bytes,
                                     std::span<double> cells, std::span<double> scratch);
 std::vector<double> decode_receiver_cubemap(int n, std::span<const std::uint8_t> bytes);
@@ -173,9 +202,9 @@ struct ShellCubemap {
   std::vector<Rgb> cells;  // radiance per cell (pulse domain)
   std::vector<Rgb> haar;   // per face: orthonormal Haar coefficient k × S_k
   std::vector<ShellTexel> cells_float, haar_float;  // the same as floats
-  // The cells as three planes of floats (r, g, b) for the runs' sum, which reads eight
-  // consecutive cells at a time: 6·N² + kPlanePadding each, the padding zero, so that the cells
-  // read past a run that ends the cubemap stay inside (their levels are 0).
+  // The cells as three planes of floats (r, g, b) for the runs' and rectangles' sums, which read
+  // eight consecutive cells at a time: 6·N² + kPlanePadding each, the padding zero, so that the
+  // cells read past a run or row that ends the cubemap stay inside (their levels are 0).
   static constexpr std::size_t kPlanePadding = 8;
   std::vector<float> planes[3];
 };
@@ -185,25 +214,27 @@ ShellCubemap prepare_shell_cubemap(int n, std::span<const Rgb> radiance);
 
 // Σ_cells t̂·L for the record at bytes[0] (Eq. 7), as a sparse dot product in the record's
 // basis, summed in float (the entries are 8-bit: float's 2⁻²⁴ is far below their 1/510).
-// InputError for an index out of range, or runs out of range, overlapping or not covering the
-// levels.
+// InputError for an index out of range, runs out of range, overlapping or not covering the
+// levels, or rectangles beyond their face or out of order.
 Rgb dot_receiver_cubemap(std::span<const std::uint8_t> bytes, const ShellCubemap& shell);
 
 // For each i < offsets.size() − 1, adds the record at bytes [offsets[i], offsets[i + 1]) of
 // `records`'s Σ t̂·L (dot_receiver_cubemap's, to float rounding) to red[i], green[i], blue[i]: a
-// block of receivers' records in one call, a run record parsed and checked inline. InputError
-// for offsets out of order or beyond `records`, or a malformed record.
+// block of receivers' records in one call, run and rectangle records parsed and checked inline.
+// InputError for offsets out of order or beyond `records`, or a malformed record.
 void add_receiver_cubemaps(std::span<const std::uint8_t> records,
                            std::span<const std::uint64_t> offsets, const ShellCubemap& shell,
                            std::span<float> red, std::span<float> green, std::span<float> blue);
 
 // Bytes and basis split over a set of receivers.
 struct CubemapEncodingStats {
-  std::size_t receivers = 0, empty = 0, pulse = 0, haar = 0, runs = 0;
-  std::size_t bytes = 0;                                        // all records
-  std::size_t pulse_bytes = 0, haar_bytes = 0, runs_bytes = 0;  // records of each kind
-  // Had every receiver used one kind (add_receiver only; empty: 1 byte).
-  std::size_t all_pulse_bytes = 0, all_haar_bytes = 0, all_runs_bytes = 0;
+  std::size_t receivers = 0, empty = 0, pulse = 0, haar = 0, runs = 0, rectangles = 0;
+  std::size_t bytes = 0;  // all records
+  // Records of each kind.
+  std::size_t pulse_bytes = 0, haar_bytes = 0, runs_bytes = 0, rectangles_bytes = 0;
+  // Had every receiver used one kind (add_receiver only; empty: 1 byte; rectangles: 0 when
+  // N > 256).
+  std::size_t all_pulse_bytes = 0, all_haar_bytes = 0, all_runs_bytes = 0, all_rectangles_bytes = 0;
 };
 void add_receiver(CubemapEncodingStats& stats, const EncodedReceiver& receiver);
 // `part`'s counts and bytes added to `sum`'s (chunks or ranks of one portal).

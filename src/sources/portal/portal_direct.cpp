@@ -268,7 +268,8 @@ PortalDirect compute_portal_direct(const Receivers& receivers, const std::vector
                                  .bytes = 1,
                                  .pulse_bytes = 1,
                                  .haar_bytes = 1,
-                                 .runs_bytes = 1});
+                                 .runs_bytes = 1,
+                                 .rectangles_bytes = cubemap_rectangles_fit(n) ? 1u : 0u});
         } else {
           out.encoded.push_back(
               encode_receiver_cubemap(n, scratch.cells, {}, out.bytes, scratch.encode));

@@ -18,13 +18,16 @@ nlohmann::json encoding_stats_json(const CubemapEncodingStats& s) {
           {"pulse", s.pulse},
           {"haar", s.haar},
           {"runs", s.runs},
+          {"rectangles", s.rectangles},
           {"bytes", s.bytes},
           {"pulse_bytes", s.pulse_bytes},
           {"haar_bytes", s.haar_bytes},
           {"runs_bytes", s.runs_bytes},
+          {"rectangles_bytes", s.rectangles_bytes},
           {"all_pulse_bytes", s.all_pulse_bytes},
           {"all_haar_bytes", s.all_haar_bytes},
-          {"all_runs_bytes", s.all_runs_bytes}};
+          {"all_runs_bytes", s.all_runs_bytes},
+          {"all_rectangles_bytes", s.all_rectangles_bytes}};
 }
 
 nlohmann::json vec3_json(Vec3 v) {

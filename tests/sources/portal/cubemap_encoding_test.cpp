@@ -1,4 +1,4 @@
-// Per-receiver pulse / pulse-run / Haar encoding of the direct portal cubemap
+// Per-receiver pulse / pulse-run / face-rectangle / Haar encoding of the direct portal cubemap
 // (sources/portal/cubemap_encoding.h, Yue et al. 2009 §4.1.2): round trips within the stated 8-bit
 // bounds, the run-time sparse dot product against the dense one and against the unquantised vector,
 // the record chooser, the byte counts, and the sizes measured on sample receivers (a far window, a
@@ -97,6 +97,22 @@ EncodedReceiver encode(int n, const std::vector<double>& t, std::vector<std::uin
   options.choice = choice;
   options.threshold = threshold;
   return encode_receiver_cubemap(n, t, options, out);
+}
+
+const char* kind_name(CubemapCodeKind kind) {
+  switch (kind) {
+    case CubemapCodeKind::kEmpty:
+      return "empty";
+    case CubemapCodeKind::kPulse:
+      return "pulse";
+    case CubemapCodeKind::kHaar:
+      return "haar";
+    case CubemapCodeKind::kRuns:
+      return "runs";
+    case CubemapCodeKind::kRectangles:
+      return "rectangles";
+  }
+  return "?";
 }
 
 TEST(CubemapEncoding, AllZeroReceiverIsTheOneByteEmptyRecord) {
@@ -200,8 +216,8 @@ TEST(CubemapEncoding, SparseDotEqualsDenseDotOfDecodedTo1e6) {
   const std::vector<std::vector<double>> inputs = {sparse_cubemap(n, 20, rng), sky_cubemap(n),
                                                    window_cubemap(n, 1.0, 2.0, 0.5, 2.5)};
   for (const auto& t : inputs)
-    for (CubemapBasisChoice choice :
-         {CubemapBasisChoice::kPulse, CubemapBasisChoice::kHaar, CubemapBasisChoice::kRuns}) {
+    for (CubemapBasisChoice choice : {CubemapBasisChoice::kPulse, CubemapBasisChoice::kHaar,
+                                      CubemapBasisChoice::kRuns, CubemapBasisChoice::kRectangles}) {
       std::vector<std::uint8_t> out;
       encode(n, t, out, choice);
       const Rgb sparse = dot_receiver_cubemap(out, shell);
@@ -318,10 +334,63 @@ TEST(CubemapEncoding, RunDotOfEveryLengthAndGapEqualsDenseDotTo1e6AndChecksEvery
     }
 }
 
-// A block's records summed in one call (the run records parsed inline) add what
+// The rectangles' sum (a row eight cells at a time, its last 1-7 read as the bytes that end it)
+// against the decoded record's dense dot, for rectangles of every width from 1 to N at offsets
+// that make every remainder, one to three rows, on one to three faces, the last one ending at
+// the cubemap's last cell (the planes' padding read); and a rectangle record whose rectangles
+// leave their face, repeat or reorder faces, number 0 or 7, or lack levels is an InputError.
+TEST(CubemapEncoding, RectangleDotOfEveryWidthAndPlaceEqualsDenseDotTo1e6AndChecksEveryRectangle) {
+  const int n = 32;
+  Pcg32 rng(37, 38);
+  const std::vector<Rgb> l = random_radiance(n, rng);
+  const ShellCubemap shell = prepare_shell_cubemap(n, l);
+  const std::size_t nn = static_cast<std::size_t>(n) * n;
+  for (int width = 1; width <= n; ++width)
+    for (int height = 1; height <= 3; ++height)
+      for (std::size_t faces = 1; faces <= 3; ++faces) {
+        std::vector<double> t(cubemap_texel_count(n), 0.0);
+        for (std::size_t f = 0; f < faces; ++f) {
+          const std::size_t face = 5 - 2 * f;
+          const int x0 = f == 0 ? n - width : (width + height) % (n - width + 1);
+          const int y0 = f == 0 ? n - height : static_cast<int>(f);
+          for (int y = y0; y < y0 + height; ++y)
+            for (int x = x0; x < x0 + width; ++x)
+              t[face * nn + static_cast<std::size_t>(y) * n + x] = 0.1 + rng.next_double();
+        }
+        std::vector<std::uint8_t> out;
+        ASSERT_EQ(encode(n, t, out, CubemapBasisChoice::kRectangles).kind,
+                  CubemapCodeKind::kRectangles);
+        const CubemapRecord rec = parse_cubemap_record(n, out);
+        ASSERT_EQ(rec.rectangles, faces);
+        ASSERT_EQ(rec.count, faces * static_cast<std::size_t>(width * height));
+        EXPECT_LE(max_abs_diff(decode_receiver_cubemap(n, out), t),
+                  rec.scale / 510.0 * (1 + 1e-12));
+        const Rgb sparse = dot_receiver_cubemap(out, shell);
+        const Rgb dense = dense_dot(decode_receiver_cubemap(n, out), l);
+        EXPECT_NEAR(sparse.r / dense.r, 1.0, 1e-6) << width << " " << height << " " << faces;
+        EXPECT_NEAR(sparse.g / dense.g, 1.0, 1e-6) << width << " " << height << " " << faces;
+        EXPECT_NEAR(sparse.b / dense.b, 1.0, 1e-6) << width << " " << height << " " << faces;
+        // Rectangle j's face, x0, y0, w − 1, h − 1 are bytes 6 + 5j … 10 + 5j, faces increasing.
+        const std::size_t first = 6;
+        std::vector<std::vector<std::uint8_t>> bad(5, out);
+        bad[0][first + 1] = static_cast<std::uint8_t>(n - width + 1);   // leaves its face's rows
+        bad[1][first + 2] = static_cast<std::uint8_t>(n - height + 1);  // leaves its face
+        bad[2][first] = 6;                                              // no seventh face
+        bad[3][5] = 0;                                                  // no rectangles
+        bad[4][5] = 7;
+        bad.push_back(std::vector<std::uint8_t>(out.begin(), out.end() - 1));  // a level short
+        if (faces > 1) bad.push_back(out), bad.back()[first + 5] = bad.back()[first];  // repeated
+        for (std::size_t b = 0; b < bad.size(); ++b) {
+          EXPECT_THROW(dot_receiver_cubemap(bad[b], shell), InputError) << width << " " << b;
+          EXPECT_THROW(decode_receiver_cubemap(n, bad[b]), InputError) << width << " " << b;
+        }
+      }
+}
+
+// A block's records summed in one call (the run and rectangle records parsed inline) add what
 // dot_receiver_cubemap gives each, to float rounding (4 ulps: the add may fuse with the
 // scale's multiply), whatever the kinds around them; offsets out of order or
-// beyond the records, and a malformed run record, are InputErrors.
+// beyond the records, and a malformed run or rectangle record, are InputErrors.
 TEST(CubemapEncoding, BlockOfRecordsAddsEachRecordsDotExactly) {
   const int n = 32;
   Pcg32 rng(35, 36);
@@ -333,8 +402,8 @@ TEST(CubemapEncoding, BlockOfRecordsAddsEachRecordsDotExactly) {
       std::vector<double>(cubemap_texel_count(n), 0.0), window_cubemap(n, 1.0, 2.0, 0.5, 2.5),
       sky_cubemap(n)};
   for (const auto& t : inputs)
-    for (CubemapBasisChoice choice :
-         {CubemapBasisChoice::kSmaller, CubemapBasisChoice::kRuns, CubemapBasisChoice::kHaar}) {
+    for (CubemapBasisChoice choice : {CubemapBasisChoice::kSmaller, CubemapBasisChoice::kRuns,
+                                      CubemapBasisChoice::kHaar, CubemapBasisChoice::kRectangles}) {
       encode(n, t, records, choice);
       offsets.push_back(records.size());
     }
@@ -358,6 +427,10 @@ TEST(CubemapEncoding, BlockOfRecordsAddsEachRecordsDotExactly) {
   ASSERT_EQ(broken[offsets[1]], static_cast<std::uint8_t>(CubemapCodeKind::kRuns));
   broken[offsets[1] + 7] = 0xff;  // a level count beyond the record
   EXPECT_THROW(add_receiver_cubemaps(broken, offsets, shell, red, green, blue), InputError);
+  broken = records;
+  ASSERT_EQ(broken[offsets[3]], static_cast<std::uint8_t>(CubemapCodeKind::kRectangles));
+  broken[offsets[3] + 6 + 3] = 0xff;  // the first rectangle 256 cells wide
+  EXPECT_THROW(add_receiver_cubemaps(broken, offsets, shell, red, green, blue), InputError);
   EXPECT_THROW(
       add_receiver_cubemaps(records, offsets, shell, std::span(red).first(count - 1), green, blue),
       std::invalid_argument);
@@ -373,8 +446,8 @@ TEST(CubemapEncoding, DotWithinQuantisationBoundOfOriginal) {
   const std::vector<std::vector<double>> inputs = {sparse_cubemap(n, 20, rng), sky_cubemap(n),
                                                    window_cubemap(n, 1.0, 2.0, 0.5, 2.5)};
   for (const auto& t : inputs)
-    for (CubemapBasisChoice choice :
-         {CubemapBasisChoice::kPulse, CubemapBasisChoice::kHaar, CubemapBasisChoice::kRuns}) {
+    for (CubemapBasisChoice choice : {CubemapBasisChoice::kPulse, CubemapBasisChoice::kHaar,
+                                      CubemapBasisChoice::kRuns, CubemapBasisChoice::kRectangles}) {
       std::vector<std::uint8_t> out;
       const EncodedReceiver r = encode(n, t, out, choice);
       const Rgb got = dot_receiver_cubemap(out, shell), exact = dense_dot(t, l);
@@ -394,10 +467,7 @@ TEST(CubemapEncoding, DotWithinQuantisationBoundOfOriginal) {
       EXPECT_LE(std::abs(got.g - exact.g), bound.g);
       EXPECT_LE(std::abs(got.b - exact.b), bound.b);
       const double rel = std::abs(got.g / exact.g - 1.0);
-      std::printf("[dot] %s %s relative error %.2e\n",
-                  r.kind == CubemapCodeKind::kPulse  ? "pulse"
-                  : r.kind == CubemapCodeKind::kRuns ? "runs"
-                                                     : "haar",
+      std::printf("[dot] %s %s relative error %.2e\n", kind_name(r.kind),
                   &t == &inputs[0]   ? "sparse"
                   : &t == &inputs[1] ? "sky"
                                      : "window",
@@ -405,21 +475,32 @@ TEST(CubemapEncoding, DotWithinQuantisationBoundOfOriginal) {
     }
 }
 
-// The smallest record wins: scattered cells as pulse functions, a window's patch as runs (about
-// half the pulse record), a cubemap constant on each face as Haar (six face means).
-TEST(CubemapEncoding, ChooserPicksPulseForScatteredCellsRunsForAWindowAndHaarForFlatFaces) {
+// The smallest record wins: scattered cells as pulse functions, a window's patch as rectangles
+// (under the runs, about half the pulse record), a diagonal line of cells as runs (its
+// rectangle is mostly zero levels), a cubemap constant on each face as Haar (six face means).
+TEST(CubemapEncoding, ChooserPicksPulseForScatteredCellsRectanglesForAWindowAndHaarForFlatFaces) {
   const int n = 32;
   Pcg32 rng(15, 16);
   std::vector<std::uint8_t> out;
   const EncodedReceiver few = encode(n, sparse_cubemap(n, 10, rng), out);
   EXPECT_EQ(few.kind, CubemapCodeKind::kPulse);
   EXPECT_LT(few.pulse_bytes, few.runs_bytes);
+  EXPECT_LT(few.pulse_bytes, few.rectangles_bytes);
   EXPECT_LT(few.pulse_bytes, few.haar_bytes);
   EXPECT_LE(few.bytes, cubemap_record_bytes(n, CubemapCodeKind::kPulse, 10));
   const EncodedReceiver window = encode(n, window_cubemap(n, 2.0, 1.0, 1.0, 2.0), out);
-  EXPECT_EQ(window.kind, CubemapCodeKind::kRuns);
+  EXPECT_EQ(window.kind, CubemapCodeKind::kRectangles);
+  EXPECT_LT(window.rectangles_bytes, window.runs_bytes);
   EXPECT_LT(window.runs_bytes, 0.6 * static_cast<double>(window.pulse_bytes));  // 105 of 199 B
   EXPECT_LT(window.runs_bytes, window.haar_bytes);
+  std::vector<double> diagonal(cubemap_texel_count(n), 0.0);
+  for (int i = 0; i < 8; ++i)
+    for (int j = 0; j < 3; ++j) diagonal[static_cast<std::size_t>(4 * i * (n + 1) + j)] = 1.0;
+  const EncodedReceiver line = encode(n, diagonal, out);
+  EXPECT_EQ(line.kind, CubemapCodeKind::kRuns);  // 8 runs of 3: 65 B; a 31 × 29 rectangle
+  EXPECT_EQ(line.bytes, cubemap_record_bytes(n, CubemapCodeKind::kRuns, 24, 8));
+  EXPECT_EQ(line.rectangles_bytes,
+            cubemap_record_bytes(n, CubemapCodeKind::kRectangles, 31 * 29, 1));
   std::vector<double> flat(cubemap_texel_count(n));
   for (std::size_t k = 0; k < flat.size(); ++k) flat[k] = 1.0 + static_cast<double>(k / (n * n));
   const EncodedReceiver faces = encode(n, flat, out);
@@ -427,6 +508,8 @@ TEST(CubemapEncoding, ChooserPicksPulseForScatteredCellsRunsForAWindowAndHaarFor
   EXPECT_EQ(faces.bytes, cubemap_record_bytes(n, CubemapCodeKind::kHaar, 6));
   EXPECT_EQ(faces.pulse_bytes, cubemap_record_bytes(n, CubemapCodeKind::kPulse, flat.size()));
   EXPECT_EQ(faces.runs_bytes, cubemap_record_bytes(n, CubemapCodeKind::kRuns, flat.size(), 1));
+  EXPECT_EQ(faces.rectangles_bytes,
+            cubemap_record_bytes(n, CubemapCodeKind::kRectangles, flat.size(), 6));
 }
 
 TEST(CubemapEncoding, BytesCountedMatchTheBufferAndStats) {
@@ -441,17 +524,24 @@ TEST(CubemapEncoding, BytesCountedMatchTheBufferAndStats) {
   for (const auto& t : inputs) {
     const std::size_t before = buffer.size();
     const EncodedReceiver r = encode_receiver_cubemap(n, t, {}, buffer, scratch);
+    std::printf("[bytes] %s %zu B (pulse %zu, runs %zu, rectangles %zu, haar %zu)\n",
+                kind_name(r.kind), r.bytes, r.pulse_bytes, r.runs_bytes, r.rectangles_bytes,
+                r.haar_bytes);
     EXPECT_EQ(r.bytes, buffer.size() - before);
-    EXPECT_EQ(r.bytes, std::min({r.pulse_bytes, r.haar_bytes, r.runs_bytes}));
+    EXPECT_EQ(r.bytes, std::min({r.pulse_bytes, r.haar_bytes, r.runs_bytes, r.rectangles_bytes}));
     const CubemapRecord rec = parse_cubemap_record(n, std::span(buffer).subspan(before));
     EXPECT_EQ(rec.bytes, r.bytes);
-    EXPECT_EQ(rec.bytes, cubemap_record_bytes(n, rec.kind, rec.count, rec.runs));
+    EXPECT_EQ(rec.bytes,
+              cubemap_record_bytes(n, rec.kind, rec.count,
+                                   rec.kind == CubemapCodeKind::kRuns ? rec.runs : rec.rectangles));
     if (rec.kind == CubemapCodeKind::kPulse) {
       EXPECT_EQ(rec.bytes, 7 + 3 * rec.count);
     } else if (rec.kind == CubemapCodeKind::kHaar) {
       EXPECT_EQ(rec.bytes, 11 + 3 * rec.count);
     } else if (rec.kind == CubemapCodeKind::kRuns) {
       EXPECT_EQ(rec.bytes, 9 + 4 * rec.runs + rec.count);
+    } else if (rec.kind == CubemapCodeKind::kRectangles) {
+      EXPECT_EQ(rec.bytes, 6 + 5 * rec.rectangles + rec.count);
     }
     add_receiver(added, r);
   }
@@ -463,18 +553,26 @@ TEST(CubemapEncoding, BytesCountedMatchTheBufferAndStats) {
   EXPECT_EQ(walked.pulse, added.pulse);
   EXPECT_EQ(walked.haar, added.haar);
   EXPECT_EQ(walked.runs, added.runs);
-  EXPECT_EQ(walked.pulse, 2u);  // the scattered cells and the far window's few
-  EXPECT_EQ(walked.runs, 2u);   // the sky and the near window
-  EXPECT_EQ(walked.pulse + walked.haar + walked.runs + walked.empty, 5u);
-  EXPECT_EQ(walked.pulse_bytes + walked.haar_bytes + walked.runs_bytes + 1, buffer.size());
+  EXPECT_EQ(walked.rectangles, added.rectangles);
+  EXPECT_EQ(walked.pulse, 1u);       // the scattered cells
+  EXPECT_EQ(walked.runs, 1u);        // the sky (two bytes under its rectangles)
+  EXPECT_EQ(walked.rectangles, 2u);  // the far window's four cells and the near window
+  EXPECT_EQ(walked.pulse + walked.haar + walked.runs + walked.rectangles + walked.empty, 5u);
+  EXPECT_EQ(
+      walked.pulse_bytes + walked.haar_bytes + walked.runs_bytes + walked.rectangles_bytes + 1,
+      buffer.size());
   EXPECT_EQ(walked.pulse_bytes, added.pulse_bytes);
   EXPECT_EQ(walked.runs_bytes, added.runs_bytes);
+  EXPECT_EQ(walked.rectangles_bytes, added.rectangles_bytes);
   EXPECT_GE(added.all_pulse_bytes, added.bytes);
   EXPECT_GE(added.all_haar_bytes, added.bytes);
   EXPECT_GE(added.all_runs_bytes, added.bytes);
+  EXPECT_GE(added.all_rectangles_bytes, added.bytes);
   CubemapEncodingStats twice = added;
   add_stats(twice, added);
   EXPECT_EQ(twice.runs_bytes, 2 * added.runs_bytes);
+  EXPECT_EQ(twice.rectangles, 2 * added.rectangles);
+  EXPECT_EQ(twice.all_rectangles_bytes, 2 * added.all_rectangles_bytes);
   EXPECT_EQ(twice.all_haar_bytes, 2 * added.all_haar_bytes);
   EXPECT_EQ(twice.receivers, 10u);
   EXPECT_DOUBLE_EQ(bytes_per_receiver(walked), buffer.size() / 5.0);
@@ -507,9 +605,10 @@ TEST(CubemapEncoding, WideIndicesForLargeFaces) {
   t[70000] = 2.0;
   t[98303] = 1.0;
   std::vector<std::uint8_t> out;
-  const EncodedReceiver r = encode(n, t, out);
+  const EncodedReceiver r = encode(n, t, out, CubemapBasisChoice::kPulse);
   EXPECT_EQ(r.kind, CubemapCodeKind::kPulse);
   EXPECT_EQ(out.size(), 9u + 5 * 2);
+  EXPECT_EQ(r.rectangles_bytes, 6u + 5 * 2 + 2);  // the chooser's: a cell on each of two faces
   const std::vector<double> d = decode_receiver_cubemap(n, out);
   EXPECT_NEAR(d[70000], 2.0, 2.0 / 510);
   EXPECT_NEAR(d[98303], 1.0, 2.0 / 510);
@@ -522,13 +621,34 @@ TEST(CubemapEncoding, WideIndicesForLargeFaces) {
   // A run record there: 1 + 4 + 8 + 8r + m bytes, summed by the portable loop.
   for (std::size_t k = 70000; k < 70030; ++k) t[k] = 1.0 + static_cast<double>(k % 7);
   out.clear();
-  const EncodedReceiver runs = encode(n, t, out);
+  const EncodedReceiver runs = encode(n, t, out, CubemapBasisChoice::kRuns);
   EXPECT_EQ(runs.kind, CubemapCodeKind::kRuns);
   EXPECT_EQ(out.size(), 13u + 8 * 2 + 30 + 1);  // 70000-70029 and 98303
   const Rgb w = dot_receiver_cubemap(out, shell);
   const Rgb wide = dense_dot(decode_receiver_cubemap(n, out), l);
   EXPECT_NEAR(w.r, wide.r, 1e-6 * std::abs(wide.r));
   EXPECT_NEAR(w.b, wide.b, 1e-6 * std::abs(wide.b));
+  // Rectangles there (their coordinates are bytes, whatever W): rows 34-35 of face 4 whole
+  // (cells 112-127 of one, 0-13 of the next) and the last cell of face 5, 6 + 5f + m bytes.
+  out.clear();
+  ASSERT_EQ(encode(n, t, out, CubemapBasisChoice::kRectangles).kind, CubemapCodeKind::kRectangles);
+  EXPECT_EQ(out.size(), 6u + 5 * 2 + 2 * 128 + 1);
+  const Rgb rect = dot_receiver_cubemap(out, shell);
+  const Rgb dense_rect = dense_dot(decode_receiver_cubemap(n, out), l);
+  EXPECT_NEAR(rect.g, dense_rect.g, 1e-6 * std::abs(dense_rect.g));
+  EXPECT_NEAR(dense_rect.g, wide.g, 1e-12 * std::abs(wide.g));  // the same cells and levels
+  // Beyond N = 256 there are none: never chosen, refused when forced, an InputError when read.
+  const int big = 512;
+  std::vector<double> far(cubemap_texel_count(big), 0.0);
+  far[1000] = 1.0;
+  out.clear();
+  const EncodedReceiver pulse = encode(big, far, out);
+  EXPECT_EQ(pulse.kind, CubemapCodeKind::kPulse);
+  EXPECT_EQ(pulse.rectangles_bytes, 0u);
+  EXPECT_THROW(encode(big, far, out, CubemapBasisChoice::kRectangles), std::invalid_argument);
+  const std::vector<std::uint8_t> one = {4, 0, 0, 0x80, 0x3f, 1, 0, 0, 0, 0, 0, 255};  // S = 1
+  EXPECT_EQ(decode_receiver_cubemap(n, one)[0], 1.0);
+  EXPECT_THROW(parse_cubemap_record(big, one), InputError);
 }
 
 TEST(CubemapEncoding, RejectsBadInputAndMalformedRecords) {
@@ -560,8 +680,9 @@ TEST(CubemapEncoding, RejectsBadInputAndMalformedRecords) {
 }
 
 // The sizes issue 4 asks to report, at the default N = 32: a receiver 8 m from a 1 m window
-// (pulse), 1 m from a 2 m × 2 m window (runs), under an open sky (runs; Haar is smaller only
-// with a threshold).
+// (a 2 × 2 rectangle of cells, four bytes under pulse), 1 m from a 2 m × 2 m window (runs: the
+// window's patch is far from rectangular on the faces so near), under an open sky (runs, two
+// bytes under rectangles; Haar is smaller only with a threshold).
 TEST(CubemapEncoding, SampleReceiverSizes) {
   const int n = 32;
   struct Sample {
@@ -570,7 +691,7 @@ TEST(CubemapEncoding, SampleReceiverSizes) {
     CubemapCodeKind kind;
   };
   const Sample samples[] = {
-      {"far 1x1 window at 8", window_cubemap(n, 8.0, 1.0, 1.0, 2.0), CubemapCodeKind::kPulse},
+      {"far 1x1 window at 8", window_cubemap(n, 8.0, 1.0, 1.0, 2.0), CubemapCodeKind::kRectangles},
       {"near 2x2 window at 1", window_cubemap(n, 1.0, 2.0, 0.5, 2.5), CubemapCodeKind::kRuns},
       {"open sky", sky_cubemap(n), CubemapCodeKind::kRuns}};
   CubemapEncodingStats stats;
@@ -578,11 +699,11 @@ TEST(CubemapEncoding, SampleReceiverSizes) {
     std::vector<std::uint8_t> out;
     const EncodedReceiver r = encode(n, s.t, out);
     const std::size_t cells = std::count_if(s.t.begin(), s.t.end(), [](double v) { return v > 0; });
-    std::printf("[sizes] %-22s cells %5zu  pulse %6zu B  runs %6zu B  haar %6zu B  -> %s\n", s.name,
-                cells, r.pulse_bytes, r.runs_bytes, r.haar_bytes,
-                r.kind == CubemapCodeKind::kPulse  ? "pulse"
-                : r.kind == CubemapCodeKind::kRuns ? "runs"
-                                                   : "haar");
+    std::printf(
+        "[sizes] %-22s cells %5zu  pulse %6zu B  runs %6zu B  rectangles %6zu B  haar %6zu B  -> "
+        "%s\n",
+        s.name, cells, r.pulse_bytes, r.runs_bytes, r.rectangles_bytes, r.haar_bytes,
+        kind_name(r.kind));
     EXPECT_EQ(r.kind, s.kind) << s.name;
     add_receiver(stats, r);
     // With a threshold the Haar records shrink; Σ t̂ (a uniform shell) stays within 1%.
@@ -600,11 +721,12 @@ TEST(CubemapEncoding, SampleReceiverSizes) {
     }
   }
   std::printf(
-      "[sizes] %.1f B/receiver, pulse %zu runs %zu haar %zu; all-pulse %zu B, all-runs %zu B, "
-      "all-haar %zu B\n",
-      bytes_per_receiver(stats), stats.pulse, stats.runs, stats.haar, stats.all_pulse_bytes,
-      stats.all_runs_bytes, stats.all_haar_bytes);
-  EXPECT_EQ(stats.pulse, 1u);
+      "[sizes] %.1f B/receiver, pulse %zu runs %zu rectangles %zu haar %zu; all-pulse %zu B, "
+      "all-runs %zu B, all-rectangles %zu B, all-haar %zu B\n",
+      bytes_per_receiver(stats), stats.pulse, stats.runs, stats.rectangles, stats.haar,
+      stats.all_pulse_bytes, stats.all_runs_bytes, stats.all_rectangles_bytes,
+      stats.all_haar_bytes);
+  EXPECT_EQ(stats.rectangles, 1u);
   EXPECT_EQ(stats.runs, 2u);
 }
 
