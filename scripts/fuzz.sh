@@ -15,7 +15,7 @@ cd "$(dirname "$0")/.."
 scripts/bootstrap.sh --fuzz
 seconds=${FUZZ_SECONDS:-60}
 build=${FUZZ_BUILD:-build-fuzz}
-all_targets=(ies ldt scene state obj ply gltf epw photo envmap rlt message targets)
+all_targets=(ies ldt scene state obj ply gltf epw photo envmap rlt message targets cubemap)
 read -r -a targets <<<"${FUZZ_TARGETS:-${all_targets[*]}}"
 for t in "${targets[@]}"; do
   [[ " ${all_targets[*]} " == *" $t "* ]] || { echo "fuzz: no target \"$t\"" >&2; exit 2; }

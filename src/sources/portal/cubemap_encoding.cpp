@@ -521,7 +521,7 @@ Rgb runs_dot(const CubemapRecord& rec, const ShellCubemap& shell) {
   return {sum[0], sum[1], sum[2]};
 }
 
-// The rows of one rectangle, K = ⌈width/8⌉ steps of eight cells a row (1 ≤ K ≤ 32), added into
+// The rows of one rectangle, K = ⌈width/8⌉ steps of eight cells a row (1 ≤ K ≤ 4), added into
 // `whole` (the first K − 1 steps) and `last` (the last, its 1-8 levels the eight bytes that end
 // the row shifted down: the record's header lies before them). `level` is left after the
 // rectangle's levels. K a constant, so a row is straight-line code and only the row loop
