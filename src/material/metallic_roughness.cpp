@@ -205,8 +205,12 @@ void prepare_metallic_roughness_tables() {
   (void)SpecularAlbedoTable::get();
 }
 
+std::pair<double, double> specular_albedo_split(double n_dot_v, double roughness) {
+  return SpecularAlbedoTable::get().at(n_dot_v, roughness);
+}
+
 Rgb specular_directional_albedo(const MetallicRoughness& m, double n_dot_v) {
-  const auto [a, b] = SpecularAlbedoTable::get().at(n_dot_v, m.roughness);
+  const auto [a, b] = specular_albedo_split(n_dot_v, m.roughness);
   const Rgb f0 = f0_of(m);
   return f0 * a + Rgb{b, b, b};
 }
@@ -259,9 +263,14 @@ Rgb MetallicRoughnessToward::specular(Vec3 l) const {
 Rgb MetallicRoughnessToward::diffuse(Vec3 l) const {
   const double n_dot_l = dot(n_, l);
   if (n_dot_l <= 0 || n_dot_v_ <= 0 || diffuse_ == Rgb{}) return {};
-  const auto [a, b] = SpecularAlbedoTable::get().at(n_dot_l, roughness_);
-  return {(1 - (f0_.r * a + b)) * diffuse_.r, (1 - (f0_.g * a + b)) * diffuse_.g,
-          (1 - (f0_.b * a + b)) * diffuse_.b};
+  const auto [a, b] = specular_albedo_split(n_dot_l, roughness_);
+  return diffuse_of_sums({1, 1, 1}, {a, a, a}, {b, b, b});
+}
+
+Rgb MetallicRoughnessToward::diffuse_of_sums(const Rgb& e, const Rgb& a, const Rgb& b) const {
+  if (n_dot_v_ <= 0) return {};
+  return {(e.r - f0_.r * a.r - b.r) * diffuse_.r, (e.g - f0_.g * a.g - b.g) * diffuse_.g,
+          (e.b - f0_.b * a.b - b.b) * diffuse_.b};
 }
 
 Rgb metallic_roughness_specular(const MetallicRoughness& m, Vec3 n, Vec3 l, Vec3 v) {

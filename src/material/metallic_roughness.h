@@ -31,6 +31,7 @@
 #pragma once
 
 #include <functional>
+#include <utility>
 
 #include "math/rgb.h"
 #include "math/vec3.h"
@@ -52,6 +53,13 @@ class MetallicRoughnessToward {
   Rgb operator()(Vec3 l) const { return specular(l) + diffuse(l); }
   Rgb specular(Vec3 l) const;
   Rgb diffuse(Vec3 l) const;
+  // The diffuse layer summed over lights e_j from directions l_j above the surface, from sums
+  // that do not depend on v: Σ_j e_j diffuse(l_j) = diffuse_of_sums(Σ e_j, Σ e_j A_j, Σ e_j B_j)
+  // with (A_j, B_j) = specular_albedo_split(n·l_j, roughness()), as the layer's factor
+  // 1 − E_s(l) = 1 − F0·A − B is linear in them (so a view can keep the sums while the light
+  // stays, sources/cuts/environment_lighting.h).
+  Rgb diffuse_of_sums(const Rgb& e, const Rgb& a, const Rgb& b) const;
+  double roughness() const { return roughness_; }
 
  private:
   Vec3 n_, v_;
@@ -70,6 +78,9 @@ Rgb metallic_roughness_diffuse(const MetallicRoughness& m, Vec3 n, Vec3 l, Vec3 
 // The specular lobe's directional albedo ∫ F D V cos θ_l dω_l per channel at n·v = `n_dot_v`
 // (a table over n·v and roughness, bilinear; within 1e-3 of quadrature).
 Rgb specular_directional_albedo(const MetallicRoughness& m, double n_dot_v);
+// Its split by F0 (Schlick is linear in it): E_s = F0·A + B, the pair (A, B) at n·v = `n_dot_v`
+// and `roughness`.
+std::pair<double, double> specular_albedo_split(double n_dot_v, double roughness);
 
 // Builds the table behind specular_directional_albedo and hemispherical_albedo now (0.9 s on
 // 2 cores, once per process; otherwise on first use, e.g. the first glossy material edit).

@@ -140,6 +140,7 @@ class GlossyShading {
   GlossyShading(RelitScene& scene, const ShownScene* shown)
       : t_(scene.transfer()),
         lit_(scene.relighter()),
+        view_environment_(scene.relighter().environment()),
         windows_(scene.portal_tracer()),
         objects_(shown != nullptr ? lit_.objects() : nullptr),
         occluders_(lit_.objects() != nullptr ? lit_.objects()->occluders()
@@ -165,6 +166,10 @@ class GlossyShading {
       compact_ = env->compact_sources();
     }
     if (glossy_.empty()) return;
+    if (view_environment_ != nullptr) {
+      view_environment_->prepare_view_cache(objects_ != nullptr ? objects_->placed().vertex_count()
+                                                                : 0);
+    }
     const ObjectLighting* objects = lit_.objects();
     const std::vector<float> total =
         objects != nullptr
@@ -290,11 +295,20 @@ class GlossyShading {
             if (!(d > 0) || dot(to_eye, n) <= 0) continue;  // seen from behind: as diffuse
             Rgb l = glossy_pixel_radiance(pixels_, *brdf, p, n, to_eye / d, samples, v);
             const MetallicRoughnessToward weight(*brdf, n, to_eye / d);
-            // The environment through the cuts (its compact sources are in direct()).
-            if (const EnvironmentLighting* env = lit_.environment(); env != nullptr) {
+            // The environment through the cuts (its compact sources are in direct()): the
+            // specular lobe at each node, the diffuse layer from its sums kept while the light
+            // stays (each vertex is one thread's, as diffuse_layer asks).
+            if (EnvironmentLighting* env = view_environment_; env != nullptr) {
+              const auto specular = [&](Vec3 light) { return weight.specular(light); };
+              const EnvironmentLighting::DiffuseLayerSums& sums =
+                  v < t_.vertex_count
+                      ? env->diffuse_layer(v, n, brdf->roughness)
+                      : env->object_diffuse_layer(v - t_.vertex_count, objects_->placed(), n,
+                                                  brdf->roughness);
               l += v < t_.vertex_count
-                       ? env->reflected(v, weight)
-                       : env->reflected_object(v - t_.vertex_count, objects_->placed(), weight);
+                       ? env->reflected(v, specular)
+                       : env->reflected_object(v - t_.vertex_count, objects_->placed(), specular);
+              l += weight.diffuse_of_sums(sums.e, sums.a, sums.b);
             }
             out[3 * v] = static_cast<float>(l.r);
             out[3 * v + 1] = static_cast<float>(l.g);
@@ -370,6 +384,9 @@ class GlossyShading {
 
   const TransferFile& t_;
   const Relighter& lit_;
+  // The same relighter's environment (null: none), whose kept diffuse-layer sums the view
+  // updates (vertex_luminance).
+  EnvironmentLighting* view_environment_;
   const RayTracer& windows_;
   const ObjectLighting* objects_;  // the objects shown (null: none)
   const Occluders occluders_;

@@ -112,6 +112,8 @@ class Relighter {
   // The top-level environment's term, when the scene has one (its cuts, clusters and the
   // glossy reflection toward an eye: sources/cuts/environment_lighting.h).
   const EnvironmentLighting* environment() const { return environment_ ? &*environment_ : nullptr; }
+  // The same, for the glossy view's kept diffuse-layer sums (EnvironmentLighting::diffuse_layer).
+  EnvironmentLighting* environment() { return environment_ ? &*environment_ : nullptr; }
   // Whether the environment's interreflection is added (the default) or its direct light
   // alone, as `relight reference --max-bounces 1` traces it.
   void set_environment_bounce(bool bounce);

@@ -10,6 +10,7 @@
 #include "common/input_error.h"
 #include "light/environment_clusters.h"
 #include "light/environment_map_io.h"
+#include "material/metallic_roughness.h"
 #include "math/rgb.h"
 #include "sources/cuts/compact_light.h"
 
@@ -82,11 +83,50 @@ void EnvironmentLighting::update_objects(const PlacedObjects& placed,
                    RoomCompact{compact_, compact_fraction_, compact_direct_}, placed, placements,
                    objects_stale_);
   objects_stale_ = false;
+  ++placement_generation_;
+}
+
+void EnvironmentLighting::prepare_view_cache(std::size_t object_vertices) {
+  room_layer_.resize(receivers_);
+  object_layer_.resize(object_vertices);
+}
+
+template <typename ForEachLight>
+const EnvironmentLighting::DiffuseLayerSums& EnvironmentLighting::keep_diffuse_layer(
+    KeptDiffuseLayer& kept, std::uint64_t generation, Vec3 n, double roughness,
+    const ForEachLight& for_each) {
+  if (kept.generation == generation && kept.roughness == roughness) return kept.sums;
+  DiffuseLayerSums sums;
+  for_each([&](const Rgb& e, Vec3 l) {
+    const double n_dot_l = dot(n, l);
+    if (n_dot_l <= 0) return;
+    const auto [a, b] = specular_albedo_split(n_dot_l, roughness);
+    sums.e += e;
+    sums.a += e * a;
+    sums.b += e * b;
+  });
+  kept = {sums, roughness, generation};
+  return kept.sums;
+}
+
+const EnvironmentLighting::DiffuseLayerSums& EnvironmentLighting::diffuse_layer(std::size_t r,
+                                                                                Vec3 n,
+                                                                                double roughness) {
+  return keep_diffuse_layer(room_layer_.at(r), light_generation_, n, roughness,
+                            [&](const auto& visit) { for_each_light(r, visit); });
+}
+
+const EnvironmentLighting::DiffuseLayerSums& EnvironmentLighting::object_diffuse_layer(
+    std::size_t q, const PlacedObjects& placed, Vec3 n, double roughness) {
+  return keep_diffuse_layer(object_layer_.at(q), placement_generation_, n, roughness,
+                            [&](const auto& visit) { for_each_object_light(q, placed, visit); });
 }
 
 void EnvironmentLighting::update() {
   const auto start = std::chrono::steady_clock::now();
   objects_stale_ = true;
+  ++light_generation_;
+  ++placement_generation_;
   if (env_) {
     compact_ = find_compact_sources(*env_);
     moments_ = environment_moments(*env_, tree_, leaves_, 0, &compact_);

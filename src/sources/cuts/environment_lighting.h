@@ -20,7 +20,8 @@
 // to the direct light and bounced with it, and kept apart so that `render --direct pixel`
 // traces them per pixel instead (add_block without direct light leaves them out); the
 // renderers' glossy shading traces them toward the eye as it traces luminaires.
-// Pinned by tests/sources/cuts/cuts_lighting_test.cpp.
+// Pinned by tests/cli/environment_cuts_test.cpp (against the reference) and
+// tests/render/glossy_view_test.cpp (the view's kept diffuse-layer sums).
 #pragma once
 
 #include <filesystem>
@@ -77,41 +78,66 @@ class EnvironmentLighting : public SourceTerm {
   // BRDF toward the eye (the compact sources left out).
   template <typename Weight>
   Rgb reflected(std::size_t r, const Weight& weight) const {
-    const Vec3 n = runtime_.normal(r);
     Rgb out{};
+    for_each_light(r, [&](const Rgb& e, Vec3 l) { out += e * weight(l); });
+    return out;
+  }
+  // Calls visit(e_j, ω_j) for each of receiver r's visible nodes split to kGlossyNodeDeg whose
+  // light e_j = n · M_j is positive in a channel.
+  template <typename Visit>
+  void for_each_light(std::size_t r, const Visit& visit) const {
+    const Vec3 n = runtime_.normal(r);
     cuts_.self_visibility.for_each_visible(r, [&](std::uint32_t node, int) {
       split_glossy(node, [&](std::uint32_t j) {
         const Rgb e = moments_[j].irradiance(n);
-        if (e.r > 0 || e.g > 0 || e.b > 0) out += e * weight(light_direction_[j]);
+        if (e.r > 0 || e.g > 0 || e.b > 0) visit(e, light_direction_[j]);
       });
     });
-    return out;
   }
   // The same at object vertex q (PlacedObjects order) as the objects were last placed
   // (update_objects), through its visibility in its object's frame; `weight` takes world
   // directions. 0 without objects or when its object is hidden.
   template <typename Weight>
   Rgb reflected_object(std::size_t q, const PlacedObjects& placed, const Weight& weight) const {
+    Rgb out{};
+    for_each_object_light(q, placed, [&](const Rgb& e, Vec3 l) { out += e * weight(l); });
+    return out;
+  }
+  // Calls visit(v_j e_j, ω_j) as for_each_light at object vertex q, v_j its visibility of the
+  // node, ω_j in the world.
+  template <typename Visit>
+  void for_each_object_light(std::size_t q, const PlacedObjects& placed, const Visit& visit) const {
     const ValueCut* cut = objects_ ? objects_->object_visibility(q, placed) : nullptr;
-    if (cut == nullptr) return {};
+    if (cut == nullptr) return;
     const std::size_t a = placed.object_of_vertex(q);
     const std::span<const RgbMoment> m = objects_->object_moments(a);
     const std::span<const Vec3> directions = objects_->object_light_directions(a);
     const Vec3 n = objects_->meshes()[a].normals[q - placed.first_vertex[a]];
     const VerticalTurn turn(objects_->object_turn(a));  // its sine and cosine once
-    Rgb out{};
     for_each_node(*cut, static_cast<std::uint32_t>(tree_.leaf_count()),
                   [&](std::uint32_t node, float v) {
                     if (v <= 0) return;
                     split_glossy(node, [&](std::uint32_t j) {
                       const Rgb e = m[j].irradiance(n);
-                      if (e.r > 0 || e.g > 0 || e.b > 0) {
-                        out += e * (v * weight(turn(directions[j])));
-                      }
+                      if (e.r > 0 || e.g > 0 || e.b > 0) visit(e * v, turn(directions[j]));
                     });
                   });
-    return out;
   }
+  // What a glossy BRDF's coupled diffuse layer needs of the light at a vertex, whatever the
+  // viewer (material/metallic_roughness.h, diffuse_of_sums): over the nodes above the BRDF's
+  // normal n, Σ e_j, Σ e_j A(n·ω_j) and Σ e_j B(n·ω_j) at one roughness.
+  struct DiffuseLayerSums {
+    Rgb e, a, b;
+  };
+  // Receiver r's (object vertex q's, as the objects were last placed) sums for normal n and
+  // `roughness`, kept until the light, the placements (objects only) or the roughness change:
+  // a view frame then evaluates only the specular lobe at each node. Not const: calls for
+  // distinct vertices may run at once, not two for one vertex. The view cache's storage is
+  // made by prepare_view_cache, which must come first.
+  const DiffuseLayerSums& diffuse_layer(std::size_t r, Vec3 n, double roughness);
+  const DiffuseLayerSums& object_diffuse_layer(std::size_t q, const PlacedObjects& placed, Vec3 n,
+                                               double roughness);
+  void prepare_view_cache(std::size_t object_vertices);
   static constexpr double kGlossyNodeDeg = 3;
   // With movable objects: their shadows at the room's receivers and the direct light at their
   // vertices for the objects as placed (sources/cuts/environment_objects.h), made again when
@@ -176,6 +202,19 @@ class EnvironmentLighting : public SourceTerm {
   std::vector<float> direct_, indirect_;  // 3 per receiver
   std::optional<EnvironmentObjects> objects_;
   bool objects_stale_ = true;  // the environment changed since the objects' last update
+  // The view's diffuse-layer sums per receiver and per object vertex, each with the roughness
+  // and the light's (or the placements') generation it was made for.
+  struct KeptDiffuseLayer {
+    DiffuseLayerSums sums;
+    double roughness = -1;
+    std::uint64_t generation = 0;
+  };
+  template <typename ForEachLight>
+  static const DiffuseLayerSums& keep_diffuse_layer(KeptDiffuseLayer& kept,
+                                                    std::uint64_t generation, Vec3 n,
+                                                    double roughness, const ForEachLight& for_each);
+  std::vector<KeptDiffuseLayer> room_layer_, object_layer_;
+  std::uint64_t light_generation_ = 1, placement_generation_ = 1;
   double seconds_ = 0, bounce_seconds_ = 0;
 };
 
