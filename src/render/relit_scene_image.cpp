@@ -23,29 +23,21 @@ struct ShownScene {
   std::vector<Vec3> positions;
   std::vector<Triangle> triangles;
   std::vector<float> albedo;
-  std::optional<RayTracer> tracer;  // room's opaque triangles and the objects'; ids: triangles
+  const RayTracer* tracer;  // RelitScene::shown_tracer: ids index `triangles`
 };
 
-ShownScene shown_with_objects(const TransferFile& t, std::span<const float> room_albedo,
-                              const ObjectLighting& objects) {
+ShownScene shown_with_objects(RelitScene& scene, const ObjectLighting& objects) {
+  const TransferFile& t = scene.transfer();
+  const std::span<const float> room_albedo = scene.relighter().vertex_albedo();
   const PlacedObjects& placed = objects.placed();
-  ShownScene s{t.positions, t.triangles, {room_albedo.begin(), room_albedo.end()}, {}};
+  ShownScene s{
+      t.positions, t.triangles, {room_albedo.begin(), room_albedo.end()}, &scene.shown_tracer()};
   const auto base = static_cast<std::uint32_t>(t.positions.size());
   s.positions.insert(s.positions.end(), placed.positions.begin(), placed.positions.end());
   s.albedo.insert(s.albedo.end(), placed.albedo.begin(), placed.albedo.end());
-  std::vector<Triangle> opaque;
-  std::vector<std::uint32_t> ids;
-  for (const std::uint32_t i : t.opaque_triangles) {
-    opaque.push_back(t.triangles[i]);
-    ids.push_back(i);
-  }
   for (const Triangle& tri : placed.triangles) {
-    const Triangle shifted{tri[0] + base, tri[1] + base, tri[2] + base};
-    ids.push_back(static_cast<std::uint32_t>(s.triangles.size()));
-    s.triangles.push_back(shifted);
-    opaque.push_back(shifted);
+    s.triangles.push_back({tri[0] + base, tri[1] + base, tri[2] + base});
   }
-  s.tracer.emplace(s.positions, opaque, ids);
   return s;
 }
 
@@ -97,7 +89,7 @@ VertexView make_vertex_view(RelitScene& scene) {
   const ObjectLighting* objects = lit.objects();
   VertexView view;
   if (objects != nullptr) {
-    view.shown = shown_with_objects(t, lit.vertex_albedo(), *objects);
+    view.shown = shown_with_objects(scene, *objects);
     view.irradiance = with_objects(scene.irradiance(), t.vertex_count, objects->irradiance(true));
   } else {
     view.irradiance.assign(scene.irradiance().begin(), scene.irradiance().end());
@@ -454,8 +446,7 @@ ShadedImages render_relit_scene(RelitScene& scene, const Camera& camera, int wid
   }
   const ObjectLighting* objects = lit.objects();
   const std::optional<ShownScene> shown =
-      objects != nullptr ? std::optional(shown_with_objects(t, lit.vertex_albedo(), *objects))
-                         : std::nullopt;
+      objects != nullptr ? std::optional(shown_with_objects(scene, *objects)) : std::nullopt;
   const RayTracer& visible = shown ? *shown->tracer : room;
   const std::vector<Vec3>& positions = shown ? shown->positions : t.positions;
   const std::vector<Triangle>& triangles = shown ? shown->triangles : t.triangles;

@@ -98,6 +98,35 @@ const RayTracer& RelitScene::opaque_tracer() {
   return *opaque_tracer_;
 }
 
+const RayTracer& RelitScene::shown_tracer() {
+  const ObjectLighting* objects = relighter_->objects();
+  if (objects == nullptr) return opaque_tracer();
+  const PlacedObjects& placed = objects->placed();
+  if (shown_tracer_ && shown_positions_ == placed.positions &&
+      shown_triangles_ == placed.triangles) {
+    return *shown_tracer_;
+  }
+  const TransferFile& t = *transfer_;
+  std::vector<Vec3> positions = t.positions;
+  positions.insert(positions.end(), placed.positions.begin(), placed.positions.end());
+  std::vector<Triangle> triangles;
+  std::vector<std::uint32_t> ids;
+  for (const std::uint32_t i : t.opaque_triangles) {
+    triangles.push_back(t.triangles[i]);
+    ids.push_back(i);
+  }
+  const auto base = static_cast<std::uint32_t>(t.positions.size());
+  for (std::size_t k = 0; k < placed.triangles.size(); ++k) {
+    const Triangle& tri = placed.triangles[k];
+    triangles.push_back({tri[0] + base, tri[1] + base, tri[2] + base});
+    ids.push_back(static_cast<std::uint32_t>(t.triangles.size() + k));
+  }
+  shown_tracer_ = std::make_unique<RayTracer>(positions, triangles, ids);
+  shown_positions_ = placed.positions;
+  shown_triangles_ = placed.triangles;
+  return *shown_tracer_;
+}
+
 const RayTracer& RelitScene::portal_tracer() {
   if (const RuntimeScene* runtime = relighter_->runtime_scene()) return runtime->glass();
   if (!portal_tracer_) {

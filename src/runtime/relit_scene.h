@@ -69,6 +69,12 @@ class RelitScene {
   const RayTracer& opaque_tracer();
   const RayTracer& portal_tracer();
   const RayTracer& mesh_tracer();
+  // The opaque triangles and the movable objects as the state places them (ids: the mesh's
+  // triangle indices, then the placed objects' triangles numbered on from the mesh's count):
+  // what a camera sees. Built again only when a placement moved, hid or showed a triangle, so
+  // frames that move only the eye (the glossy view, `relight bench`'s view_ms) reuse it. The
+  // opaque tracer without objects.
+  const RayTracer& shown_tracer();
 
  private:
   // The sensors' rows of a per-receiver RGB array (3 per receiver), in scene order; empty for
@@ -79,7 +85,10 @@ class RelitScene {
   RelighterSettings settings_;
   std::unique_ptr<Relighter> relighter_;
   std::vector<float> irradiance_;
-  std::unique_ptr<RayTracer> opaque_tracer_, portal_tracer_, mesh_tracer_;
+  std::unique_ptr<RayTracer> opaque_tracer_, portal_tracer_, mesh_tracer_, shown_tracer_;
+  // The placed objects' vertices and triangles the shown tracer was built for.
+  std::vector<Vec3> shown_positions_;
+  std::vector<Triangle> shown_triangles_;
 };
 
 }  // namespace relight

@@ -18,6 +18,7 @@
 #include "runtime/relit_scene.h"
 #include "support/precomputed_file.h"
 #include "support/temp_dir.h"
+#include "trace/ray_tracer.h"
 
 namespace relight {
 namespace {
@@ -69,6 +70,34 @@ TEST(EnvironmentDrag, AnyHistoryOfPlacementsGivesTheLightOfTheFinalOne) {
     EXPECT_LT(worst, 1e-5) << move;
     EXPECT_GT(scale, 1000) << move;
   }
+}
+
+// The tracer of what a camera sees (RelitScene::shown_tracer): kept while the placements stay
+// (a view frame moves only the eye), made again when an object moves, and then hitting the
+// object where it now stands: a ray down onto crate a's top meets it (an id after the mesh's
+// triangles) until the crate moves 1 m aside, then the floor.
+TEST(EnvironmentDrag, ShownTracerIsKeptWhileThePlacementsStayAndFollowsAMovedObject) {
+  testing::TempDir dir;
+  const std::filesystem::path rlt = testing::write_precomputed(dir, "crates", two_crates());
+  RelitScene relit(rlt, std::nullopt);
+  const std::size_t mesh_triangles = relit.transfer().triangles.size();
+  const Ray down{{-0.9, 2, 0}, {0, -1, 0}};
+  const RayTracer* first = &relit.shown_tracer();
+  const RayHit on_crate = first->intersect(down);
+  ASSERT_TRUE(on_crate.hit());
+  EXPECT_GE(on_crate.triangle, mesh_triangles);
+  EXPECT_NEAR(on_crate.t, 1.5, 1e-4);
+  EXPECT_EQ(&relit.shown_tracer(), first);  // kept
+  relit.apply(load_lighting_state(
+      relit.scene(), dir.write("aside.json", R"({"objects": {"a": {"translate": [0, 0, 1]}}})")));
+  const RayHit on_floor = relit.shown_tracer().intersect(down);
+  ASSERT_TRUE(on_floor.hit());
+  EXPECT_LT(on_floor.triangle, mesh_triangles);
+  EXPECT_NEAR(on_floor.t, 2, 1e-4);
+  const RayHit moved = relit.shown_tracer().intersect({{-0.9, 2, 1}, {0, -1, 0}});
+  ASSERT_TRUE(moved.hit());
+  EXPECT_GE(moved.triangle, mesh_triangles);
+  EXPECT_NEAR(moved.t, 1.5, 1e-4);
 }
 
 }  // namespace
