@@ -61,6 +61,7 @@ class MetallicRoughnessToward {
   Rgb diffuse_of_sums(const Rgb& e, const Rgb& a, const Rgb& b) const;
 
  private:
+  friend class SpecularLobeSum;  // the same lobe over many lights (material/specular_lobe_sum.h)
   Vec3 n_, v_;
   double n_dot_v_ = 0, roughness_ = 0, alpha_ = 0, masking_v_ = 0;
   Rgb f0_;

@@ -288,18 +288,19 @@ class GlossyShading {
             Rgb l = glossy_pixel_radiance(pixels_, *brdf, p, n, to_eye / d, samples, v);
             const MetallicRoughnessToward weight(*brdf, n, to_eye / d);
             // The environment through the cuts (its compact sources are in direct()): the
-            // specular lobe at each node, the diffuse layer from its sums kept while the light
-            // stays (each vertex is one thread's, as diffuse_layer asks).
+            // specular lobe at each node, eight nodes at a time, the diffuse layer from its
+            // sums kept while the light stays (each vertex is one thread's, as diffuse_layer
+            // asks).
             if (EnvironmentLighting* env = view_environment_; env != nullptr) {
-              const auto specular = [&](Vec3 light) { return weight.specular(light); };
               const EnvironmentLighting::DiffuseLayerSums& sums =
                   v < t_.vertex_count
                       ? env->diffuse_layer(v, n, brdf->roughness)
                       : env->object_diffuse_layer(v - t_.vertex_count, objects_->placed(), n,
                                                   brdf->roughness);
               l += v < t_.vertex_count
-                       ? env->reflected(v, specular)
-                       : env->reflected_object(v - t_.vertex_count, objects_->placed(), specular);
+                       ? env->reflected_specular(v, weight)
+                       : env->reflected_object_specular(v - t_.vertex_count, objects_->placed(),
+                                                        *brdf, to_eye / d);
               l += weight.diffuse_of_sums(sums.e, sums.a, sums.b);
             }
             out[3 * v] = static_cast<float>(l.r);

@@ -23,7 +23,7 @@ EnvironmentLighting::EnvironmentLighting(const CutsTransferView& cuts, const Run
       receivers_(runtime.receivers()),
       tree_(direction_tree_over_leaves(cuts.directions)),
       leaves_(leaf_grid(tree_)),
-      glossy_cos_(std::cos(kGlossyNodeDeg * kPi / 180)),
+      glossy_(glossy_nodes(tree_, std::cos(kGlossyNodeDeg * kPi / 180))),
       compact_direct_(3 * receivers_, 0.0f),
       direct_(3 * receivers_, 0.0f),
       indirect_(3 * receivers_, 0.0f) {
@@ -35,6 +35,7 @@ EnvironmentLighting::EnvironmentLighting(const CutsTransferView& cuts, const Run
       throw std::invalid_argument("EnvironmentLighting: not one visibility cut field per object");
     }
     objects_.emplace(cuts_, tree_, leaves_, runtime_, objects);
+    object_glossy_.resize(objects.size());
   }
   update();  // dark until an environment is set: every moment 0
 }
@@ -84,6 +85,59 @@ void EnvironmentLighting::update_objects(const PlacedObjects& placed,
                    objects_stale_);
   objects_stale_ = false;
   ++placement_generation_;
+  for (std::size_t a = 0; a < object_glossy_.size(); ++a) {
+    object_glossy_[a].fill(glossy_, objects_->object_moments(a),
+                           objects_->object_light_directions(a));
+  }
+}
+
+Rgb EnvironmentLighting::reflected_specular(std::size_t r,
+                                            const MetallicRoughnessToward& brdf) const {
+  SpecularLobeSum sum(brdf);
+  const MomentLightPlanes planes = room_glossy_.planes();
+  MomentLightBatch parts;  // split nodes seen in part
+  walk_view_nodes(
+      [&](const auto& f) {
+        cuts_.self_visibility.for_each_visible(r, [&](std::uint32_t node, int) { f(node, 1.0f); });
+      },
+      moments_,
+      [&](std::uint32_t begin, std::uint32_t end, float) { sum.add(planes, begin, end, 1); },
+      [&](std::uint32_t i, const RgbMoment& part) {
+        parts.push(moment_floats(part).data(), light_direction_[glossy_.node[i]], 1);
+        if (parts.full()) {
+          sum.add(parts, 1);
+          parts.clear();
+        }
+      });
+  sum.add(parts, 1);
+  return sum.total();
+}
+
+Rgb EnvironmentLighting::reflected_object_specular(std::size_t q, const PlacedObjects& placed,
+                                                   const MetallicRoughness& m, Vec3 v) const {
+  const ValueCut* cut = objects_ ? objects_->object_visibility(q, placed) : nullptr;
+  if (cut == nullptr) return {};
+  const std::size_t a = placed.object_of_vertex(q);
+  const std::span<const Vec3> directions = objects_->object_light_directions(a);
+  const Vec3 n = objects_->meshes()[a].normals[q - placed.first_vertex[a]];
+  SpecularLobeSum sum(
+      MetallicRoughnessToward(m, n, VerticalTurn(objects_->object_turn(a)).inverse(v)));
+  const MomentLightPlanes planes = object_glossy_[a].planes();
+  MomentLightBatch parts;
+  walk_view_nodes([&](const auto& f) { for_each_object_node(*cut, f); },
+                  objects_->object_moments(a),
+                  [&](std::uint32_t begin, std::uint32_t end, float value) {
+                    sum.add(planes, begin, end, value);
+                  },
+                  [&](std::uint32_t i, const RgbMoment& part) {
+                    parts.push(moment_floats(part).data(), directions[glossy_.node[i]], 1);
+                    if (parts.full()) {
+                      sum.add(parts, 1);
+                      parts.clear();
+                    }
+                  });
+  sum.add(parts, 1);
+  return sum.total();
 }
 
 void EnvironmentLighting::prepare_view_cache(std::size_t object_vertices) {
@@ -138,6 +192,7 @@ void EnvironmentLighting::update() {
   compact_fraction_.assign(sources * receivers_, 0.0f);
   const Occluders room(runtime_.occluders());
   light_direction_ = moment_directions(moments_, tree_);
+  room_glossy_.fill(glossy_, moments_, light_direction_);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, receivers_, 256), [&](const auto& range) {
     for (std::size_t r = range.begin(); r < range.end(); ++r) {
       const Vec3 n = runtime_.normal(r), origin = offset_from_surface(runtime_.ray_point(r), n);

@@ -11,9 +11,11 @@
 // changes; the bounce starts from the last one. Toward an eye, a glossy receiver reflects
 //     L_o = Σ_j f(ω_j, ω_o) · n · M_j
 // over its visible nodes split until each lies within a cone of kGlossyNodeDeg (a node of open
-// sky would otherwise put a quadrant's light at one direction of a narrow lobe), ω_j the
-// direction of the node's light — its luminance moment's, so that a sun or a lamp in a map
-// lands where it is, not at the node's centre — or its mean direction when it holds none.
+// sky would otherwise put a quadrant's light at one direction of a narrow lobe), the nodes of
+// the cut finer than that summed into the split node holding them (glossy_nodes.h: one BRDF
+// evaluation a 3° node, however finely a shadow's edge or a product of fields cuts it), ω_j
+// the direction of the split node's light — its luminance moment's, so that a sun or a lamp in
+// a map lands where it is, not at the node's centre — or its mean direction when it holds none.
 // The environment's compact sources (light/compact_sources.h: a sky's sun, a map's small bright
 // spots) are not in the moments: they are traced at every receiver from its ray point, pushed
 // off its surface, against the static scene (sources/cuts/compact_light.h), their light added
@@ -40,6 +42,7 @@
 #include "scene/environment_spec.h"
 #include "sources/cuts/cuts_sections.h"
 #include "sources/cuts/environment_objects.h"
+#include "sources/cuts/glossy_nodes.h"
 #include "sources/object/object_mesh.h"
 
 namespace relight {
@@ -73,26 +76,38 @@ class EnvironmentLighting : public SourceTerm {
   Rgb irradiance(std::size_t r) const;
   // The current environment's compact sources, traced rather than clustered.
   std::span<const CompactSource> compact_sources() const { return compact_.sources; }
-  // Σ_j weight(ω_j) · n · M_j over receiver r's visible nodes split to kGlossyNodeDeg, n its
-  // normal, ω_j the direction of node j's light: the outgoing radiance when `weight` is the
-  // BRDF toward the eye (the compact sources left out).
+  // Σ_j weight(ω_j) · e_j over the view's nodes of receiver r (glossy_nodes.h: its visible
+  // nodes split to kGlossyNodeDeg, and those finer summed into the split node holding them),
+  // e_j = n · Σ_{k visible in j} M_k, n its normal, ω_j the direction of node j's light: the
+  // outgoing radiance when `weight` is the BRDF toward the eye (the compact sources left out).
   template <typename Weight>
   Rgb reflected(std::size_t r, const Weight& weight) const {
     Rgb out{};
     for_each_light(r, [&](const Rgb& e, Vec3 l) { out += e * weight(l); });
     return out;
   }
-  // Calls visit(e_j, ω_j) for each of receiver r's visible nodes split to kGlossyNodeDeg whose
-  // light e_j = n · M_j is positive in a channel.
+  // Calls visit(e_j, ω_j) for each of receiver r's view nodes whose light e_j is positive in a
+  // channel.
   template <typename Visit>
   void for_each_light(std::size_t r, const Visit& visit) const {
     const Vec3 n = runtime_.normal(r);
-    cuts_.self_visibility.for_each_visible(r, [&](std::uint32_t node, int) {
-      split_glossy(node, [&](std::uint32_t j) {
-        const Rgb e = moments_[j].irradiance(n);
-        if (e.r > 0 || e.g > 0 || e.b > 0) visit(e, light_direction_[j]);
-      });
-    });
+    walk_view_nodes(
+        [&](const auto& f) {
+          cuts_.self_visibility.for_each_visible(r,
+                                                 [&](std::uint32_t node, int) { f(node, 1.0f); });
+        },
+        moments_,
+        [&](std::uint32_t begin, std::uint32_t end, float) {
+          for (std::uint32_t i = begin; i < end; ++i) {
+            const std::uint32_t j = glossy_.node[i];
+            const Rgb e = moments_[j].irradiance(n);
+            if (e.r > 0 || e.g > 0 || e.b > 0) visit(e, light_direction_[j]);
+          }
+        },
+        [&](std::uint32_t i, const RgbMoment& part) {
+          const Rgb e = part.irradiance(n);
+          if (e.r > 0 || e.g > 0 || e.b > 0) visit(e, light_direction_[glossy_.node[i]]);
+        });
   }
   // The same at object vertex q (PlacedObjects order) as the objects were last placed
   // (update_objects), through its visibility in its object's frame; `weight` takes world
@@ -103,8 +118,8 @@ class EnvironmentLighting : public SourceTerm {
     for_each_object_light(q, placed, [&](const Rgb& e, Vec3 l) { out += e * weight(l); });
     return out;
   }
-  // Calls visit(v_j e_j, ω_j) as for_each_light at object vertex q, v_j its visibility of the
-  // node, ω_j in the world.
+  // Calls visit(e_j, ω_j) as for_each_light at object vertex q, each node's moments weighted
+  // by the vertex's visibility of it, ω_j in the world.
   template <typename Visit>
   void for_each_object_light(std::size_t q, const PlacedObjects& placed, const Visit& visit) const {
     const ValueCut* cut = objects_ ? objects_->object_visibility(q, placed) : nullptr;
@@ -114,15 +129,28 @@ class EnvironmentLighting : public SourceTerm {
     const std::span<const Vec3> directions = objects_->object_light_directions(a);
     const Vec3 n = objects_->meshes()[a].normals[q - placed.first_vertex[a]];
     const VerticalTurn turn(objects_->object_turn(a));  // its sine and cosine once
-    for_each_node(*cut, static_cast<std::uint32_t>(tree_.leaf_count()),
-                  [&](std::uint32_t node, float v) {
-                    if (v <= 0) return;
-                    split_glossy(node, [&](std::uint32_t j) {
-                      const Rgb e = m[j].irradiance(n);
-                      if (e.r > 0 || e.g > 0 || e.b > 0) visit(e * v, turn(directions[j]));
+    walk_view_nodes([&](const auto& f) { for_each_object_node(*cut, f); }, m,
+                    [&](std::uint32_t begin, std::uint32_t end, float v) {
+                      for (std::uint32_t i = begin; i < end; ++i) {
+                        const std::uint32_t j = glossy_.node[i];
+                        const Rgb e = m[j].irradiance(n);
+                        if (e.r > 0 || e.g > 0 || e.b > 0) visit(e * v, turn(directions[j]));
+                      }
+                    },
+                    [&](std::uint32_t i, const RgbMoment& part) {
+                      const Rgb e = part.irradiance(n);
+                      if (e.r > 0 || e.g > 0 || e.b > 0)
+                        visit(e, turn(directions[glossy_.node[i]]));
                     });
-                  });
   }
+  // reflected(r, specular lobe of `brdf`) and reflected_object(q, placed, specular lobe of
+  // `brdf`) in single precision, the split's nodes eight at a time (glossy_nodes.h,
+  // material/specular_lobe_sum.h): what a view frame evaluates at each glossy vertex. The
+  // object's `brdf` is made here in its object's frame from `m`, its normal there and the
+  // world's unit direction toward the eye `v`.
+  Rgb reflected_specular(std::size_t r, const MetallicRoughnessToward& brdf) const;
+  Rgb reflected_object_specular(std::size_t q, const PlacedObjects& placed,
+                                const MetallicRoughness& m, Vec3 v) const;
   // What a glossy BRDF's coupled diffuse layer needs of the light at a vertex, whatever the
   // viewer (material/metallic_roughness.h, diffuse_of_sums): over the nodes above the BRDF's
   // normal n, Σ e_j, Σ e_j A(n·ω_j) and Σ e_j B(n·ω_j) at one roughness.
@@ -166,21 +194,47 @@ class EnvironmentLighting : public SourceTerm {
 
  private:
   void update();
-  // Calls visit(j) for node k, or its descendants down to cones of kGlossyNodeDeg.
-  template <typename Visit>
-  void split_glossy(std::uint32_t k, const Visit& visit) const {
-    std::uint32_t stack[64];
-    int top = 0;
-    stack[top++] = k;
-    while (top > 0) {
-      const std::uint32_t j = stack[--top];
-      if (j < tree_.leaf_count() && tree_.cos_half_angle[j] < glossy_cos_) {
-        stack[top++] = 2 * j + 1;
-        stack[top++] = 2 * j;
-        continue;
+  // A cut's visible nodes in the view's split (glossy_nodes.h): for_each_visible(f) calls
+  // f(node, value) for each visible node in leaf order. Calls whole(begin, end, value) for each
+  // run of split nodes glossy_.node[begin, end) seen whole at one value, and part(i, Σ value ·
+  // moments[k]) for split node glossy_.node[i] seen through nodes k finer than it.
+  template <typename ForEachVisible, typename Whole, typename Part>
+  void walk_view_nodes(const ForEachVisible& for_each_visible, std::span<const RgbMoment> moments,
+                       const Whole& whole, const Part& part) const {
+    constexpr std::uint32_t kNone = GlossyNodes::kNone;
+    std::uint32_t begin = 0, end = 0, held = kNone;
+    float value = 0;
+    RgbMoment sum;
+    for_each_visible([&](std::uint32_t node, float v) {
+      const std::uint32_t in = glossy_.within[node];
+      if (in !=
+          kNone) {  // finer than the split: summed into its holder (consecutive in leaf order)
+        if (in != held) {
+          if (held != kNone) part(held, sum);
+          held = in;
+          sum = {};
+        }
+        sum.add(moments[node], v);
+        return;
       }
-      visit(j);
-    }
+      const std::uint32_t first = glossy_.first[node];
+      if (first != end || v != value) {
+        if (end > begin) whole(begin, end, value);
+        begin = first;
+        value = v;
+      }
+      end = glossy_.last[node];
+    });
+    if (held != kNone) part(held, sum);
+    if (end > begin) whole(begin, end, value);
+  }
+  // Calls f(node, value) for each node of an object vertex's visibility cut seen at all.
+  template <typename F>
+  void for_each_object_node(const ValueCut& cut, const F& f) const {
+    for_each_node(cut, static_cast<std::uint32_t>(tree_.leaf_count()),
+                  [&](std::uint32_t node, float v) {
+                    if (v > 0) f(node, v);
+                  });
   }
 
   CutsTransferView cuts_;
@@ -194,7 +248,9 @@ class EnvironmentLighting : public SourceTerm {
   std::filesystem::path map_file_;
   std::vector<RgbMoment> moments_;
   std::vector<Vec3> light_direction_;  // per node: moment_direction (light/environment_clusters.h)
-  double glossy_cos_;                  // cos kGlossyNodeDeg
+  GlossyNodes glossy_;                 // the tree split to kGlossyNodeDeg
+  GlossyLights room_glossy_;           // the split's lights in the world
+  std::vector<GlossyLights> object_glossy_;  // in each object's frame, as last placed
   bool bounce_ = true, warm_ = false;
   CompactSources compact_;
   std::vector<float> compact_fraction_;   // per receiver, per compact source: f_s
