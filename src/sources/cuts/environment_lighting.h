@@ -204,17 +204,29 @@ class EnvironmentLighting : public SourceTerm {
     constexpr std::uint32_t kNone = GlossyNodes::kNone;
     std::uint32_t begin = 0, end = 0, held = kNone;
     float value = 0;
-    RgbMoment sum;
+    // The held split node's Σ value · moments, as RgbMoment's channels (locals, so that they
+    // stay in registers across the walk).
+    float r0 = 0, r1 = 0, r2 = 0, g0 = 0, g1 = 0, g2 = 0, b0 = 0, b1 = 0, b2 = 0;
+    const auto flush = [&] {
+      RgbMoment sum;
+      sum.r[0] = r0, sum.r[1] = r1, sum.r[2] = r2;
+      sum.g[0] = g0, sum.g[1] = g1, sum.g[2] = g2;
+      sum.b[0] = b0, sum.b[1] = b1, sum.b[2] = b2;
+      part(held, sum);
+      r0 = r1 = r2 = g0 = g1 = g2 = b0 = b1 = b2 = 0;
+    };
     for_each_visible([&](std::uint32_t node, float v) {
       const std::uint32_t in = glossy_.within[node];
       if (in !=
           kNone) {  // finer than the split: summed into its holder (consecutive in leaf order)
         if (in != held) {
-          if (held != kNone) part(held, sum);
+          if (held != kNone) flush();
           held = in;
-          sum = {};
         }
-        sum.add(moments[node], v);
+        const RgbMoment& m = moments[node];
+        r0 += v * m.r[0], r1 += v * m.r[1], r2 += v * m.r[2];
+        g0 += v * m.g[0], g1 += v * m.g[1], g2 += v * m.g[2];
+        b0 += v * m.b[0], b1 += v * m.b[1], b2 += v * m.b[2];
         return;
       }
       const std::uint32_t first = glossy_.first[node];
@@ -225,7 +237,7 @@ class EnvironmentLighting : public SourceTerm {
       }
       end = glossy_.last[node];
     });
-    if (held != kNone) part(held, sum);
+    if (held != kNone) flush();
     if (end > begin) whole(begin, end, value);
   }
   // Calls f(node, value) for each node of an object vertex's visibility cut seen at all.
