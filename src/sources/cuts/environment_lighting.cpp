@@ -80,10 +80,13 @@ Rgb EnvironmentLighting::irradiance(std::size_t r) const {
 void EnvironmentLighting::update_objects(const PlacedObjects& placed,
                                          std::span<const MovablePlacement> placements) {
   if (!objects_) return;
-  objects_->update(env_ ? &*env_ : nullptr, moments_, light_direction_, direct_,
-                   RoomCompact{compact_, compact_fraction_, compact_direct_}, placed, placements,
-                   objects_stale_);
+  const bool changed =
+      objects_->update(env_ ? &*env_ : nullptr, moments_, light_direction_, direct_,
+                       RoomCompact{compact_, compact_fraction_, compact_direct_}, placed,
+                       placements, objects_stale_);
   objects_stale_ = false;
+  // A state that changed no placement (a material edit) keeps the view's sums.
+  if (!changed) return;
   ++placement_generation_;
   for (std::size_t a = 0; a < object_glossy_.size(); ++a) {
     object_glossy_[a].fill(glossy_, objects_->object_moments(a),

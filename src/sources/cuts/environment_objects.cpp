@@ -318,7 +318,7 @@ void EnvironmentObjects::trace_static(std::size_t q, const PlacedObjects& placed
   }
 }
 
-void EnvironmentObjects::update(const Environment* env, std::span<const RgbMoment> moments,
+bool EnvironmentObjects::update(const Environment* env, std::span<const RgbMoment> moments,
                                 std::span<const Vec3> directions,
                                 std::span<const float> room_direct, const RoomCompact& compact,
                                 const PlacedObjects& placed,
@@ -326,7 +326,7 @@ void EnvironmentObjects::update(const Environment* env, std::span<const RgbMomen
   const auto start = std::chrono::steady_clock::now();
   const bool moved_any = !valid_ || !std::equal(placements.begin(), placements.end(),
                                                 placements_.begin(), placements_.end());
-  if (!moved_any && !env_changed && env == env_) return;
+  if (!moved_any && !env_changed && env == env_) return false;
   env_ = env;
   world_moments_ = moments;
   world_directions_ = directions;
@@ -388,7 +388,7 @@ void EnvironmentObjects::update(const Environment* env, std::span<const RgbMomen
   object_compact_.assign(object_direct_.size(), 0.0f);
   if (env == nullptr) {
     seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return;
+    return true;
   }
   // Every frame's moments before the parallel loops read them.
   std::vector<std::span<const RgbMoment>> object_moments;
@@ -422,6 +422,7 @@ void EnvironmentObjects::update(const Environment* env, std::span<const RgbMomen
   }
   if (!compact.sources.sources.empty()) trace_compact(compact, placed, placements);
   seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return true;
 }
 
 void EnvironmentObjects::trace_compact(const RoomCompact& compact, const PlacedObjects& placed,

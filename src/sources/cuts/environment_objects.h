@@ -71,8 +71,9 @@ class EnvironmentObjects {
   // Lights the objects as `placed` by `placements` under `env` (null: dark), whose world
   // moments are `moments` (its compact sources left out), against the empty room's direct light
   // `room_direct` (3 per room receiver, the compact sources' `compact.direct` included).
-  // `env_changed`: the environment changed since the last call.
-  void update(const Environment* env, std::span<const RgbMoment> moments,
+  // `env_changed`: the environment changed since the last call. Returns whether anything was
+  // made again (false: the same environment and placements as the last call).
+  bool update(const Environment* env, std::span<const RgbMoment> moments,
               std::span<const Vec3> directions, std::span<const float> room_direct,
               const RoomCompact& compact, const PlacedObjects& placed,
               std::span<const MovablePlacement> placements, bool env_changed);
