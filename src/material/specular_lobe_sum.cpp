@@ -16,8 +16,8 @@ namespace {
 constexpr float kTinyDenominator = 1e-30f;
 
 // One light's lobe times its irradiance (the header's arithmetic), added to acc.
-void add_one(const SpecularLobeSum::Lobe& b, const MomentLightPlanes& p, std::size_t k,
-             float weight, std::array<std::array<float, 8>, 3>& acc) {
+void add_portable(const SpecularLobeSum::Lobe& b, const MomentLightPlanes& p, std::size_t k,
+                  float weight, std::array<std::array<float, 8>, 3>& acc) {
   const auto at = [&](std::size_t i) { return p.plane[i][k]; };
   const float lx = at(9), ly = at(10), lz = at(11);
   std::array<float, 3> e{};
@@ -151,10 +151,19 @@ void SpecularLobeSum::add(const MomentLightPlanes& lights, std::size_t begin, st
     add_avx2(lobe_, lights, begin, end, weight, acc_);
     return;
   }
-  for (std::size_t k = begin; k < end; ++k) add_one(lobe_, lights, k, weight, acc_);
+  for (std::size_t k = begin; k < end; ++k) add_portable(lobe_, lights, k, weight, acc_);
 }
 
-Rgb SpecularLobeSum::total() const {
+void SpecularLobeSum::add_one(const std::array<float, 9>& m, Vec3 l) {
+  pending_.push(m.data(), l, 1);
+  if (!pending_.full()) return;
+  add(pending_, 1);
+  pending_.clear();
+}
+
+Rgb SpecularLobeSum::total() {
+  add(pending_, 1);
+  pending_.clear();
   Rgb out;
   for (std::size_t lane = 0; lane < 8; ++lane) {
     out += Rgb{acc_[0][lane], acc_[1][lane], acc_[2][lane]};

@@ -19,7 +19,9 @@
 // One division and two square roots a light; AVX2 and FMA where the processor has them, the
 // same arithmetic one light at a time otherwise. Pinned by
 // tests/material/specular_lobe_sum_test.cpp (both paths against the double-precision lobe to
-// 2e-5, roughness 0.01–1, grazing eyes, lights below the surface and of negative channels).
+// 1e-5 + 6e-8/α — a float's rounding of a direction against the lobe's width — roughness
+// 0.01–1, grazing eyes, lights below the surface and of negative channels) and
+// tests/render/glossy_view_test.cpp (a view's sums against the lobe node by node).
 #pragma once
 
 #include <array>
@@ -64,7 +66,11 @@ class SpecularLobeSum {
   void add(const MomentLightBatch& batch, float weight) {
     add(batch.planes(), 0, batch.size(), weight);
   }
-  Rgb total() const;
+  // Adds one light of moments `m` (the planes' nine floats) from `l`, kept with others until
+  // eight or more can be summed together.
+  void add_one(const std::array<float, 9>& m, Vec3 l);
+  // The sum so far (the lights kept by add_one summed first).
+  Rgb total();
 
   // The lobe's constants in single precision, shared by both paths.
   struct Lobe {
@@ -77,6 +83,7 @@ class SpecularLobeSum {
   bool lit_ = false;  // the viewer above the surface
   bool avx2_ = false;
   std::array<std::array<float, 8>, 3> acc_{};
+  MomentLightBatch pending_;  // add_one's lights
 };
 
 }  // namespace relight

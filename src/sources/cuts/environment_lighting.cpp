@@ -98,7 +98,6 @@ Rgb EnvironmentLighting::reflected_specular(std::size_t r,
                                             const MetallicRoughnessToward& brdf) const {
   SpecularLobeSum sum(brdf);
   const MomentLightPlanes planes = room_glossy_.planes();
-  MomentLightBatch parts;  // split nodes seen in part
   walk_view_nodes(
       [&](const auto& f) {
         cuts_.self_visibility.for_each_visible(r, [&](std::uint32_t node, int) { f(node, 1.0f); });
@@ -106,13 +105,8 @@ Rgb EnvironmentLighting::reflected_specular(std::size_t r,
       moments_,
       [&](std::uint32_t begin, std::uint32_t end, float) { sum.add(planes, begin, end, 1); },
       [&](std::uint32_t i, const RgbMoment& part) {
-        parts.push(moment_floats(part).data(), light_direction_[glossy_.node[i]], 1);
-        if (parts.full()) {
-          sum.add(parts, 1);
-          parts.clear();
-        }
+        sum.add_one(moment_floats(part), light_direction_[glossy_.node[i]]);
       });
-  sum.add(parts, 1);
   return sum.total();
 }
 
@@ -126,20 +120,14 @@ Rgb EnvironmentLighting::reflected_object_specular(std::size_t q, const PlacedOb
   SpecularLobeSum sum(
       MetallicRoughnessToward(m, n, VerticalTurn(objects_->object_turn(a)).inverse(v)));
   const MomentLightPlanes planes = object_glossy_[a].planes();
-  MomentLightBatch parts;
   walk_view_nodes([&](const auto& f) { for_each_object_node(*cut, f); },
                   objects_->object_moments(a),
                   [&](std::uint32_t begin, std::uint32_t end, float value) {
                     sum.add(planes, begin, end, value);
                   },
                   [&](std::uint32_t i, const RgbMoment& part) {
-                    parts.push(moment_floats(part).data(), directions[glossy_.node[i]], 1);
-                    if (parts.full()) {
-                      sum.add(parts, 1);
-                      parts.clear();
-                    }
+                    sum.add_one(moment_floats(part), directions[glossy_.node[i]]);
                   });
-  sum.add(parts, 1);
   return sum.total();
 }
 
