@@ -4,13 +4,15 @@
 // reference` on sensors in the sun, in the box's shadow and beside it; `relight render
 // --max-bounces 1` against `relight reference --max-bounces 1` (256 samples a pixel): 8 × 8-
 // pixel block means of luminance within 3 % on average for a Lambertian box and for a steel one
-// (roughness 0.3) shaded toward the eye through its vertices' cuts; a state that turns the sun
-// moves the shadow as the reference does.
+// (roughness 0.3) shaded toward the eye through its vertices' cuts, and for a movable crate of
+// either on the floor and a paint crate on a steel floor, before and after it moves; a state
+// that turns the sun moves the shadow as the reference does.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -143,8 +145,9 @@ TEST(EnvironmentCuts, ATurnedSunMovesTheShadowAsTheReferenceDoes) {
 // inner sphere, traced; its own light through its vertices' cuts, the static floor's coarse
 // view and the environment turned into its frame.
 void precompute_with_crate(Showroom& s, const std::string& material, int spheres = 12,
-                           int points = 16) {
+                           int points = 16, const std::string& floor = "floor") {
   nlohmann::json doc = nlohmann::json::parse(showroom(material));
+  doc["geometry"][0]["material"] = floor;
   doc["objects"] = {{{"name", "crate"}, {"geometry", {doc["geometry"][1]}}}};
   doc["geometry"].erase(1);
   doc["precompute"]["cuts"] = {
@@ -157,20 +160,27 @@ void precompute_with_crate(Showroom& s, const std::string& material, int spheres
   ASSERT_EQ(r.exit_code, 0) << r.err;
 }
 
-TEST(EnvironmentCuts, AMovableCratesDirectLightMatchesTheReferenceBeforeAndAfterItMoves) {
-  for (const std::string material : {"paint", "steel"}) {
+// A paint and a steel crate on the diffuse floor, and a paint crate on a steel floor (roughness
+// 0.3), whose reflection of the sky the crate blocks where it stands in it — between the eye
+// and the crate the mirror directions pass through it (without the objects' fields in the
+// floor's glossy view: 24.7 % and 18.8 % mean, against 1.1 % and 1.9 %).
+TEST(EnvironmentCuts,
+     AMovableCratesDirectLightMatchesTheReferenceBeforeAndAfterItMovesOnAGlossyFloorToo) {
+  const std::pair<std::string, std::string> cases[] = {
+      {"paint", "floor"}, {"steel", "floor"}, {"paint", "steel"}};
+  for (const auto& [material, floor] : cases) {
     Showroom s;
-    precompute_with_crate(s, material);
+    precompute_with_crate(s, material, 12, 16, floor);
     const fs::path state = s.dir.path() / "moved.json";
     std::ofstream(state)
         << R"({"objects": {"crate": {"translate": [0.5, 0, 0.3], "rotate_deg": 25}}})";
     for (const std::string& st : {std::string(), state.string()}) {
       const testing::BlockAgreement a = direct_image_agreement(s, st);
-      std::printf("%s crate %s, direct light, %d blocks: mean %.2f %%, worst %.2f %%\n",
-                  material.c_str(), st.empty() ? "as placed" : "moved and turned", a.blocks,
-                  100 * a.mean, 100 * a.worst);
-      EXPECT_TRUE(a.finite) << material << st;
-      EXPECT_LT(a.mean, 0.03) << material << st;
+      std::printf("%s crate on %s %s, direct light, %d blocks: mean %.2f %%, worst %.2f %%\n",
+                  material.c_str(), floor.c_str(), st.empty() ? "as placed" : "moved and turned",
+                  a.blocks, 100 * a.mean, 100 * a.worst);
+      EXPECT_TRUE(a.finite) << material << floor << st;
+      EXPECT_LT(a.mean, 0.03) << material << floor << st;
     }
   }
 }

@@ -87,7 +87,7 @@ void EnvironmentLighting::update_objects(const PlacedObjects& placed,
   objects_stale_ = false;
   // A state that changed no placement (a material edit) keeps the view's sums.
   if (!changed) return;
-  ++placement_generation_;
+  ++generation_;
   for (std::size_t a = 0; a < object_glossy_.size(); ++a) {
     object_glossy_[a].fill(glossy_, objects_->object_moments(a),
                            objects_->object_light_directions(a));
@@ -98,15 +98,13 @@ Rgb EnvironmentLighting::reflected_specular(std::size_t r,
                                             const MetallicRoughnessToward& brdf) const {
   SpecularLobeSum sum(brdf);
   const MomentLightPlanes planes = room_glossy_.planes();
-  walk_view_nodes(
-      [&](const auto& f) {
-        cuts_.self_visibility.for_each_visible(r, [&](std::uint32_t node, int) { f(node, 1.0f); });
-      },
-      moments_,
-      [&](std::uint32_t begin, std::uint32_t end, float) { sum.add(planes, begin, end, 1); },
-      [&](std::uint32_t i, const RgbMoment& part) {
-        sum.add_one(moment_floats(part), light_direction_[glossy_.node[i]]);
-      });
+  walk_view_nodes([&](const auto& f) { for_each_room_node(r, f); }, moments_,
+                  [&](std::uint32_t begin, std::uint32_t end, float value) {
+                    sum.add(planes, begin, end, value);
+                  },
+                  [&](std::uint32_t i, const RgbMoment& part) {
+                    sum.add_one(moment_floats(part), light_direction_[glossy_.node[i]]);
+                  });
   return sum.total();
 }
 
@@ -120,8 +118,7 @@ Rgb EnvironmentLighting::reflected_object_specular(std::size_t q, const PlacedOb
   SpecularLobeSum sum(
       MetallicRoughnessToward(m, n, VerticalTurn(objects_->object_turn(a)).inverse(v)));
   const MomentLightPlanes planes = object_glossy_[a].planes();
-  walk_view_nodes([&](const auto& f) { for_each_object_node(*cut, f); },
-                  objects_->object_moments(a),
+  walk_view_nodes([&](const auto& f) { for_each_value_node(*cut, f); }, objects_->object_moments(a),
                   [&](std::uint32_t begin, std::uint32_t end, float value) {
                     sum.add(planes, begin, end, value);
                   },
@@ -157,21 +154,20 @@ const EnvironmentLighting::DiffuseLayerSums& EnvironmentLighting::keep_diffuse_l
 const EnvironmentLighting::DiffuseLayerSums& EnvironmentLighting::diffuse_layer(std::size_t r,
                                                                                 Vec3 n,
                                                                                 double roughness) {
-  return keep_diffuse_layer(room_layer_.at(r), light_generation_, n, roughness,
+  return keep_diffuse_layer(room_layer_.at(r), generation_, n, roughness,
                             [&](const auto& visit) { for_each_light(r, visit); });
 }
 
 const EnvironmentLighting::DiffuseLayerSums& EnvironmentLighting::object_diffuse_layer(
     std::size_t q, const PlacedObjects& placed, Vec3 n, double roughness) {
-  return keep_diffuse_layer(object_layer_.at(q), placement_generation_, n, roughness,
+  return keep_diffuse_layer(object_layer_.at(q), generation_, n, roughness,
                             [&](const auto& visit) { for_each_object_light(q, placed, visit); });
 }
 
 void EnvironmentLighting::update() {
   const auto start = std::chrono::steady_clock::now();
   objects_stale_ = true;
-  ++light_generation_;
-  ++placement_generation_;
+  ++generation_;
   if (env_) {
     compact_ = find_compact_sources(*env_);
     moments_ = environment_moments(*env_, tree_, leaves_, 0, &compact_);

@@ -78,8 +78,10 @@ class EnvironmentLighting : public SourceTerm {
   std::span<const CompactSource> compact_sources() const { return compact_.sources; }
   // Σ_j weight(ω_j) · e_j over the view's nodes of receiver r (glossy_nodes.h: its visible
   // nodes split to kGlossyNodeDeg, and those finer summed into the split node holding them),
-  // e_j = n · Σ_{k visible in j} M_k, n its normal, ω_j the direction of node j's light: the
+  // e_j = n · Σ_{k visible in j} v_k M_k, n its normal, ω_j the direction of node j's light: the
   // outgoing radiance when `weight` is the BRDF toward the eye (the compact sources left out).
+  // The visibility v is the receiver's cut times the fields of the movable objects that reach
+  // it, as last placed (update_objects), or its own cut where none does.
   template <typename Weight>
   Rgb reflected(std::size_t r, const Weight& weight) const {
     Rgb out{};
@@ -91,23 +93,19 @@ class EnvironmentLighting : public SourceTerm {
   template <typename Visit>
   void for_each_light(std::size_t r, const Visit& visit) const {
     const Vec3 n = runtime_.normal(r);
-    walk_view_nodes(
-        [&](const auto& f) {
-          cuts_.self_visibility.for_each_visible(r,
-                                                 [&](std::uint32_t node, int) { f(node, 1.0f); });
-        },
-        moments_,
-        [&](std::uint32_t begin, std::uint32_t end, float) {
-          for (std::uint32_t i = begin; i < end; ++i) {
-            const std::uint32_t j = glossy_.node[i];
-            const Rgb e = moments_[j].irradiance(n);
-            if (e.r > 0 || e.g > 0 || e.b > 0) visit(e, light_direction_[j]);
-          }
-        },
-        [&](std::uint32_t i, const RgbMoment& part) {
-          const Rgb e = part.irradiance(n);
-          if (e.r > 0 || e.g > 0 || e.b > 0) visit(e, light_direction_[glossy_.node[i]]);
-        });
+    walk_view_nodes([&](const auto& f) { for_each_room_node(r, f); }, moments_,
+                    [&](std::uint32_t begin, std::uint32_t end, float v) {
+                      for (std::uint32_t i = begin; i < end; ++i) {
+                        const std::uint32_t j = glossy_.node[i];
+                        const Rgb e = moments_[j].irradiance(n);
+                        if (e.r > 0 || e.g > 0 || e.b > 0) visit(e * v, light_direction_[j]);
+                      }
+                    },
+                    [&](std::uint32_t i, const RgbMoment& part) {
+                      const Rgb e = part.irradiance(n);
+                      if (e.r > 0 || e.g > 0 || e.b > 0)
+                        visit(e, light_direction_[glossy_.node[i]]);
+                    });
   }
   // The same at object vertex q (PlacedObjects order) as the objects were last placed
   // (update_objects), through its visibility in its object's frame; `weight` takes world
@@ -129,7 +127,7 @@ class EnvironmentLighting : public SourceTerm {
     const std::span<const Vec3> directions = objects_->object_light_directions(a);
     const Vec3 n = objects_->meshes()[a].normals[q - placed.first_vertex[a]];
     const VerticalTurn turn(objects_->object_turn(a));  // its sine and cosine once
-    walk_view_nodes([&](const auto& f) { for_each_object_node(*cut, f); }, m,
+    walk_view_nodes([&](const auto& f) { for_each_value_node(*cut, f); }, m,
                     [&](std::uint32_t begin, std::uint32_t end, float v) {
                       for (std::uint32_t i = begin; i < end; ++i) {
                         const std::uint32_t j = glossy_.node[i];
@@ -157,8 +155,8 @@ class EnvironmentLighting : public SourceTerm {
   struct DiffuseLayerSums {
     Rgb e, a, b;
   };
-  // Receiver r's (object vertex q's, as the objects were last placed) sums for normal n and
-  // `roughness`, kept until the light, the placements (objects only) or the roughness change:
+  // Receiver r's (object vertex q's) sums, as the objects were last placed, for normal n and
+  // `roughness`, kept until the light, a placement or the roughness changes:
   // a view frame then evaluates only the specular lobe at each node. Not const: calls for
   // distinct vertices may run at once, not two for one vertex. The view cache's storage is
   // made by prepare_view_cache, which must come first.
@@ -240,13 +238,23 @@ class EnvironmentLighting : public SourceTerm {
     if (held != kNone) flush();
     if (end > begin) whole(begin, end, value);
   }
-  // Calls f(node, value) for each node of an object vertex's visibility cut seen at all.
+  // Calls f(node, value) for each node of a visibility cut seen at all.
   template <typename F>
-  void for_each_object_node(const ValueCut& cut, const F& f) const {
+  void for_each_value_node(const ValueCut& cut, const F& f) const {
     for_each_node(cut, static_cast<std::uint32_t>(tree_.leaf_count()),
                   [&](std::uint32_t node, float v) {
                     if (v > 0) f(node, v);
                   });
+  }
+  // The same for room receiver r with the objects as last placed: the product of its cut and
+  // the fields of the objects that reach it, or its own cut where none does.
+  template <typename F>
+  void for_each_room_node(std::size_t r, const F& f) const {
+    if (const ValueCut* cut = objects_ ? objects_->room_visibility(r) : nullptr) {
+      for_each_value_node(*cut, f);
+      return;
+    }
+    cuts_.self_visibility.for_each_visible(r, [&](std::uint32_t node, int) { f(node, 1.0f); });
   }
 
   CutsTransferView cuts_;
@@ -271,7 +279,7 @@ class EnvironmentLighting : public SourceTerm {
   std::optional<EnvironmentObjects> objects_;
   bool objects_stale_ = true;  // the environment changed since the objects' last update
   // The view's diffuse-layer sums per receiver and per object vertex, each with the roughness
-  // and the light's (or the placements') generation it was made for.
+  // and the generation (the environment's and the placements') it was made for.
   struct KeptDiffuseLayer {
     DiffuseLayerSums sums;
     double roughness = -1;
@@ -282,7 +290,8 @@ class EnvironmentLighting : public SourceTerm {
                                                     std::uint64_t generation, Vec3 n,
                                                     double roughness, const ForEachLight& for_each);
   std::vector<KeptDiffuseLayer> room_layer_, object_layer_;
-  std::uint64_t light_generation_ = 1, placement_generation_ = 1;
+  // Made again with the environment or a placement (update, update_objects).
+  std::uint64_t generation_ = 1;
   double seconds_ = 0, bounce_seconds_ = 0;
 };
 

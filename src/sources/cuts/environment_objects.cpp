@@ -276,6 +276,13 @@ void EnvironmentObjects::object_cut(std::size_t q, std::size_t a, const PlacedOb
   multiply_cuts(std::span(factors.data(), count + 1), object_products_[q]);
 }
 
+const ValueCut* EnvironmentObjects::room_visibility(std::size_t r) const {
+  if (env_ == nullptr || r >= room_products_.size() || room_products_[r].size() == 0) {
+    return nullptr;
+  }
+  return &room_products_[r];
+}
+
 const ValueCut* EnvironmentObjects::object_visibility(std::size_t q,
                                                       const PlacedObjects& placed) const {
   const std::size_t a = placed.object_of_vertex(q);

@@ -82,6 +82,10 @@ class EnvironmentObjects {
   // placed it: its cut of itself times the static scene's coarse view and the other objects'
   // fields; null when the object is hidden or there is no environment. For renderers.
   const ValueCut* object_visibility(std::size_t q, const PlacedObjects& placed) const;
+  // Room receiver r's visibility with the objects as last placed, in the world: its cut times
+  // the fields of the objects that reach it; null where none reaches it (its own cut alone) or
+  // there is no environment. For renderers.
+  const ValueCut* room_visibility(std::size_t r) const;
   // The environment's moments in object a's frame (its turn as last placed).
   std::span<const RgbMoment> object_moments(std::size_t a) const;
   // Their nodes' light directions in the same frame.
