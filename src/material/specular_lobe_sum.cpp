@@ -154,16 +154,13 @@ void SpecularLobeSum::add(const MomentLightPlanes& lights, std::size_t begin, st
   for (std::size_t k = begin; k < end; ++k) add_portable(lobe_, lights, k, weight, acc_);
 }
 
-void SpecularLobeSum::add_one(const std::array<float, 9>& m, Vec3 l) {
-  pending_.push(m.data(), l, 1);
-  if (!pending_.full()) return;
+void SpecularLobeSum::flush_pending() {
   add(pending_, 1);
   pending_.clear();
 }
 
 Rgb SpecularLobeSum::total() {
-  add(pending_, 1);
-  pending_.clear();
+  flush_pending();
   Rgb out;
   for (std::size_t lane = 0; lane < 8; ++lane) {
     out += Rgb{acc_[0][lane], acc_[1][lane], acc_[2][lane]};

@@ -68,7 +68,10 @@ class SpecularLobeSum {
   }
   // Adds one light of moments `m` (the planes' nine floats) from `l`, kept with others until
   // eight or more can be summed together.
-  void add_one(const std::array<float, 9>& m, Vec3 l);
+  void add_one(const std::array<float, 9>& m, Vec3 l) {
+    pending_.push(m.data(), l, 1);
+    if (pending_.full()) flush_pending();
+  }
   // The sum so far (the lights kept by add_one summed first).
   Rgb total();
 
@@ -83,6 +86,7 @@ class SpecularLobeSum {
   bool lit_ = false;  // the viewer above the surface
   bool avx2_ = false;
   std::array<std::array<float, 8>, 3> acc_{};
+  void flush_pending();
   MomentLightBatch pending_;  // add_one's lights
 };
 

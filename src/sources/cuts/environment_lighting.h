@@ -214,9 +214,10 @@ class EnvironmentLighting : public SourceTerm {
       r0 = r1 = r2 = g0 = g1 = g2 = b0 = b1 = b2 = 0;
     };
     for_each_visible([&](std::uint32_t node, float v) {
+      // A node finer than the split is summed into the split node holding it (a holder's
+      // nodes come one after another in leaf order).
       const std::uint32_t in = glossy_.within[node];
-      if (in !=
-          kNone) {  // finer than the split: summed into its holder (consecutive in leaf order)
+      if (in != kNone) {
         if (in != held) {
           if (held != kNone) flush();
           held = in;
