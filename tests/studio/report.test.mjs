@@ -1,7 +1,8 @@
 // `relight report` (issue 17) opened in a real browser (Debian's Chromium through
 // playwright-core): the demo room's report is one self-contained page — it loads with no
 // console error and no request beyond its own file, shows the illuminance table, a plan per
-// sensor set with its legend and a polar plot per luminaire; a screenshot is kept for a look.
+// sensor set with its legend and a polar plot per luminaire; its screenshot is checked for size
+// and kept for a look where STUDIO_SHOTS names a folder, as the other browser tests' are.
 import test from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
@@ -41,7 +42,7 @@ test('the report opens in Chromium with no console error and no request of its o
       polars: document.querySelectorAll('svg.polar').length,
       rows: document.querySelectorAll('table tr').length,
     }));
-    const shot = path.join(dir, 'report.png');
+    const shot = path.join(process.env.STUDIO_SHOTS ?? dir, 'report.png');
     await page.screenshot({ path: shot, fullPage: true });
     console.log(`report: ${JSON.stringify(shown)}; screenshot ${shot} (${fs.statSync(shot).size} bytes)`);
     assert.deepEqual(problems, []);
@@ -56,5 +57,6 @@ test('the report opens in Chromium with no console error and no request of its o
   } finally {
     await context.close();
     fs.rmSync(profile, { recursive: true, force: true });
+    fs.rmSync(dir, { recursive: true, force: true });
   }
 });
