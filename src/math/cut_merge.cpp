@@ -9,6 +9,7 @@ namespace relight {
 namespace {
 
 constexpr std::size_t kMaxOperands = 16;
+constexpr std::size_t kMaxTabled = 8;  // interpolations of up to 8 cuts sum by a table
 
 // A pointer into one operand (Steps 1 and 3), with the pointed node's height and value read
 // once when the pointer moves. View: the stored cuts' encoding (height or index).
@@ -78,6 +79,36 @@ void merge(std::span<Cursor<View>> cursors, const Op& op, ValueCut& out) {
   }
 }
 
+// As merge, for stored (binary) cuts alone: each output node's value is table[the set of
+// operands visible there, operand j as bit j].
+template <typename View>
+void merge_visible(std::span<Cursor<View>> cursors, const float* table, ValueCut& out) {
+  out.clear();
+  const std::size_t count = cursors.size();
+  std::uint64_t ends[kMaxOperands];
+  unsigned visible = 0;
+  for (std::size_t j = 0; j < count; ++j) {
+    cursors[j].load();
+    ends[j] = std::uint64_t{1} << cursors[j].h;
+    visible |= (cursors[j].v != 0 ? 1u : 0u) << j;
+  }
+  std::uint64_t leaf = 0;
+  while (cursors.front().k < cursors.front().end) {
+    std::uint64_t next = ends[0];
+    for (std::size_t j = 1; j < count; ++j) next = std::min(next, ends[j]);
+    push_cut_node(out, leaf, std::countr_zero(next - leaf), table[visible]);
+    leaf = next;
+    for (std::size_t j = 0; j < count; ++j) {
+      if (ends[j] != next) continue;
+      Cursor<View>& c = cursors[j];
+      ++c.k;
+      c.load();
+      ends[j] = next + (std::uint64_t{1} << c.h);
+      visible = (visible & ~(1u << j)) | (c.v != 0 ? 1u : 0u) << j;
+    }
+  }
+}
+
 }  // namespace
 
 namespace {
@@ -107,14 +138,27 @@ void interpolate(std::span<const WeightedCutOf<View>> operands, ValueCut& out) {
     weights[0] = 0;
     count = 1;
   }
-  merge(
-      std::span<Cursor<View>>(cursors, count),
-      [&](std::span<const float> v) {
-        float sum = 0;
-        for (std::size_t j = 0; j < v.size(); ++j) sum += weights[j] * v[j];
-        return sum;
-      },
-      out);
+  if (count > kMaxTabled) {
+    merge(
+        std::span<Cursor<View>>(cursors, count),
+        [&](std::span<const float> v) {
+          float sum = 0;
+          for (std::size_t j = 0; j < v.size(); ++j) sum += weights[j] * v[j];
+          return sum;
+        },
+        out);
+    return;
+  }
+  // The stored cuts are binary, so an output node's value is the sum of the weights of the
+  // operands visible there: a table by the set of them, each sum taken in the operands' order
+  // (the same floats as summing w·v over every operand).
+  float table[std::size_t{1} << kMaxTabled];
+  table[0] = 0;
+  for (std::size_t m = 1; m < (std::size_t{1} << count); ++m) {
+    const int top = std::bit_width(m) - 1;
+    table[m] = table[m ^ (std::size_t{1} << top)] + weights[top];
+  }
+  merge_visible(std::span<Cursor<View>>(cursors, count), table, out);
 }
 
 // out = Π over the cursors' cuts.

@@ -15,6 +15,8 @@
 // (against the same operations leaf by leaf).
 #pragma once
 
+#include <algorithm>
+#include <bit>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -49,6 +51,17 @@ inline void push_cut_node(ValueCut& out, std::uint64_t first_leaf, int h, float 
   }
   out.height.push_back(static_cast<std::uint8_t>(h));
   out.value.push_back(v);
+}
+
+// Appends leaves first … first + count − 1 (the end of `out`), all of value v, as the fewest
+// nodes push_cut_node makes of them one by one.
+inline void push_cut_run(ValueCut& out, std::uint64_t first, std::uint64_t count, float v) {
+  while (count > 0) {
+    const int h = std::min(std::countr_zero(first), static_cast<int>(std::bit_width(count)) - 1);
+    push_cut_node(out, first, h, v);
+    first += std::uint64_t{1} << h;
+    count -= std::uint64_t{1} << h;
+  }
 }
 
 // The value of every leaf of `cut` (N leaves) into `leaves`.

@@ -3,6 +3,7 @@
 // point) interpolated with trilinear-like weights, and a horizon cut times two such
 // interpolations, equal at every leaf, and the same product taken in two steps; a product with
 // a cut of ones keeps the cut's nodes; the index encoding merges to the same cuts.
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <vector>
@@ -53,10 +54,12 @@ TEST(CutMerge, EightInterpolatedCutsEqualTheWeightedSumAtEveryLeaf) {
   interpolate_cuts(operands, out);
   const std::vector<float> got = leaves_of(out);
   ASSERT_EQ(got.size(), tree().leaf_count());
+  // Exactly: a node's value is the sum of its visible operands' weights in the operands' order
+  // (up to eight operands by a table of those sums), the same floats as this sum.
   for (std::size_t i = 0; i < got.size(); ++i) {
     float expected = 0;
     for (std::size_t s = 0; s < 8; ++s) expected += w[s] * leaf_values[s][i];
-    ASSERT_NEAR(got[i], expected, 1e-6) << i;
+    ASSERT_EQ(got[i], expected) << i;
   }
   // The previous methods' index encoding of the same cuts: each node's height from its index, the
   // same merge giving the same cut.
@@ -77,6 +80,46 @@ TEST(CutMerge, EightInterpolatedCutsEqualTheWeightedSumAtEveryLeaf) {
   std::printf("8 cuts of %llu nodes in all interpolated into %zu nodes\n",
               static_cast<unsigned long long>(view.node_count()), out.size());
   EXPECT_LT(out.size(), view.node_count());
+}
+
+TEST(CutMerge, TenInterpolatedCutsBeyondTheTableEqualTheWeightedSumAtEveryLeaf) {
+  HeightCuts store = make_height_cuts(tree());
+  std::vector<std::vector<float>> leaf_values;
+  for (int s = 0; s < 10; ++s) {
+    leaf_values.push_back(cap(normalize(Vec3{0.1 * (s % 3), 1, 0.12 * (s / 3)}), 0.92 - 0.01 * s));
+    append_cut(store, make_direction_cut(tree(), leaf_values.back(), 0));
+  }
+  const HeightCutsView view = store.view();
+  std::vector<WeightedCut> operands;
+  for (std::size_t s = 0; s < 10; ++s) operands.push_back({&view, s, 0.05f + 0.01f * s});
+  ValueCut out;
+  interpolate_cuts(operands, out);
+  const std::vector<float> got = leaves_of(out);
+  ASSERT_EQ(got.size(), tree().leaf_count());
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    float expected = 0;
+    for (std::size_t s = 0; s < 10; ++s) expected += operands[s].weight * leaf_values[s][i];
+    ASSERT_EQ(got[i], expected) << i;
+  }
+}
+
+TEST(CutMerge, ARunPushedAtOnceIsTheCutItsLeavesMakeOneByOne) {
+  // Runs of 0s, 1s and halves of lengths 1 to 300 at every alignment, after a few leaves.
+  std::uint32_t state = 12345;
+  const auto next = [&] { return state = state * 1664525u + 1013904223u; };
+  for (int trial = 0; trial < 200; ++trial) {
+    ValueCut one_by_one, runs;
+    std::uint64_t leaf = 0;
+    while (leaf < 4096) {
+      const std::uint64_t count = std::min<std::uint64_t>(1 + next() % 300, 4096 - leaf);
+      const float v = static_cast<float>(next() % 3) * 0.5f;
+      for (std::uint64_t i = 0; i < count; ++i) push_cut_node(one_by_one, leaf + i, 0, v);
+      push_cut_run(runs, leaf, count, v);
+      leaf += count;
+    }
+    ASSERT_EQ(runs.height, one_by_one.height) << trial;
+    ASSERT_EQ(runs.value, one_by_one.value) << trial;
+  }
 }
 
 TEST(CutMerge, AProductEqualsTheLeafProductAndOnesChangeNothing) {
