@@ -41,13 +41,18 @@ ObjectMesh prepare_object(const Scene& scene, const MovableObject& object) {
   return m;
 }
 
-BoundingSphere sphere_around(std::span<const Vec3> points) {
-  Vec3 lo = points.front(), hi = lo;
+Bounds box_around(std::span<const Vec3> points) {
+  Bounds b{points.front(), points.front()};
   for (const Vec3& p : points) {
-    lo = min(lo, p);
-    hi = max(hi, p);
+    b.min = min(b.min, p);
+    b.max = max(b.max, p);
   }
-  BoundingSphere s{(lo + hi) * 0.5, 0};
+  return b;
+}
+
+BoundingSphere sphere_around(std::span<const Vec3> points) {
+  const Bounds box = box_around(points);
+  BoundingSphere s{(box.min + box.max) * 0.5, 0};
   for (const Vec3& p : points) s.radius = std::max(s.radius, length(p - s.centre));
   return s;
 }
@@ -76,6 +81,7 @@ PlacedObjects place_objects(std::span<const ObjectMesh> objects,
   std::vector<std::uint32_t> first{0}, triangle_object;
   std::vector<Triangle> triangles;
   std::vector<BoundingSphere> bounds;
+  std::vector<Bounds> boxes;
   for (std::size_t i = 0; i < objects.size(); ++i) {
     const ObjectMesh& o = objects[i];
     const MovablePlacement& p = placements[i];
@@ -89,9 +95,11 @@ PlacedObjects place_objects(std::span<const ObjectMesh> objects,
     first.push_back(static_cast<std::uint32_t>(positions.size()));
     if (!p.visible || o.triangles.empty()) {
       bounds.push_back({});
+      boxes.push_back({});
       continue;
     }
     bounds.push_back(sphere_around(std::span(positions).subspan(base)));
+    boxes.push_back(box_around(std::span(positions).subspan(base)));
     for (const Triangle& t : o.triangles) {
       triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
       triangle_object.push_back(static_cast<std::uint32_t>(i));
@@ -109,9 +117,10 @@ PlacedObjects place_objects(std::span<const ObjectMesh> objects,
     }
     own.emplace_back(positions, mine, ids);
   }
-  return {std::move(positions), std::move(normals),   std::move(ray_points),      std::move(albedo),
-          std::move(first),     std::move(triangles), std::move(triangle_object), std::move(bounds),
-          std::move(tracer),    std::move(own)};
+  return {std::move(positions),       std::move(normals), std::move(ray_points),
+          std::move(albedo),          std::move(first),   std::move(triangles),
+          std::move(triangle_object), std::move(bounds),  std::move(boxes),
+          std::move(tracer),          std::move(own)};
 }
 
 std::size_t PlacedObjects::object_of_vertex(std::size_t q) const {

@@ -6,6 +6,7 @@
 // Pinned by tests/sources/object/object_mesh_test.cpp.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -44,6 +45,7 @@ struct PlacedObjects {
   std::vector<Triangle> triangles;             // the visible objects', indices into positions
   std::vector<std::uint32_t> triangle_object;  // per triangle: its object
   std::vector<BoundingSphere> bounds;          // per object; radius 0 when hidden
+  std::vector<Bounds> boxes;                   // per object, its placed vertices'; 0 when hidden
   RayTracer tracer;                            // over `triangles` (ids: index into triangles)
   std::vector<RayTracer> own;                  // per object, over its triangles alone (same ids)
 
@@ -60,6 +62,8 @@ struct PlacedObjects {
 // wall does not count), crosses a triangle of `room`.
 bool passes_through(const PlacedObjects& objects, std::size_t k, const RayTracer& room);
 
+// The box around `points` (at least one).
+Bounds box_around(std::span<const Vec3> points);
 // A sphere around `points` (at least one): the centre of their bounding box, the radius to
 // the farthest one.
 BoundingSphere sphere_around(std::span<const Vec3> points);
@@ -68,6 +72,24 @@ BoundingSphere sphere_around(std::span<const Vec3> points);
 bool segment_near_sphere(Vec3 a, Vec3 b, const BoundingSphere& s, double margin);
 // Whether a sphere comes within `margin` of the ray from a along unit d (a inside it counts).
 bool ray_near_sphere(Vec3 a, Vec3 d, const BoundingSphere& s, double margin);
+
+// Whether the ray from a along d meets the box `b` grown by `margin` on every side (a inside it
+// counts): no ray that misses it can meet a triangle within it. Separating axes, no division:
+// the box's three (a beyond a slab pointing away from it) and d × each of them (the line's
+// distance from the centre across that axis beyond the box's reach). Inline: called once a
+// direction where objects are traced leaf by leaf (sources/cuts/environment_objects.h).
+inline bool ray_meets_box(Vec3 a, Vec3 d, const Bounds& b, double margin) {
+  const Vec3 w = (b.min + b.max) * 0.5 - a;
+  const Vec3 e = (b.max - b.min) * 0.5 + Vec3{margin, margin, margin};
+  const bool away = (std::abs(w.x) > e.x && w.x * d.x <= 0) ||
+                    (std::abs(w.y) > e.y && w.y * d.y <= 0) ||
+                    (std::abs(w.z) > e.z && w.z * d.z <= 0);
+  const double ax = std::abs(d.x), ay = std::abs(d.y), az = std::abs(d.z);
+  const bool beside = std::abs(w.y * d.z - w.z * d.y) > e.y * az + e.z * ay ||
+                      std::abs(w.z * d.x - w.x * d.z) > e.x * az + e.z * ax ||
+                      std::abs(w.x * d.y - w.y * d.x) > e.x * ay + e.y * ax;
+  return !away && !beside;
+}
 
 // Throws std::invalid_argument when the placements are not one per object.
 PlacedObjects place_objects(std::span<const ObjectMesh> objects,
