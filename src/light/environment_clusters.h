@@ -27,6 +27,7 @@
 // Pinned by tests/light/environment_clusters_test.cpp.
 #pragma once
 
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -79,12 +80,32 @@ std::vector<Vec3> moment_directions(std::span<const RgbMoment> moments, const Di
 // spacing.
 PointGrid leaf_grid(const DirectionTree& tree);
 
+// What places the parts of an environment's equirectangular grid in a frame: the grid (texels
+// across, down, parts a texel's side), the frame's turn and the map's.
+struct EnvironmentGridKey {
+  int width = 0, height = 0, parts = 0;
+  double frame_rotate_deg = 0, map_rotate_deg = 0;
+  bool operator==(const EnvironmentGridKey&) const = default;
+};
+// Every part of such a grid with its map direction, its direction in the frame and the nearest
+// leaf to that: what environment_moments finds once for a grid and frame and keeps, so that a
+// sky or a map of the same size changing frame to frame finds only the radiance again.
+struct EnvironmentGridParts {
+  EnvironmentGridKey key;
+  const PointGrid* leaves = nullptr;  // the lookup the leaves came from
+  std::vector<Vec3> map_direction, direction;
+  std::vector<std::uint32_t> leaf;
+};
+
 // M_k per heap node k (index 0 unused, leaves N … 2N − 1), in the frame of an object turned by
 // `frame_rotate_deg` about the vertical (math/placement.h): a world direction ω counts at the
 // object's direction the turn takes back to it, so that cuts stored in the object's frame meet
-// the environment as the object now sees it.
+// the environment as the object now sees it. `kept` (optional): the grid's parts as the last
+// call in this frame found them, used when they are the same and made again when not (grids of
+// up to 2^18 parts; larger ones are placed part by part each call).
 std::vector<RgbMoment> environment_moments(const Environment& env, const DirectionTree& tree,
                                            const PointGrid& leaves, double frame_rotate_deg = 0,
-                                           const CompactSources* traced = nullptr);
+                                           const CompactSources* traced = nullptr,
+                                           EnvironmentGridParts* kept = nullptr);
 
 }  // namespace relight

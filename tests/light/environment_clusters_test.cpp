@@ -96,5 +96,45 @@ TEST(EnvironmentClusters, AMapsSmallSourceKeepsItsCosine) {
   EXPECT_NEAR(plane_irradiance(m, {0, 1, 0}).r, expected, 0.002 * expected);
 }
 
+// The grid's parts kept from call to call (a sky moving frame to frame) give the same floats as
+// parts placed afresh, and are placed again when the grid or the frame changes.
+TEST(EnvironmentClusters, KeptGridPartsGiveTheMomentsOfAFreshGridAndFollowTheFrame) {
+  const PointGrid leaves = leaf_grid(tree());
+  EnvironmentGridParts kept;
+  const auto same = [](const std::vector<RgbMoment>& a, const std::vector<RgbMoment>& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t k = 1; k < a.size(); ++k) {
+      for (int i = 0; i < 3; ++i) {
+        if (a[k].r[i] != b[k].r[i] || a[k].g[i] != b[k].g[i] || a[k].b[i] != b[k].b[i]) {
+          return false;
+        }
+      }
+    }
+    return true;
+  };
+  for (const double frame : {0.0, 0.0, 25.0}) {
+    for (const double azimuth : {0.2, 1.4}) {
+      const Vec3 sun = normalize(Vec3{std::cos(azimuth), 0.6, std::sin(azimuth)});
+      const Environment sky =
+          make_sky_environment(make_sky_from_horizontal_illuminance(12, sun, 15000, 0.2, 70000));
+      const std::vector<RgbMoment> fresh = environment_moments(sky, tree(), leaves, frame);
+      EXPECT_TRUE(same(environment_moments(sky, tree(), leaves, frame, nullptr, &kept), fresh))
+          << frame << " " << azimuth;
+      EXPECT_EQ(kept.key.frame_rotate_deg, frame);
+    }
+  }
+  // A map after the sky: its own grid.
+  auto map = std::make_shared<EquirectMap>();
+  map->width = 64;
+  map->height = 32;
+  for (int t = 0; t < 64 * 32; ++t) map->texels.push_back(Rgb{1.0 + t % 7, 2.0, 0.5 * (t % 3)});
+  const Environment env = make_map_environment(map, 40, 2);
+  EXPECT_TRUE(same(environment_moments(env, tree(), leaves, 10, nullptr, &kept),
+                   environment_moments(env, tree(), leaves, 10)));
+  EXPECT_EQ(kept.key.map_rotate_deg, 40);
+  EXPECT_EQ(kept.leaf.size(), static_cast<std::size_t>(kept.key.width) * kept.key.height *
+                                  kept.key.parts * kept.key.parts);
+}
+
 }  // namespace
 }  // namespace relight

@@ -170,7 +170,7 @@ void EnvironmentLighting::update() {
   ++generation_;
   if (env_) {
     compact_ = find_compact_sources(*env_);
-    moments_ = environment_moments(*env_, tree_, leaves_, 0, &compact_);
+    moments_ = environment_moments(*env_, tree_, leaves_, 0, &compact_, &grid_parts_);
   } else {
     compact_ = {};
     moments_.assign(2 * tree_.leaf_count(), RgbMoment{});

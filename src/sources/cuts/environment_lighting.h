@@ -268,6 +268,7 @@ class EnvironmentLighting : public SourceTerm {
   std::shared_ptr<const EquirectMap> map_;  // the last map read, and its file
   std::filesystem::path map_file_;
   std::vector<RgbMoment> moments_;
+  EnvironmentGridParts grid_parts_;    // the environment's grid placed in the world, kept
   std::vector<Vec3> light_direction_;  // per node: moment_direction (light/environment_clusters.h)
   GlossyNodes glossy_;                 // the tree split to kGlossyNodeDeg
   GlossyLights room_glossy_;           // the split's lights in the world
