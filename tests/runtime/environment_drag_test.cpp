@@ -8,6 +8,7 @@
 // tolerance from wherever the last frame left it, which would hide a difference of that size.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <optional>
 #include <string>
 
@@ -70,6 +71,28 @@ TEST(EnvironmentDrag, AnyHistoryOfPlacementsGivesTheLightOfTheFinalOne) {
     EXPECT_LT(worst, 1e-5) << move;
     EXPECT_GT(scale, 1000) << move;
   }
+}
+
+// An object turned a little every frame (a designer turning a chair) leaves nothing behind: the
+// turned frames' light and leaf tables kept are those of the placement as it stands (before,
+// each frame's turn added ~4 MB of them for good).
+TEST(EnvironmentDrag, TurningAnObjectFrameAfterFrameKeepsOnlyTheCurrentTurnsTables) {
+  testing::TempDir dir;
+  const std::filesystem::path rlt = testing::write_precomputed(dir, "crates", two_crates());
+  RelighterSettings direct;
+  direct.environment_bounce = false;
+  RelitScene relit(rlt, std::nullopt, direct);
+  std::size_t most = 0;
+  for (int frame = 1; frame <= 12; ++frame) {
+    const std::string move = R"({"objects": {"a": {"rotate_deg": )" + std::to_string(3 * frame) +
+                             R"(}, "b": {"rotate_deg": -10}}})";
+    relit.apply(load_lighting_state(relit.scene(),
+                                    dir.write("turn" + std::to_string(frame) + ".json", move)));
+    most = std::max(most, relit.relighter().environment()->objects_kept_turns());
+  }
+  std::printf("at most %zu turned frames and leaf tables kept over 12 turns\n", most);
+  EXPECT_GT(most, 0u);
+  EXPECT_LE(most, 8u);  // 6: two frames (a, b), four relative turns
 }
 
 // The tracer of what a camera sees (RelitScene::shown_tracer): kept while the placements stay

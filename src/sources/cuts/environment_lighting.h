@@ -185,6 +185,7 @@ class EnvironmentLighting : public SourceTerm {
     return objects_ ? objects_->object_compact() : std::span<const float>{};
   }
   double objects_seconds() const { return objects_ ? objects_->seconds() : 0.0; }
+  std::size_t objects_kept_turns() const { return objects_ ? objects_->kept_turns() : 0; }
 
   // Wall time of the last update: the cluster values and the receivers' sums, and the bounce.
   double seconds() const { return seconds_; }

@@ -19,7 +19,8 @@
 //
 // Within a field's inner sphere (a floor beside or under the object), where the paper's field has
 // no samples, the object itself is traced from the receiver in its bounding cone, leaf by leaf
-// above the receiver's horizon.
+// above the receiver's horizon — along the leaves whose ray meets the object's box; the rest
+// are open without a ray.
 // An object turned about the vertical relative to the frame of the receiver's cut has its
 // interpolated field re-expressed in that frame leaf by leaf within its bounding cone (each
 // leaf at the nearest leaf of the turned direction): exact to a leaf, slower than the merge
@@ -101,6 +102,9 @@ class EnvironmentObjects {
   std::span<const float> room_compact() const { return room_compact_; }
   std::span<const float> object_compact() const { return object_compact_; }
   double seconds() const { return seconds_; }
+  // The turned frames' light and leaf tables kept for the placements as they stand (bounded
+  // however many turns a drag went through).
+  std::size_t kept_turns() const { return turned_.size() + turns_.size(); }
 
  private:
   struct Scratch;
@@ -111,10 +115,11 @@ class EnvironmentObjects {
                     Scratch& s, ValueCut& out) const;
   // Top down over the tree's nodes in leaf order: on_node(first leaf, height) for each node
   // disjoint from the cone (unit axis, half-angle) or wholly below the horizon of `up`,
-  // on_leaf(leaf) for every other leaf.
-  template <typename OnNode, typename OnLeaf>
+  // on_leaves(first leaf, count) for the other leaves — a node wholly within the cone and above
+  // the horizon at once, without a test a leaf.
+  template <typename OnNode, typename OnLeaves>
   void walk_cone(Vec3 axis, double half, Vec3 up, const OnNode& on_node,
-                 const OnLeaf& on_leaf) const;
+                 const OnLeaves& on_leaves) const;
   // The cut that is 1 outside the cone (unit axis, half-angle) and below the horizon of `up`,
   // leaf_value(leaf) at the other leaves.
   template <typename LeafValue>
@@ -124,9 +129,10 @@ class EnvironmentObjects {
   const std::vector<std::uint32_t>& leaf_turn(double relative_deg) const;
   // The moments of the environment in a frame turned by `frame_deg`.
   std::span<const RgbMoment> frame_moments(double frame_deg);
-  struct FrameLight {  // the environment in a turned frame
-    std::vector<RgbMoment> moments;
-    std::vector<Vec3> directions;  // moment_direction of each node
+  struct FrameLight {                // the environment in a turned frame
+    std::vector<RgbMoment> moments;  // empty: to be made for the current environment
+    std::vector<Vec3> directions;    // moment_direction of each node
+    EnvironmentGridParts parts;      // the environment's grid placed in the frame
   };
   // Object a's turned frame as last placed; null for the world frame's.
   const FrameLight* object_frame(std::size_t a) const;
@@ -156,9 +162,15 @@ class EnvironmentObjects {
   const Environment* env_ = nullptr;
   std::span<const RgbMoment> world_moments_;
   std::span<const Vec3> world_directions_;
+  // Kept for the turns the objects stand at (others dropped after each update, so that an
+  // object turned frame after frame leaves nothing behind).
   std::map<std::int64_t, FrameLight> turned_;  // by turn, µ°
   mutable std::mutex turn_mutex_;
-  mutable std::map<std::int64_t, std::unique_ptr<std::vector<std::uint32_t>>> turns_;
+  struct LeafTurn {
+    std::vector<std::uint32_t> table;
+    bool used = false;  // since the last update that placed anything
+  };
+  mutable std::map<std::int64_t, std::unique_ptr<LeafTurn>> turns_;  // by relative turn, µ°
   std::vector<MovablePlacement> placements_;  // as the static views were traced
   int coarse_depth_ = 10;                     // depth of the static views' nodes
   std::vector<std::uint64_t> static_bits_;    // per object vertex: one bit per coarse node
