@@ -35,6 +35,18 @@ Vec3 to_object_frame(Vec3 x, Vec3 pivot, const Placement& p) {
   return pivot + placed_direction(x - p.translate - pivot, {{0, 0, 0}, -p.rotate_deg});
 }
 
+// The heap indices of a cut's nodes i … i + 3 (N leaves), the first starting at `leaf`, which
+// moves past them.
+std::array<std::size_t, 4> four_nodes(const std::uint8_t* height, std::size_t i,
+                                      std::uint32_t leaves, std::uint64_t& leaf) {
+  std::array<std::size_t, 4> node{};
+  for (std::size_t j = 0; j < 4; ++j) {
+    node[j] = static_cast<std::size_t>((leaves + leaf) >> height[i + j]);
+    leaf += std::uint64_t{1} << height[i + j];
+  }
+  return node;
+}
+
 // Σ value · n · M over a cut's nodes.
 Rgb cut_irradiance_portable(const ValueCut& cut, std::uint32_t leaves, std::span<const RgbMoment> m,
                             Vec3 n) {
@@ -49,15 +61,11 @@ Rgb cut_irradiance_portable(const ValueCut& cut, std::uint32_t leaves, std::span
   std::uint64_t leaf = 0;
   std::size_t i = 0;
   for (; i + 3 < count; i += 4) {
-    const int h0 = height[i], h1 = height[i + 1], h2 = height[i + 2], h3 = height[i + 3];
-    const std::uint64_t l1 = leaf + (std::uint64_t{1} << h0);
-    const std::uint64_t l2 = l1 + (std::uint64_t{1} << h1);
-    const std::uint64_t l3 = l2 + (std::uint64_t{1} << h2);
-    s0.add(m[static_cast<std::uint32_t>((leaves + leaf) >> h0)], value[i]);
-    s1.add(m[static_cast<std::uint32_t>((leaves + l1) >> h1)], value[i + 1]);
-    s2.add(m[static_cast<std::uint32_t>((leaves + l2) >> h2)], value[i + 2]);
-    s3.add(m[static_cast<std::uint32_t>((leaves + l3) >> h3)], value[i + 3]);
-    leaf = l3 + (std::uint64_t{1} << h3);
+    const std::array<std::size_t, 4> k = four_nodes(height, i, leaves, leaf);
+    s0.add(m[k[0]], value[i]);
+    s1.add(m[k[1]], value[i + 1]);
+    s2.add(m[k[2]], value[i + 2]);
+    s3.add(m[k[3]], value[i + 3]);
   }
   for (; i < count; ++i) {
     s0.add(m[static_cast<std::uint32_t>((leaves + leaf) >> height[i])], value[i]);
@@ -84,14 +92,11 @@ __attribute__((target("avx2,fma"))) Rgb cut_irradiance_avx2(const ValueCut& cut,
   std::uint64_t leaf = 0;
   std::size_t i = 0;
   for (; i + 3 < count; i += 4) {
-    const int h0 = height[i], h1 = height[i + 1], h2 = height[i + 2], h3 = height[i + 3];
-    const std::uint64_t l1 = leaf + (std::uint64_t{1} << h0);
-    const std::uint64_t l2 = l1 + (std::uint64_t{1} << h1);
-    const std::uint64_t l3 = l2 + (std::uint64_t{1} << h2);
-    const float* p0 = base + 9 * static_cast<std::size_t>((leaves + leaf) >> h0);
-    const float* p1 = base + 9 * static_cast<std::size_t>((leaves + l1) >> h1);
-    const float* p2 = base + 9 * static_cast<std::size_t>((leaves + l2) >> h2);
-    const float* p3 = base + 9 * static_cast<std::size_t>((leaves + l3) >> h3);
+    const std::array<std::size_t, 4> k = four_nodes(height, i, leaves, leaf);
+    const float* p0 = base + 9 * k[0];
+    const float* p1 = base + 9 * k[1];
+    const float* p2 = base + 9 * k[2];
+    const float* p3 = base + 9 * k[3];
     a0 = _mm256_fmadd_ps(_mm256_loadu_ps(p0), _mm256_set1_ps(value[i]), a0);
     a1 = _mm256_fmadd_ps(_mm256_loadu_ps(p1), _mm256_set1_ps(value[i + 1]), a1);
     a2 = _mm256_fmadd_ps(_mm256_loadu_ps(p2), _mm256_set1_ps(value[i + 2]), a2);
@@ -100,7 +105,6 @@ __attribute__((target("avx2,fma"))) Rgb cut_irradiance_avx2(const ValueCut& cut,
     c1 += p1[8] * value[i + 1];
     c2 += p2[8] * value[i + 2];
     c3 += p3[8] * value[i + 3];
-    leaf = l3 + (std::uint64_t{1} << h3);
   }
   for (; i < count; ++i) {
     const float* p = base + 9 * static_cast<std::size_t>((leaves + leaf) >> height[i]);
