@@ -160,14 +160,14 @@ std::vector<RgbMoment> environment_moments(const Environment& env, const Directi
             return mask && traced->map_texels[t] ? Rgb{} : map.texels[t] * env.scale;
           },
           [&](Vec3 d) { return to_frame(rotation.to_world(d)); }, leaves, node, n,
-          {map.width, map.height, k, frame_rotate_deg, env.rotate_deg}, kept);
+          {true, map.width, map.height, k, frame_rotate_deg, env.rotate_deg}, kept);
       break;
     }
     case EnvironmentKind::kSky: {
       const int height = static_cast<int>(std::ceil(kPi / (1.0 * spacing)));
       deposit_grid(
           2 * height, height, 1, [&](int, int, Vec3 d) { return env.diffuse_radiance(d); },
-          to_frame, leaves, node, n, {2 * height, height, 1, frame_rotate_deg, 0}, kept);
+          to_frame, leaves, node, n, {false, 2 * height, height, 1, frame_rotate_deg, 0}, kept);
       if (const std::optional<SunDisc>& sun = env.sun(); sun && !(traced && traced->sky_sun)) {
         constexpr int kSpiral = 64;
         const double share = sun->integrated_luminance() / kSpiral;

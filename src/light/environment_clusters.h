@@ -80,9 +80,10 @@ std::vector<Vec3> moment_directions(std::span<const RgbMoment> moments, const Di
 // spacing.
 PointGrid leaf_grid(const DirectionTree& tree);
 
-// What places the parts of an environment's equirectangular grid in a frame: the grid (texels
-// across, down, parts a texel's side), the frame's turn and the map's.
+// What places the parts of an environment's equirectangular grid in a frame: a map's or a
+// sky's, the grid (texels across, down, parts a texel's side), the frame's turn and the map's.
 struct EnvironmentGridKey {
+  bool map = false;
   int width = 0, height = 0, parts = 0;
   double frame_rotate_deg = 0, map_rotate_deg = 0;
   bool operator==(const EnvironmentGridKey&) const = default;

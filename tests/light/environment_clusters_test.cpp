@@ -123,15 +123,22 @@ TEST(EnvironmentClusters, KeptGridPartsGiveTheMomentsOfAFreshGridAndFollowTheFra
       EXPECT_EQ(kept.key.frame_rotate_deg, frame);
     }
   }
-  // A map after the sky: its own grid.
+  // A map after the sky, of the sky's grid and unturned: its own parts all the same (a map's
+  // directions are not the sky's), then turned.
   auto map = std::make_shared<EquirectMap>();
-  map->width = 64;
-  map->height = 32;
-  for (int t = 0; t < 64 * 32; ++t) map->texels.push_back(Rgb{1.0 + t % 7, 2.0, 0.5 * (t % 3)});
-  const Environment env = make_map_environment(map, 40, 2);
-  EXPECT_TRUE(same(environment_moments(env, tree(), leaves, 10, nullptr, &kept),
-                   environment_moments(env, tree(), leaves, 10)));
-  EXPECT_EQ(kept.key.map_rotate_deg, 40);
+  map->width = kept.key.width;
+  map->height = kept.key.height;
+  for (int t = 0; t < map->width * map->height; ++t) {
+    map->texels.push_back(Rgb{1.0 + t % 7, 2.0, 0.5 * (t % 3)});
+  }
+  for (const double turn : {0.0, 40.0}) {
+    const Environment env = make_map_environment(map, turn, 2);
+    EXPECT_TRUE(same(environment_moments(env, tree(), leaves, 25, nullptr, &kept),
+                     environment_moments(env, tree(), leaves, 25)))
+        << turn;
+    EXPECT_TRUE(kept.key.map);
+    EXPECT_EQ(kept.key.map_rotate_deg, turn);
+  }
   EXPECT_EQ(kept.leaf.size(), static_cast<std::size_t>(kept.key.width) * kept.key.height *
                                   kept.key.parts * kept.key.parts);
 }
