@@ -123,8 +123,8 @@ TEST(EnvironmentClusters, KeptGridPartsGiveTheMomentsOfAFreshGridAndFollowTheFra
       EXPECT_EQ(kept.key.frame_rotate_deg, frame);
     }
   }
-  // A map after the sky, of the sky's grid and unturned: its own parts all the same (a map's
-  // directions are not the sky's), then turned.
+  // A map after the sky (as many texels as the sky's grid has parts; a map's texels are split
+  // finer, so its grid is its own), unturned and turned: placed again each time.
   auto map = std::make_shared<EquirectMap>();
   map->width = kept.key.width;
   map->height = kept.key.height;
