@@ -39,6 +39,22 @@ std::vector<float> leaves_of(const ValueCut& cut) {
   return out;
 }
 
+// Asserts that `out` is, exactly at every leaf, the operands' weighted sum of `leaf_values` taken
+// in the operands' order.
+void expect_weighted_sum_at_every_leaf(const ValueCut& out,
+                                       const std::vector<WeightedCut>& operands,
+                                       const std::vector<std::vector<float>>& leaf_values) {
+  const std::vector<float> got = leaves_of(out);
+  ASSERT_EQ(got.size(), tree().leaf_count());
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    float expected = 0;
+    for (std::size_t s = 0; s < operands.size(); ++s) {
+      expected += operands[s].weight * leaf_values[s][i];
+    }
+    ASSERT_EQ(got[i], expected) << i;
+  }
+}
+
 TEST(CutMerge, EightInterpolatedCutsEqualTheWeightedSumAtEveryLeaf) {
   HeightCuts store = make_height_cuts(tree());
   std::vector<std::vector<float>> leaf_values;
@@ -52,15 +68,10 @@ TEST(CutMerge, EightInterpolatedCutsEqualTheWeightedSumAtEveryLeaf) {
   for (std::size_t s = 0; s < 8; ++s) operands.push_back({&view, s, w[s]});
   ValueCut out;
   interpolate_cuts(operands, out);
-  const std::vector<float> got = leaves_of(out);
-  ASSERT_EQ(got.size(), tree().leaf_count());
   // Exactly: a node's value is the sum of its visible operands' weights in the operands' order
   // (up to eight operands by a table of those sums), the same floats as this sum.
-  for (std::size_t i = 0; i < got.size(); ++i) {
-    float expected = 0;
-    for (std::size_t s = 0; s < 8; ++s) expected += w[s] * leaf_values[s][i];
-    ASSERT_EQ(got[i], expected) << i;
-  }
+  expect_weighted_sum_at_every_leaf(out, operands, leaf_values);
+  if (HasFatalFailure()) return;
   // The previous methods' index encoding of the same cuts: each node's height from its index, the
   // same merge giving the same cut.
   const IndexCuts indexed = index_encoded(view);
@@ -94,13 +105,7 @@ TEST(CutMerge, TenInterpolatedCutsBeyondTheTableEqualTheWeightedSumAtEveryLeaf) 
   for (std::size_t s = 0; s < 10; ++s) operands.push_back({&view, s, 0.05f + 0.01f * s});
   ValueCut out;
   interpolate_cuts(operands, out);
-  const std::vector<float> got = leaves_of(out);
-  ASSERT_EQ(got.size(), tree().leaf_count());
-  for (std::size_t i = 0; i < got.size(); ++i) {
-    float expected = 0;
-    for (std::size_t s = 0; s < 10; ++s) expected += operands[s].weight * leaf_values[s][i];
-    ASSERT_EQ(got[i], expected) << i;
-  }
+  expect_weighted_sum_at_every_leaf(out, operands, leaf_values);
 }
 
 TEST(CutMerge, ARunPushedAtOnceIsTheCutItsLeavesMakeOneByOne) {
