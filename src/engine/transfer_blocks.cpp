@@ -100,6 +100,12 @@ PackedTransfer store_blocks(std::vector<float> blocked, TransferStorage storage,
   return out;
 }
 
+std::span<const std::byte> block_bytes(const BlockedTransfer& t, std::size_t b, std::size_t k) {
+  const std::size_t values = k * 3 * kBlock;
+  const std::size_t width = t.half() ? sizeof(RltHalf) : sizeof(float);
+  return t.bytes().subspan(b * values * width, values * width);
+}
+
 void add_weighted_block(const BlockedTransfer& t, std::size_t b, std::size_t k, const float* w,
                         float (&acc)[3][kBlock]) {
   const std::size_t at = b * k * 3 * kBlock;

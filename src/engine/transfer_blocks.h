@@ -103,6 +103,9 @@ float half_scale(float largest_magnitude);
 void add_weighted_half_block(const RltHalf* t, std::size_t k, const float* w, float scale,
                              float (&acc)[3][kBlock], bool f16c);
 
+// The bytes of block b of `t` (K bases) that add_weighted_block reads.
+std::span<const std::byte> block_bytes(const BlockedTransfer& t, std::size_t b, std::size_t k);
+
 // add_weighted_block over block b of `t`, whichever its storage.
 void add_weighted_block(const BlockedTransfer& t, std::size_t b, std::size_t k, const float* w,
                         float (&acc)[3][kBlock]);

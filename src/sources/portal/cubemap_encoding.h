@@ -221,10 +221,15 @@ Rgb dot_receiver_cubemap(std::span<const std::uint8_t> bytes, const ShellCubemap
 // For each i < offsets.size() − 1, adds the record at bytes [offsets[i], offsets[i + 1]) of
 // `records`'s Σ t̂·L (dot_receiver_cubemap's, to float rounding) to red[i], green[i], blue[i]: a
 // block of receivers' records in one call, run and rectangle records parsed and checked inline.
+// `read_next`: bytes the caller reads right after (the block's indirect transfer), whose cache
+// lines are prefetched a few a record, so that they arrive while the records — bound by their
+// arithmetic, not their bytes — are summed (issue 18: the dragon behind a window's sum 21.7 →
+// 19.3 ms, docs/performance.md "Prefetched indirect transfer"); the sums are the same.
 // InputError for offsets out of order or beyond `records`, or a malformed record.
 void add_receiver_cubemaps(std::span<const std::uint8_t> records,
                            std::span<const std::uint64_t> offsets, const ShellCubemap& shell,
-                           std::span<float> red, std::span<float> green, std::span<float> blue);
+                           std::span<float> red, std::span<float> green, std::span<float> blue,
+                           std::span<const std::byte> read_next = {});
 
 // Bytes and basis split over a set of receivers.
 struct CubemapEncodingStats {

@@ -307,9 +307,10 @@ void PortalSetLighting::add_block(std::size_t b, bool include_direct,
     const PortalLighting& l = portals_[p];
     if (!l.active) continue;
     const PortalTransferView& v = transfer_.portals[p];
+    // The records are summed while the block's indirect transfer, read next, is fetched.
     add_receiver_cubemaps(v.records, v.offsets.subspan(base, count + 1), l.cubemap,
                           std::span(acc[0], count), std::span(acc[1], count),
-                          std::span(acc[2], count));
+                          std::span(acc[2], count), block_bytes(v.indirect, b, kp));
     add_weighted_block(v.indirect, b, kp, l.weights.data(), acc);
   }
   if (sun_direct_.empty()) return;

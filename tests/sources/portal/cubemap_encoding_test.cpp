@@ -389,7 +389,8 @@ TEST(CubemapEncoding, RectangleDotOfEveryWidthAndPlaceEqualsDenseDotTo1e6AndChec
 
 // A block's records summed in one call (the run and rectangle records parsed inline) add what
 // dot_receiver_cubemap gives each, to float rounding (4 ulps: the add may fuse with the
-// scale's multiply), whatever the kinds around them; offsets out of order or
+// scale's multiply), whatever the kinds around them, and the same floats whatever bytes it is
+// given to prefetch (none, fewer lines than records, more); offsets out of order or
 // beyond the records, and a malformed run or rectangle record, are InputErrors.
 TEST(CubemapEncoding, BlockOfRecordsAddsEachRecordsDotExactly) {
   const int n = 32;
@@ -416,6 +417,15 @@ TEST(CubemapEncoding, BlockOfRecordsAddsEachRecordsDotExactly) {
     EXPECT_FLOAT_EQ(red[i], 1.0f + static_cast<float>(e.r)) << i;
     EXPECT_FLOAT_EQ(green[i], 2.0f + static_cast<float>(e.g)) << i;
     EXPECT_FLOAT_EQ(blue[i], 3.0f + static_cast<float>(e.b)) << i;
+  }
+  for (const std::size_t bytes :
+       {std::size_t{1}, std::size_t{100}, 64 * count + 3, std::size_t{64000}}) {
+    const std::vector<std::byte> next(bytes);
+    std::vector<float> r(count, 1.0f), g(count, 2.0f), b(count, 3.0f);
+    add_receiver_cubemaps(records, offsets, shell, r, g, b, next);
+    EXPECT_EQ(r, red) << bytes;
+    EXPECT_EQ(g, green) << bytes;
+    EXPECT_EQ(b, blue) << bytes;
   }
   std::vector<std::uint64_t> bad = offsets;
   bad[3] = bad[2];
