@@ -224,7 +224,8 @@ Rgb dot_receiver_cubemap(std::span<const std::uint8_t> bytes, const ShellCubemap
 // `read_next`: bytes the caller reads right after (the block's indirect transfer), whose cache
 // lines are prefetched a few a record, so that they arrive while the records — bound by their
 // arithmetic, not their bytes — are summed (issue 18: the dragon behind a window's sum 21.7 →
-// 19.3 ms, docs/performance.md "Prefetched indirect transfer"); the sums are the same.
+// 19.4 ms, docs/performance.md "Prefetched indirect transfer"); the sums are the same floats
+// (CubemapEncoding.BlockOfRecordsAddsEachRecordsDotExactly).
 // InputError for offsets out of order or beyond `records`, or a malformed record.
 void add_receiver_cubemaps(std::span<const std::uint8_t> records,
                            std::span<const std::uint64_t> offsets, const ShellCubemap& shell,
