@@ -35,15 +35,19 @@ Vec3 to_object_frame(Vec3 x, Vec3 pivot, const Placement& p) {
   return pivot + placed_direction(x - p.translate - pivot, {{0, 0, 0}, -p.rotate_deg});
 }
 
-// The heap indices of a cut's nodes i … i + 3 (N leaves), the first starting at `leaf`, which
-// moves past them.
+// The heap index of a cut's node i (N leaves), starting at `leaf`, which moves past it.
+std::size_t node_at(const std::uint8_t* height, std::size_t i, std::uint32_t leaves,
+                    std::uint64_t& leaf) {
+  const auto node = static_cast<std::size_t>((leaves + leaf) >> height[i]);
+  leaf += std::uint64_t{1} << height[i];
+  return node;
+}
+
+// The same for nodes i … i + 3.
 std::array<std::size_t, 4> four_nodes(const std::uint8_t* height, std::size_t i,
                                       std::uint32_t leaves, std::uint64_t& leaf) {
   std::array<std::size_t, 4> node{};
-  for (std::size_t j = 0; j < 4; ++j) {
-    node[j] = static_cast<std::size_t>((leaves + leaf) >> height[i + j]);
-    leaf += std::uint64_t{1} << height[i + j];
-  }
+  for (std::size_t j = 0; j < 4; ++j) node[j] = node_at(height, i + j, leaves, leaf);
   return node;
 }
 
@@ -67,10 +71,7 @@ Rgb cut_irradiance_portable(const ValueCut& cut, std::uint32_t leaves, std::span
     s2.add(m[k[2]], value[i + 2]);
     s3.add(m[k[3]], value[i + 3]);
   }
-  for (; i < count; ++i) {
-    s0.add(m[static_cast<std::uint32_t>((leaves + leaf) >> height[i])], value[i]);
-    leaf += std::uint64_t{1} << height[i];
-  }
+  for (; i < count; ++i) s0.add(m[node_at(height, i, leaves, leaf)], value[i]);
   s0 += s1;
   s2 += s3;
   s0 += s2;
@@ -107,10 +108,9 @@ __attribute__((target("avx2,fma"))) Rgb cut_irradiance_avx2(const ValueCut& cut,
     c3 += p3[8] * value[i + 3];
   }
   for (; i < count; ++i) {
-    const float* p = base + 9 * static_cast<std::size_t>((leaves + leaf) >> height[i]);
+    const float* p = base + 9 * node_at(height, i, leaves, leaf);
     a0 = _mm256_fmadd_ps(_mm256_loadu_ps(p), _mm256_set1_ps(value[i]), a0);
     c0 += p[8] * value[i];
-    leaf += std::uint64_t{1} << height[i];
   }
   alignas(32) float sum[8];
   _mm256_store_ps(sum, _mm256_add_ps(_mm256_add_ps(a0, a1), _mm256_add_ps(a2, a3)));
