@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Before/after figures in one run (docs/performance.md, "Restructuring"): two relight binaries,
+# Before/after figures in one run (docs/log/performance-history.md, "Restructuring"): two relight binaries,
 # e.g. main's build and a branch's, on the same scenes, interleaved so that both see the same
 # machine. Per scene: the precompute's wall time with each, then `relight bench` (luminaire
 # frames) and `relight bench --sky` (sky frames), ROUNDS times each alternately; prints one
