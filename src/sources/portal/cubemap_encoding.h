@@ -1,5 +1,5 @@
 // Per-receiver compression of the direct portal component, as Yue et al. 2009
-// (Yue et al. 2009 §3.4, §4.1.2, issue 4 item 3): each receiver's cubemap of
+// (Yue et al. 2009 §3.4, §4.1.2): each receiver's cubemap of
 // light arriving through a portal (6·N² non-negative transfer weights t, one per cell, in the
 // layout of math/cubemap.h, geometry only: the outgoing radiance is Σ_cells t·L_shell) is
 // stored in whichever of four records is the smallest, all quantised to 8 bits against
@@ -10,15 +10,15 @@
 //  * pulse runs: the same pulse functions, as runs of consecutive cells (start, length) and one
 //    uint8 level a cell. A window covers a patch of each face it is seen on, a run a row of it
 //    (window-mini: 11 runs of 9 cells a record), so a run record is half a pulse record and its
-//    sum reads eight consecutive cells at a time instead of looking up each (issue 18: the
-//    window sum at the streaming rate). Gaps of at most 2W cells inside a run are stored as
+//    sum reads eight consecutive cells at a time instead of looking up each (the window sum at
+//    the streaming rate). Gaps of at most 2W cells inside a run are stored as
 //    zero levels, never more bytes than a new run;
 //  * face rectangles: the same pulse functions, as the bounding rectangle of the kept cells on
 //    each face they lie on and one uint8 level a cell of it, row by row (the cells outside the
 //    window's patch are zero levels). A window's patch fills ~90 % of its rectangles
 //    (window-mini and the dragon behind a window), so the record is a fifth smaller than the
 //    runs (five bytes a face instead of four a row), and its sum walks rows of one width, eight
-//    cells at a time, with no start or length to read and check a row (issue 18);
+//    cells at a time, with no start or length to read and check a row;
 //  * per-face Haar wavelets (math/haar.h): the non-zero coefficients, each (index, 8 bits).
 //    Best when the portal covers a large smooth region (a receiver near a window).
 // The run time (§5, Appendix Eq. 7) never decodes: it transforms the shell's radiance cubemap
@@ -36,9 +36,10 @@
 // fine details, which carry the window's edges, as accurate per cell as the coarse ones, and
 // drops a detail only when it changes no cell by more than half a step. The six face means get
 // their own scale and unsigned values: they alone decide Σ t̂ (the response to a uniform sky,
-// issue 4's 2% floor-illuminance test), and with the details' scale a face holding a sliver of
-// the window would lose its mean to rounding. The shell side folds S_k into its transformed
-// radiance (ShellCubemap::haar), so the dot product is one multiply-add per stored coefficient.
+// which the floor-illuminance test holds to 2 %), and with the details' scale a face holding a
+// sliver of the window would lose its mean to rounding. The shell side folds S_k into its
+// transformed radiance (ShellCubemap::haar), so the dot product is one multiply-add per stored
+// coefficient.
 //
 // Record byte layout (little-endian; records are stored back to back, no padding). W, the
 // width of a cell or coefficient index and of the count, is 2 (uint16) when 6·N² ≤ 65535
@@ -78,6 +79,13 @@
 //  * dot product with radiance L (each channel): pulse, runs, rectangles ≤ ε_p·S·Σ_{t>0} |L|; Haar
 //    ≤ Σ_k e_k·|S_k·H(L)_k| (ShellCubemap::haar; e_k = e₀ or e_d), by Parseval.
 // Decoded Haar cells can be slightly negative; the dot product is linear and keeps them.
+//
+// The code: cubemap_encoding.cpp chooses and writes a receiver's record, with each kind's encoding
+// in cubemap_pulse.cpp (pulse and Haar records share its writer), cubemap_haar.cpp,
+// cubemap_runs.cpp and cubemap_rectangles.cpp; cubemap_sum.cpp parses, decodes and sums the
+// records, with each kind's reader and sums in cubemap_pulse_sum.h, cubemap_runs_sum.h and
+// cubemap_rectangles_sum.h; cubemap_shell.cpp prepares the shell and cubemap_stats.cpp counts the
+// records.
 #pragma once
 
 #include <array>
@@ -192,8 +200,8 @@ std::vector<double> decode_receiver_cubemap(int n, std::span<const std::uint8_t>
 
 // The shell's radiance cubemap in both bases, rebuilt once per state change (paper §5:
 // "cubemap representation and wavelet bases").
-// The hot loop reads them as floats, one 16-byte texel a cell (issue 18: the window sum at the
-// streaming rate; a double texel is 24 bytes and three separate multiply-adds).
+// The hot loop reads them as floats, one 16-byte texel a cell (the window sum at the streaming
+// rate; a double texel is 24 bytes and three separate multiply-adds).
 struct alignas(16) ShellTexel {
   float rgb[4] = {0, 0, 0, 0};  // r, g, b, 0
 };
@@ -223,9 +231,8 @@ Rgb dot_receiver_cubemap(std::span<const std::uint8_t> bytes, const ShellCubemap
 // block of receivers' records in one call, run and rectangle records parsed and checked inline.
 // `read_next`: bytes the caller reads right after (the block's indirect transfer), whose cache
 // lines are prefetched a few a record, so that they arrive while the records — bound by their
-// arithmetic, not their bytes — are summed (issue 18: the dragon behind a window's sum 21.7 →
-// 19.4 ms, docs/performance.md "Prefetched indirect transfer"); the sums are the same floats
-// (CubemapEncoding.BlockOfRecordsAddsEachRecordsDotExactly).
+// arithmetic, not their bytes — are summed (measured: docs/decisions.md); the sums are the same
+// floats (CubemapEncoding.BlockOfRecordsAddsEachRecordsDotExactly).
 // InputError for offsets out of order or beyond `records`, or a malformed record.
 void add_receiver_cubemaps(std::span<const std::uint8_t> records,
                            std::span<const std::uint64_t> offsets, const ShellCubemap& shell,
