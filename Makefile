@@ -39,7 +39,7 @@ bench: build
 	@BUILD=$(BUILD) scripts/bench-dragon.sh dragon-window
 	@BUILD=$(BUILD) scripts/bench-nearfield.sh
 
-# Fuzzing (issue 16): libFuzzer targets built with clang, ASan and UBSan in build-fuzz, each run
+# Fuzzing: libFuzzer targets built with clang, ASan and UBSan in build-fuzz, each run
 # FUZZ_SECONDS (60) from its seed corpus, or until FUZZ_RUNS executions when that comes first;
 # FUZZ_TARGETS="ies ldt" runs some. Exits non-zero on any crash. Not part of `make test`, which
 # replays the corpora (seeds and regression inputs) through the normal build.
@@ -49,13 +49,13 @@ fuzz:
 	@FUZZ_SECONDS=$(FUZZ_SECONDS) FUZZ_RUNS=$(FUZZ_RUNS) FUZZ_TARGETS="$(FUZZ_TARGETS)" \
 	  JOBS=$(JOBS) scripts/fuzz.sh
 
-# Sanitizers (issue 16): the suite under ASan + UBSan in build-sanitize, then the studio server
+# Sanitizers: the suite under ASan + UBSan in build-sanitize, then the studio server
 # under TSan in build-tsan (scripts/test-sanitize.sh). Not part of `make test` (two more full
 # builds).
 test-sanitize:
 	@JOBS=$(JOBS) scripts/test-sanitize.sh
 
-# Studio soak (issue 16): `relight serve` on the demo room with 16 WebSocket clients sending
+# Studio soak: `relight serve` on the demo room with 16 WebSocket clients sending
 # states, picks, pings and malformed messages every 20-100 ms for MINUTES (10), one of them
 # stalled (not reading) for the second half; prints memory, frame times and latencies and
 # exits non-zero on a crash, > 16 MiB growth after the 1-minute warm-up or a server-side p99

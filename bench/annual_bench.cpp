@@ -1,4 +1,4 @@
-// `relight annual` speed (issue 17): the demo room's 414 work-plane sensors through the
+// `relight annual` speed: the demo room's 414 work-plane sensors through the
 // occupied hours (08:00–18:00) of a synthetic year with the sun up (tests/support/
 // synthetic_epw.h, 48.14° N: 3,470 hours) and through all its hours (4,399 with the sun up),
 // against a baseline measured in the same run: one

@@ -1,4 +1,4 @@
-// `relight capture` speed (issue 14): two brackets of five 12-megapixel JPEGs (4000 × 3000, a
+// `relight capture` speed: two brackets of five 12-megapixel JPEGs (4000 × 3000, a
 // synthetic capture of Blender's interior.exr, tests/support/synthetic_capture.h) → a
 // 1024 × 512 map, against a baseline measured in the same run: decoding the ten JPEGs alone,
 // which every capture must do. The issue's bound is 20 s on 2 cores.

@@ -1,5 +1,5 @@
 // The visibility cuts' merge over the paper's height encoding against the previous methods'
-// index encoding (issue 15, build item 6; Iwasaki et al., Cyberworlds, §V.A.2–3; math/
+// index encoding (Iwasaki et al., Cyberworlds, §V.A.2–3; math/
 // cut_encoding.h, math/cut_merge.h): the same cuts of a 32,768-direction tree — the samples of
 // a visibility cut field around a point (caps of an object's silhouette seen from nearby
 // points, ragged at their edges) and a receiver's self-visibility (its horizon) — interpolated

@@ -1,4 +1,4 @@
-// `relight optimize` speed (issue 20): an open-plan office of 20 × 10 m with 50 downlights on a
+// `relight optimize` speed: an open-plan office of 20 × 10 m with 50 downlights on a
 // 2 m grid and a work plane of 50 × 40 = 2,000 sensors, dimmers only, power objective with an
 // Em and a U0 target (the issue's bound: 1 s on 2 cores). Measured against a baseline in the
 // same run: one relight of the whole scene (every luminaire's transfer summed once), which

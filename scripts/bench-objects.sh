@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The movable-objects benchmark (issue 12; Iwasaki et al. 2007 §6 measure 50K vertices with 12
+# The movable-objects benchmark (Iwasaki et al. 2007 §6 measure 50K vertices with 12
 # objects): a 10 x 3 x 8 m office of about 50,000 vertices with six IES downlights and 12 movable
 # objects (bench/furnished-office.json), precomputed once (cached in $BUILD/bench), then
 # `relight bench` for a luminaire change (the baseline of the same run), one object dragged, and

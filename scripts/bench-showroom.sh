@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The visibility-cuts benchmark (issue 15; Iwasaki et al., Cyberworlds, §VI, Fig. 7 measure a
+# The visibility-cuts benchmark (Iwasaki et al., Cyberworlds, §VI, Fig. 7 measure a
 # 27K-vertex furniture scene): a 5 x 5 m floor with a table, four chairs, a sofa and a shelf as
 # movable objects (26,226 vertices and 121 sensors) under a clear CIE sky with a sun
 # (bench/furniture-showroom.json), precomputed once at the paper's defaults (32,768 directions,

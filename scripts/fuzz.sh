@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# `make fuzz [FUZZ_SECONDS=N]` (issue 16): builds the libFuzzer targets (tests/fuzz/fuzz_NAME.cpp)
+# `make fuzz [FUZZ_SECONDS=N]`: builds the libFuzzer targets (tests/fuzz/fuzz_NAME.cpp)
 # with Debian's clang, AddressSanitizer and UndefinedBehaviorSanitizer in their own folder
 # (build-fuzz), then runs each for N seconds (60 by default) from its seed corpus
 # (tests/fuzz/corpus/NAME/, copied: what a run adds stays in build-fuzz/corpus/NAME/). Prints
@@ -9,7 +9,7 @@
 # FUZZ_RUNS=R also stops a target after R executions (whichever comes first); FUZZ_TARGETS="a b"
 # runs only those targets. The targets whose readers take a file write each input to a
 # temporary file: in /dev/shm when it is there (tmpfs; on a disk, rewriting the file every
-# execution made the mesh targets 10× slower).
+# execution makes the mesh targets several times slower).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/bootstrap.sh --fuzz

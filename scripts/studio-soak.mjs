@@ -1,5 +1,5 @@
 #!/usr/bin/env node
-// `make soak [MINUTES=10]` (issue 16): a studio soak. Starts `relight serve` on a scene (the demo
+// `make soak [MINUTES=10]`: a studio soak. Starts `relight serve` on a scene (the demo
 // room the studio tests use, build/studio-demo/demo-room.rlt, unless an .rlt is given) and
 // connects 16 WebSocket clients on loopback for M minutes. Each sends, every 20–100 ms, a mix
 // of whole lighting states (its dimmers and colours of the scene's luminaires, from

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# `make test-sanitize` (issue 16): the whole suite built with GCC's AddressSanitizer and
+# `make test-sanitize`: the whole suite built with GCC's AddressSanitizer and
 # UndefinedBehaviorSanitizer in its own folder (build-sanitize: RelWithDebInfo, frame pointers
 # kept, UB fatal, leaks checked) and run by ctest, the studio's node tests driving the
 # instrumented `relight`; then the studio server under ThreadSanitizer (below). Exits non-zero

@@ -1,10 +1,10 @@
-// One auto-exposure bracket (issue 14; the capture of Hao et al. 2020, §IV, paper 003): the
-// photos of one fisheye view, taken from one point, and each one's exposure. When every shot
-// records ISO S and f-number N, a shot's exposure is the photographic one, t · (S/100) / N²
-// (the sensor's signal is proportional to t · S / N²; ISO 100 at f/1 as the unit), so shots and
-// brackets taken at different ISO or aperture share one scale, and a merged value v = 1
-// (mid-grey, X(128) = 1) is the luminance K/100 · v by the reflected-light meter equation
-// L = K N²/(t S) (ISO 2720, K = 12.5 cd·s/m²). Otherwise it is the exposure time t.
+// One auto-exposure bracket (the capture of Hao et al. 2020, §IV, paper 003): the photos of one
+// fisheye view, taken from one point, and each one's exposure. When every shot records ISO S and
+// f-number N, a shot's exposure is the photographic one, t · (S/100) / N² (the sensor's signal is
+// proportional to t · S / N²; ISO 100 at f/1 as the unit), so shots and brackets taken at different
+// ISO or aperture share one scale, and a merged value v = 1 (mid-grey, X(128) = 1) is the luminance
+// K/100 · v by the reflected-light meter equation L = K N²/(t S) (ISO 2720, K = 12.5 cd·s/m²).
+// Otherwise it is the exposure time t.
 // Pinned by tests/capture/bracket_test.cpp.
 #pragma once
 

@@ -1,4 +1,4 @@
-// The camera's response and the HDR merge of a bracket (issue 14, step 1): Debevec & Malik,
+// The camera's response and the HDR merge of a bracket (capture/capture.h): Debevec & Malik,
 // "Recovering High Dynamic Range Radiance Maps from Photographs" (SIGGRAPH 1997).
 //
 // Response: for 8-bit photos, the inverse response X(z) (relative exposure that gives pixel

@@ -1,5 +1,5 @@
-// `relight capture`: two fisheye brackets → one calibrated HDR environment map (issue 14; the
-// illumination capture of Hao et al. 2020, §IV, paper 003, with its hand work automated).
+// `relight capture`: two fisheye brackets → one calibrated HDR environment map (the illumination
+// capture of Hao et al. 2020, §IV, paper 003, with its hand work automated).
 //
 // Steps, each in its own file: the brackets and their exposures (bracket.h); each view's
 // image circle (image_circle.h); the camera response and the HDR merge (camera_response.h);
@@ -17,8 +17,8 @@
 // kPhotographicLuminance (bracket.h) per unit; the clipped texels are multiplied by the one
 // common factor that makes the total equal the reading. Without that EXIF (or when the
 // estimate leaves nothing missing) the whole map is scaled, which puts the clipped flux's
-// deficit on every texel (docs/capture.md).
-// Pinned by tests/capture/capture_test.cpp (the issue's acceptance on a synthetic capture).
+// deficit on every texel (docs/capture.md). Pinned by tests/capture/capture_test.cpp (the whole
+// capture, end to end, on a synthetic one).
 #pragma once
 
 #include <filesystem>

@@ -1,5 +1,5 @@
-// A fisheye view's geometry (issue 14, step 2): the lens mapping across the image circle and
-// the view's orientation in the world.
+// A fisheye view's geometry (capture/capture.h): the lens mapping across the image circle and the
+// view's orientation in the world.
 //
 // Lens mappings (r: distance from the circle's centre, θ: angle from the optical axis, f the
 // focal length): equidistant r = f θ, equisolid angle r = 2 f sin(θ/2), stereographic

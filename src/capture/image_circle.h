@@ -1,4 +1,4 @@
-// The image circle of a fisheye photo (issue 14, step 2): a phone's clip-on fisheye is rarely
+// The image circle of a fisheye photo (capture/capture.h): a phone's clip-on fisheye is rarely
 // centred on the sensor, so its centre and radius are measured, not assumed.
 //
 // Method: outside the circle the sensor sees nothing (black, up to noise). From a rough centre

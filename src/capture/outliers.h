@@ -1,4 +1,4 @@
-// Outlier detection on a blended map (issue 14, step 4): what stood in one view only — the
+// Outlier detection on a blended map (capture/capture.h): what stood in one view only — the
 // photographer beside the camera, a tripod leg — which no cross-check can catch because the
 // other view never saw those directions.
 //

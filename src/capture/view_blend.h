@@ -1,4 +1,4 @@
-// Two views into one map, with what is not the room removed (issue 14, steps 3–4).
+// Two views into one map, with what is not the room removed (capture/capture.h).
 //
 // 1. The lens frame's reflection: a dark ring just inside each image circle. Where the views
 //    overlap (a 190° lens leaves a 10° ring seen by both) each view is compared with the

@@ -1,4 +1,4 @@
-// One fisheye view resampled onto the equirectangular map (issue 14, step 3), in the
+// One fisheye view resampled onto the equirectangular map (capture/capture.h), in the
 // math/equirect.h orientation of `{"type": "map"}` environments.
 //
 // The merged photo is first reduced by area averaging (OpenCV INTER_AREA) until it has about

@@ -1,9 +1,9 @@
-// `--max-bounces N` of `relight render` and `relight probe` (issue 15): 1 shows the top-level
-// environment's direct light alone, as `relight reference --max-bounces 1` traces it (the
-// like-for-like comparison of the visibility cuts, Iwasaki et al., Cyberworlds, §VI, who
-// render direct light only); 0, the default, every bounce. The stored transfer of luminaires,
-// windows and emitters holds their interreflection summed with their direct light, so a scene
-// with any of them refuses 1.
+// `--max-bounces N` of `relight render` and `relight probe`: 1 shows the top-level environment's
+// direct light alone, as `relight reference --max-bounces 1` traces it (the like-for-like
+// comparison of the visibility cuts, Iwasaki et al., Cyberworlds, §VI, who render direct light
+// only); 0, the default, every bounce. The stored transfer of luminaires, windows and emitters
+// holds their interreflection summed with their direct light, so a scene with any of them
+// refuses 1.
 #pragma once
 
 #include <string>

@@ -1,12 +1,12 @@
 // `relight nearfield SCENE.rlt [--state STATE.json] --epsilon E [--max-samples N]
 //   [--method adaptive|icp|truth] [--face-size K] [--scene-occlusion] [-o IMAGE] [view options]`
-// Lights a precomputed scene's receivers by its near-field emitters as the lighting state
-// places them (issue 5, Sun 2005; sources/nearfield/nearfield_lighting.h), with the
-// chosen sampling method, and compares with the truth (a sample at every receiver), on the
-// direct light the sampling decides (interreflection, when on, is the same for both). Prints one
-// JSON line: method, epsilon, max_samples, receivers, samples, evaluations, placement_s,
-// sampling_s, reconstruction_s, truth_s, rmse (cd/m², vertex radiance ρE/π, RGB) and
-// rmse_relative (rmse over the truth's RMS radiance). With -o, renders the receivers' radiance.
+// Lights a precomputed scene's receivers by its near-field emitters as the lighting state places
+// them (Sun 2005; sources/nearfield/nearfield_lighting.h), with the chosen sampling method, and
+// compares with the truth (a sample at every receiver), on the direct light the sampling decides
+// (interreflection, when on, is the same for both). Prints one JSON line: method, epsilon,
+// max_samples, receivers, samples, evaluations, placement_s, sampling_s, reconstruction_s, truth_s,
+// rmse (cd/m², vertex radiance ρE/π, RGB) and rmse_relative (rmse over the truth's RMS radiance).
+// With -o, renders the receivers' radiance.
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -18,7 +18,7 @@
 #include "cli/view_args.h"
 #include "common/input_error.h"
 #include "math/sh.h"
-#include "render/camera.h"
+#include "scene/camera.h"
 #include "render/vertex_shading.h"
 #include "runtime/relit_scene.h"
 #include "sources/nearfield/nearfield_lighting.h"
@@ -42,7 +42,7 @@ int run_nearfield(const NearfieldArgs& args) {
                                                 : std::optional<std::filesystem::path>(args.state));
   const TransferFile& t = relit.transfer();
   if (t.scene.emitters.empty()) {
-    fail_input(args.rlt, "the scene has no emitters (issue 5: \"emitters\" in the scene file)");
+    fail_input(args.rlt, "the scene has no emitters (\"emitters\" in the scene file)");
   }
   const LightingState& state = relit.state();
   NearfieldSettings settings;

@@ -1,5 +1,5 @@
 // `relight optimize SCENE.rlt --targets TARGETS.json [--state START.json] [--daylight]
-// -o STATE.json`: inverse lighting design (design/optimize.h, issue 20). Writes the lighting
+// -o STATE.json`: inverse lighting design (design/optimize.h). Writes the lighting
 // state that meets the targets (or comes closest) and prints one JSON line: feasible,
 // objective, iterations, seconds, binding, per target the achieved value (docs/optimize.md).
 // Exit 0 whether or not the targets are feasible; 2 for bad input.

@@ -1,6 +1,6 @@
-// Files are written atomically (ARCHITECTURE §4.8): the content goes to a temporary
-// name beside the target and is renamed over it only when complete, so a crash or a
-// full disk never leaves a half-written file where the user's was.
+// Files are written atomically: the content goes to a temporary name beside the target and is
+// renamed over it only when complete, so a crash or a full disk never leaves a half-written file
+// where the user's was.
 #pragma once
 
 #include <filesystem>

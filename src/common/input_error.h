@@ -1,5 +1,5 @@
-// Bad input is reported, never crashed on (ARCHITECTURE §4.8): every parser throws
-// InputError with "WHERE: reason", WHERE being FILE, FILE:LINE or FILE:JSON-PATH.
+// Bad input is reported, never crashed on: every parser throws InputError with "WHERE: reason",
+// WHERE being FILE, FILE:LINE or FILE:JSON-PATH.
 // The CLI prints "error: " + what() and exits with code 2.
 #pragma once
 

@@ -1,6 +1,6 @@
 // The memory this machine can still give a process: for refusing work that cannot fit before
-// starting it (issue 19: a scene too large for a rank's share of memory is refused before
-// tracing, with the numbers).
+// starting it (a scene too large for a rank's share of memory is refused before tracing, with
+// the numbers).
 #pragma once
 
 #include <cstdint>

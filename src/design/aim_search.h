@@ -1,10 +1,10 @@
-// Aims within cones (issue 20, "aim_cone_deg"): the light a luminaire sends to the sensors is
-// not linear in its aim, so the aims are found by a local pattern search from the dimmer
-// solution (compass search: Kolda, Lewis & Torczon 2003, SIAM Review 45(3), §3), each trial
-// aim scored by solving the dimmers again. An aim is an offset in the cone's tangent plane —
-// the exponential map about the cone's axis, so |offset| is the angle from the axis (radians)
-// — which keeps the search's steps the same size everywhere in the cone. Tests:
-// tests/design/aim_search_test.cpp (an analytic score; the optimiser against a grid of aims).
+// Aims within cones ("aim_cone_deg"): the light a luminaire sends to the sensors is not linear in
+// its aim, so the aims are found by a local pattern search from the dimmer solution (compass
+// search: Kolda, Lewis & Torczon 2003, SIAM Review 45(3), §3), each trial aim scored by solving the
+// dimmers again. An aim is an offset in the cone's tangent plane — the exponential map about the
+// cone's axis, so |offset| is the angle from the axis (radians) — which keeps the search's steps
+// the same size everywhere in the cone. Tests: tests/design/aim_search_test.cpp (an analytic score;
+// the optimiser against a grid of aims).
 #pragma once
 
 #include <array>

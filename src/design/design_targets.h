@@ -1,6 +1,6 @@
-// What the designer asks of inverse lighting design (`relight optimize`, issue 20; the future
-// work Dobashi et al. 1995 name in their conclusion): targets per sensor set, what each
-// luminaire may do, and what to optimise. The TARGETS.json contract (docs/optimize.md):
+// What the designer asks of inverse lighting design (`relight optimize`; the future work Dobashi et
+// al. 1995 name in their conclusion): targets per sensor set, what each luminaire may do, and what
+// to optimise. The TARGETS.json contract (docs/optimize.md):
 //   { "sensors": { "SET": { "em_min", "em_max", "u0_min", "e_min", "e_max" } },
 //     "luminaires": { "NAME": { "dimmer": [lo, hi], "aim_cone_deg": deg, "fixed": true } },
 //     "objective": "power" | "uniformity", "power_w": { "NAME": watts } }

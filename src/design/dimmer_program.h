@@ -1,5 +1,5 @@
-// The dimmers that meet the designer's targets (issue 20), solved exactly as linear programs
-// over the illuminance model E = b + A d (design/illuminance_model.h):
+// The dimmers that meet the designer's targets, solved exactly as linear programs over the
+// illuminance model E = b + A d (design/illuminance_model.h):
 //  * Em ≥ / ≤ a value: one row on the set's mean row; E ≥ / ≤ a value: one row per point;
 //    U0 ≥ u: E_i ≥ u · Em at every point — linear, since Em is.
 //  * "power": minimise Σ w_j d_j (W) over lo_j ≤ d_j ≤ hi_j.

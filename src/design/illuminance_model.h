@@ -1,5 +1,5 @@
-// The sensors' illuminance as a linear function of the luminaires' dimmers (issue 20): at
-// every sensor point i the relit scene gives
+// The sensors' illuminance as a linear function of the luminaires' dimmers: at every sensor point i
+// the relit scene gives
 //   E_i(d) = b_i + Σ_j A_ij d_j
 // exactly, because everything the Relighter sums is linear in each luminaire's output (its
 // direct light, its SH-projected interreflection, Dobashi et al. 1995 Eq. 18, and the material,

@@ -1,9 +1,9 @@
-// Inverse lighting design (`relight optimize`, issue 20; the future work of Dobashi et al. 1995,
-// §6): from the designer's targets (design/design_targets.h) and a start state, the luminaire
-// settings that meet them — the dimmers exactly (design/dimmer_program.h over the linear
-// illuminance model, design/illuminance_model.h), the aims within their cones by a local
-// search from that solution (design/aim_search.h) — written as a lighting state document
-// (docs/lighting-state.md) that `probe`, `render` and the studio load as it is.
+// Inverse lighting design (`relight optimize`; the future work of Dobashi et al. 1995, §6): from
+// the designer's targets (design/design_targets.h) and a start state, the luminaire settings that
+// meet them — the dimmers exactly (design/dimmer_program.h over the linear illuminance model,
+// design/illuminance_model.h), the aims within their cones by a local search from that solution
+// (design/aim_search.h) — written as a lighting state document (docs/lighting-state.md) that
+// `probe`, `render` and the studio load as it is.
 //
 // The document written is the start document with, for every free luminaire, "on": true and
 // its "dimmer" (and "aim" and "c0" where it turned), and — unless daylight is included — every

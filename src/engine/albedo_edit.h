@@ -1,6 +1,6 @@
-// Live albedo edits (issue 13): the light a change of the surfaces' reflectance adds to a
-// room lit with the reflectance its transfer was precomputed with — at run time, from the
-// stored gather operator G alone, for light of every source at once.
+// Live albedo edits: the light a change of the surfaces' reflectance adds to a room lit with the
+// reflectance its transfer was precomputed with — at run time, from the stored gather operator G
+// alone, for light of every source at once.
 //
 // With the precompute's albedo ρ the vertices' irradiance E solves E = E_d + G ρ E (direct
 // light E_d, engine/bounce_solver.h); with the edited ρ' it is E' = E_d + G ρ' E'. Their

@@ -1,9 +1,9 @@
-// Jacobi iteration of E = E_d + G_vv · diag(ρ) · E for all basis columns at once
-// (ARCHITECTURE §4.3; see bounce_solver.h). Eigen's sparse × dense product is
-// single-threaded without OpenMP, so the product is split over rows with oneTBB: each
-// output row is a sum of albedo-scaled irradiance rows (row-major, K contiguous floats, so
-// the inner loop is a vectorised axpy), and the convergence norms are reduced in a fixed
-// order (parallel_deterministic_reduce) so the bounce count never depends on scheduling.
+// Jacobi iteration of E = E_d + G_vv · diag(ρ) · E for all basis columns at once (see
+// bounce_solver.h). Eigen's sparse × dense product is single-threaded without OpenMP, so the
+// product is split over rows with oneTBB: each output row is a sum of albedo-scaled irradiance rows
+// (row-major, K contiguous floats, so the inner loop is a vectorised axpy), and the convergence
+// norms are reduced in a fixed order (parallel_deterministic_reduce) so the bounce count never
+// depends on scheduling.
 #include "engine/bounce_solver.h"
 
 #include <algorithm>
@@ -82,13 +82,12 @@ ColumnChange add(ColumnChange a, const ColumnChange& b) {
 
 // sum[0, columns) = Σ over the entries of one row of G of value · reflected[index][0, columns)
 // (row-major, `columns` floats a row): the inner loop of a bounce, an axpy per entry. Compiled
-// twice, for the x86-64 baseline (SSE2) and for x86-64-v3 (AVX2 and FMA: eight floats a step),
-// the one the CPU runs chosen when the program loads (the sensors' 414-column importance on the
-// demo room: 3.3 s with SSE2, 2.7 s with AVX2; bound by reading the rows of `reflected`, 1.6 KB
-// an entry — column tiles that stay in a core's cache read G once per tile and were slower).
-// Not under ThreadSanitizer: the clones' ifunc resolver runs in the dynamic loader before TSan's
-// runtime is up, and TSan instruments it (a crash at load; the TSan build of make test-sanitize,
-// where speed does not matter).
+// twice, for the x86-64 baseline (SSE2) and for x86-64-v3 (AVX2 and FMA: eight floats a step), the
+// one the CPU runs chosen when the program loads: the loop is bound by reading the rows of
+// `reflected`, and AVX2 reads them faster, while column tiles that stay in a core's cache, reading
+// G once per tile, are slower (measured: docs/decisions.md). Not under ThreadSanitizer: the clones'
+// ifunc resolver runs in the dynamic loader before TSan's runtime is up, and TSan instruments it (a
+// crash at load; the TSan build of make test-sanitize, where speed does not matter).
 #ifndef __SANITIZE_THREAD__
 __attribute__((target_clones("default", "arch=x86-64-v3")))
 #endif
@@ -225,10 +224,10 @@ void sum_change(const RankShares& ranks, ColumnChange& change) {
   }
 }
 
-// Several ranks (issue 19): the vertex rows whose reflected light crosses between ranks each
-// bounce. A rank's rows of G read the light of the vertices their rays hit, most of them in other
-// ranks' blocks; only those rows are sent, each to the ranks that read it, and sensor rows (which
-// reflect nothing) never are.
+// Several ranks: the vertex rows whose reflected light crosses between ranks each bounce. A rank's
+// rows of G read the light of the vertices their rays hit, most of them in other ranks' blocks;
+// only those rows are sent, each to the ranks that read it, and sensor rows (which reflect nothing)
+// never are.
 struct BounceHalo {
   std::vector<std::vector<std::uint32_t>> send;     // per rank: this rank's vertex rows it reads
   std::vector<std::vector<std::uint32_t>> receive;  // per rank: its vertex rows this rank reads

@@ -1,7 +1,7 @@
-// The bounce solver of the interreflection engine (ARCHITECTURE §4.3): every basis
-// column of direct irradiance (one per SH basis function of a luminaire, per portal basis,
-// …; geometry-only, scalar) bounces through the same gather operator G, all columns at
-// once, one colour channel at a time (albedo colours the light, §4.2):
+// The bounce solver of the interreflection engine: every basis column of direct irradiance (one per
+// SH basis function of a luminaire, per portal basis, …; geometry-only, scalar) bounces through the
+// same gather operator G, all columns at once, one colour channel at a time (albedo colours the
+// light):
 //
 //   E_c(0) = E_d,   E_c(n+1) = E_d + G_vv · diag(ρ_c) · E_c(n)   (vertex rows)
 //
@@ -43,11 +43,11 @@ struct BounceResult {
 // `direct` is receivers × K (sensor rows are accepted and not used: sensors do not
 // reflect). The albedo is receivers.albedo of the vertex rows. Channels whose albedo
 // equals an earlier channel's are copied, not solved again. Throws std::invalid_argument
-// when the sizes of gather, receivers and direct disagree. With several `ranks`
-// (engine/ranks.h, issue 19; collective), `direct` and the result hold this rank's rows only
-// (RankShares::local_row), `gather` needs only its rows, and each bounce the ranks exchange the
-// reflected light of the vertex rows other ranks' rows read (only those); the bounces' values
-// are those of one process, and the convergence norms are summed over ranks in rank order.
+// when the sizes of gather, receivers and direct disagree. With several `ranks` (engine/ranks.h;
+// collective), `direct` and the result hold this rank's rows only (RankShares::local_row), `gather`
+// needs only its rows, and each bounce the ranks exchange the reflected light of the vertex rows
+// other ranks' rows read (only those); the bounces' values are those of one process, and the
+// convergence norms are summed over ranks in rank order.
 BounceResult solve_bounces(const GatherOperator& gather, const Receivers& receivers,
                            const Eigen::MatrixXf& direct, const BounceSettings& settings,
                            bool progress, const RankShares* ranks = nullptr);
@@ -56,18 +56,18 @@ BounceResult solve_bounces(const GatherOperator& gather, const Receivers& receiv
 // tolerance, if larger): the error left is then below kWarmBounceTolerance / (1 − ρ) of the
 // light — a few tenths of a percent — and does not accumulate over frames, since every solve
 // contracts what it starts from. A sun moved a minute then takes a bounce or two instead of four
-// (each a pass over G: 0.25–0.35 s on the 765,000-vertex dragon, bound by random reads).
+// (each a pass over G, bound by random reads; measured: docs/decisions.md).
 inline constexpr double kWarmBounceTolerance = 1e-3;
 
-// One coloured source's light, bounced at run time (issues 11 and 21: light the run time
-// computes exactly, the sun behind clear glass and near-field emitters): `direct` and
-// `indirect` hold 3 floats per receiver (r, g, b), channel c bouncing with the albedo's
-// channel c. The same iteration as above, on the vertex rows only and all three channels in
-// one pass over G per bounce; the sensor rows are gathered once from the converged light.
-// With `warm`, `indirect` holds a previous solution (of a slightly different direct light: the
-// sun a minute on, an emitter a centimetre away) and the iteration starts from it, which takes
-// a few bounces instead of the ~log(tolerance)/log(ρ) from the direct light alone. Returns the
-// bounces computed. Throws std::invalid_argument when sizes disagree.
+// One coloured source's light, bounced at run time (light the run time computes exactly, the sun
+// behind clear glass and near-field emitters): `direct` and `indirect` hold 3 floats per receiver
+// (r, g, b), channel c bouncing with the albedo's channel c. The same iteration as above, on the
+// vertex rows only and all three channels in one pass over G per bounce; the sensor rows are
+// gathered once from the converged light. With `warm`, `indirect` holds a previous solution (of a
+// slightly different direct light: the sun a minute on, an emitter a centimetre away) and the
+// iteration starts from it, which takes a few bounces instead of the ~log(tolerance)/log(ρ) from
+// the direct light alone. Returns the bounces computed. Throws std::invalid_argument when sizes
+// disagree.
 int solve_bounces_rgb(const GatherOperator& gather, const Receivers& receivers,
                       std::span<const float> direct, std::span<float> indirect, bool warm,
                       const BounceSettings& settings);

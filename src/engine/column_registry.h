@@ -1,9 +1,9 @@
-// The bounce solver's columns (ARCHITECTURE §4.3): every source that bounces light through
-// the one gather operator asks the registry for a range of columns, one per basis function
-// of each of its instances (a luminaire's K SH bases, a portal's shell bases, the emitters'
-// shadowed-transfer bases). The registry hands the ranges out in order and is the only place
-// that knows where a source's columns lie; sources read and write their columns through
-// their ranges (DirectColumns::of, indirect_of). Pinned by tests/engine/column_registry_test.cpp.
+// The bounce solver's columns: every source that bounces light through the one gather operator asks
+// the registry for a range of columns, one per basis function of each of its instances (a
+// luminaire's K SH bases, a portal's shell bases, the emitters' shadowed-transfer bases). The
+// registry hands the ranges out in order and is the only place that knows where a source's columns
+// lie; sources read and write their columns through their ranges (DirectColumns::of, indirect_of).
+// Pinned by tests/engine/column_registry_test.cpp.
 #pragma once
 
 #include <array>
@@ -36,9 +36,9 @@ class ColumnRegistry {
   std::vector<std::string> owners_;
 };
 
-// The direct irradiance of every registered column, receivers × columns (scalar: albedo
-// colours the bounced light, ARCHITECTURE §4.2). On one of several ranks (engine/ranks.h), the
-// rows of its receivers only, as its local rows.
+// The direct irradiance of every registered column, receivers × columns (scalar: direct light is
+// stored as geometry only, and albedo colours the bounced light). On one of several ranks
+// (engine/ranks.h), the rows of its receivers only, as its local rows.
 class DirectColumns {
  public:
   DirectColumns(const RankShares& ranks, const ColumnRegistry& registry)

@@ -1,8 +1,8 @@
-// Builds the gather operator of ARCHITECTURE §4.3 (see gather_operator.h): rows are
-// traced independently in parallel (oneTBB, in fixed chunks of receivers), each row's
-// hits are merged per vertex in a per-thread accumulator and appended to its chunk's own
-// buffers, and the rows are then copied into one compressed row-major matrix — no lock is
-// taken per ray or per row, and the result does not depend on thread scheduling.
+// Builds the gather operator of the interreflection engine (see gather_operator.h): rows are traced
+// independently in parallel (oneTBB, in fixed chunks of receivers), each row's hits are merged per
+// vertex in a per-thread accumulator and appended to its chunk's own buffers, and the rows are then
+// copied into one compressed row-major matrix — no lock is taken per ray or per row, and the result
+// does not depend on thread scheduling.
 #include "engine/gather_operator.h"
 
 #include <algorithm>

@@ -1,9 +1,9 @@
-// The sparse gather operator G of the interreflection engine (ARCHITECTURE §4.3): the one
-// piece of ray tracing every light source's indirect transfer shares. Row r (a receiver:
-// vertices first, then sensors) holds where M cosine-distributed rays from r land: a ray
-// that hits the front side of triangle t at barycentrics (b0, b1, b2) adds b_k / M to
-// G[r, t_k]; misses, back sides (they absorb) and portals (openings: light arriving
-// through them is the portal transfer's job) add nothing. Columns are mesh vertices.
+// The sparse gather operator G of the interreflection engine: the one piece of ray tracing every
+// light source's indirect transfer shares. Row r (a receiver: vertices first, then sensors) holds
+// where M cosine-distributed rays from r land: a ray that hits the front side of triangle t at
+// barycentrics (b0, b1, b2) adds b_k / M to G[r, t_k]; misses, back sides (they absorb) and portals
+// (openings: light arriving through them is the portal transfer's job) add nothing. Columns are
+// mesh vertices.
 //
 // With irradiance E per vertex and luminance L = ρ/π · E, the irradiance reflected onto r
 // is π · mean(L over the cosine-distributed rays) = (G · diag(ρ) · E)[r]: G is the

@@ -1,11 +1,11 @@
-// The first reflection of a point light's (or the sun's) direct light off glossy surfaces
-// (issue 13): what a polished floor throws onto the ceiling from a downlight or a sun patch —
-// exactly in direction, at run time, through the stored gather operator G. Used by the
-// luminaires' term (per luminaire, sources/luminaire/luminaire_lighting.h) and the suns traced
-// behind clear glass (sources/portal/portal_lighting.h).
+// The first reflection of a point light's (or the sun's) direct light off glossy surfaces: what a
+// polished floor throws onto the ceiling from a downlight or a sun patch — exactly in direction, at
+// run time, through the stored gather operator G. Used by the luminaires' term (per luminaire,
+// sources/luminaire/luminaire_lighting.h) and the suns traced behind clear glass
+// (sources/portal/portal_lighting.h).
 //
 // The diffuse transfer bounces a glossy vertex j's light as a Lambertian surface of its
-// hemispherical albedo ρh_j (engine/material_reflectance.h): receiver r gathers G_rj ρh_j E_j.
+// hemispherical albedo ρh_j (material/material_reflectance.h): receiver r gathers G_rj ρh_j E_j.
 // For the direct light D_j of a point luminaire the incident direction l_j at j is known, so
 // the light j sends toward r is the BRDF's, π f_j(l_j, ω_jr) D_j, with ω_jr the direction from
 // vertex j to receiver r (Iwasaki et al. 2007 §4.1, Eq. 5–9, approximate a glossy object's

@@ -1,22 +1,22 @@
-// The processes of one precompute (issue 19: `mpirun -n N relight precompute`). The receivers
-// are dealt to the N ranks in blocks (RankShares below; the transfer's blocks of kBlock
-// receivers, engine/transfer_blocks.h). Each rank traces its own blocks' rows of every
-// per-receiver phase — the gather operator's rays, each luminaire's direct visibility, each
-// portal's cubemaps, the near-field transfer — against the whole scene (every rank holds the
-// scene and its Embree BVH). What the bounce and the file need of a rank's rows stays with it:
-// its rows of the gather operator, the direct columns, the bounce's result and the packed
-// transfer (as its local rows, RankShares::local_row); each bounce sweep the ranks send each
-// other the reflected light of the vertices their rows read (engine/bounce_solver.cpp), and rank
-// 0 gathers every rank's blocks as it writes the file (gather_block_records), the direct phases'
-// records too (luminaire geometry, cubemaps, near-field transfer); only small per-block
-// summaries are shared whole (share_block_records). Every receiver's rays are seeded by its own
-// index (engine/gather_operator.h), so the rows, and the file, do not depend on how many ranks made
-// them. Pinned by tests/engine/ranks_test.cpp (blocks, exchanges, the gather operator and the
-// bounce with ranks as threads) and tests/cli/mpi_precompute_test.cpp (`mpirun -n 2` against
-// one process, byte for byte).
+// The processes of one precompute (`mpirun -n N relight precompute`). The receivers are dealt to
+// the N ranks in blocks (RankShares below; the transfer's blocks of kBlock receivers,
+// engine/transfer_blocks.h). Each rank traces its own blocks' rows of every per-receiver phase —
+// the gather operator's rays, each luminaire's direct visibility, each portal's cubemaps, the
+// near-field transfer — against the whole scene (every rank holds the scene and its Embree BVH).
+// What the bounce and the file need of a rank's rows stays with it: its rows of the gather
+// operator, the direct columns, the bounce's result and the packed transfer (as its local rows,
+// RankShares::local_row); each bounce sweep the ranks send each other the reflected light of the
+// vertices their rows read (engine/bounce_solver.cpp), and rank 0 gathers every rank's blocks as it
+// writes the file (gather_block_records), the direct phases' records too (luminaire geometry,
+// cubemaps, near-field transfer); only small per-block summaries are shared whole
+// (share_block_records). Every receiver's rays are seeded by its own index
+// (engine/gather_operator.h), so the rows, and the file, do not depend on how many ranks made them.
+// Pinned by tests/engine/ranks_test.cpp (blocks, exchanges, the gather operator and the bounce with
+// ranks as threads) and tests/cli/mpi_precompute_test.cpp (`mpirun -n 2` against one process, byte
+// for byte).
 //
-// This stage knows nothing of MPI: the exchange is the interface below, which the command line
-// implements over MPI (cli/mpi_ranks.h); a process alone is SingleProcess.
+// The precompute knows nothing of MPI: the exchange is the interface below, which
+// engine/mpi_ranks.h implements over MPI; a process alone is SingleProcess.
 #pragma once
 
 #include <algorithm>

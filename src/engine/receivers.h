@@ -1,4 +1,4 @@
-// Receivers of precomputed transfer (ARCHITECTURE §4.1): every prepared-mesh vertex,
+// Receivers of precomputed transfer: every prepared-mesh vertex,
 // then every sensor point, each with a position, a unit normal and an albedo (sensors
 // measure and never reflect: albedo 0). Transfer stores irradiance E per receiver; a
 // vertex's outgoing luminance is albedo/π · E.

@@ -1,11 +1,11 @@
-// What the run time traces and bounces its own light through (issues 11 and 21): light that
-// no stored response can hold — the exact sun through a window, near-field emitters a hand's
-// width from a surface — is computed at run time at every receiver, and its interreflection
-// bounced through the precompute's own gather operator (engine/gather_operator.h) with the
-// precompute's own solver (engine/bounce_solver.h). This is the one owner of that machinery:
-// the receivers, the static opaque mesh and its ray tracer, the portals' glass, the vertices'
-// albedo and the stored gather operator, and the quadrature of each vertex's hat function
-// that turns an exact irradiance field into what a vertex reflects.
+// What the run time traces and bounces its own light through: light that no stored response can
+// hold — the exact sun through a window, near-field emitters a hand's width from a surface — is
+// computed at run time at every receiver, and its interreflection bounced through the precompute's
+// own gather operator (engine/gather_operator.h) with the precompute's own solver
+// (engine/bounce_solver.h). This is the one owner of that machinery: the receivers, the static
+// opaque mesh and its ray tracer, the portals' glass, the vertices' albedo and the stored gather
+// operator, and the quadrature of each vertex's hat function that turns an exact irradiance field
+// into what a vertex reflects.
 //
 // What bounces at a vertex is the mean of the exact irradiance over its hat function φ_v,
 //     Ē_v = ∫ E φ_v dA / ∫ φ_v dA,

@@ -1,6 +1,6 @@
-// The sensors' rows of the bounce, solved once (issue 17: a year of daylight in seconds). The
-// run time bounces light it computes itself — the exact sun, near-field emitters — through
-// the stored gather operator (bounce_solver.h solve_bounces_rgb): per channel c,
+// The sensors' rows of the bounce, solved once, so that a year of daylight takes seconds. The run
+// time bounces light it computes itself — the exact sun, near-field emitters — through the stored
+// gather operator (bounce_solver.h solve_bounces_rgb): per channel c,
 //
 //   E = E_d + G_vv · diag(ρ_c) · E,    I_s = g_s · diag(ρ_c) · E   at sensor s,
 //

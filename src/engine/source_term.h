@@ -1,6 +1,7 @@
-// A source kind's term of the run-time weighted sum (ARCHITECTURE §1): from its current
-// weights, its irradiance at one block of receivers. The Relighter (runtime/relighter.h)
-// keeps a partial sum per term and sums a term again only after its state changed.
+// A source kind's term of the run-time weighted sum (light is linear: every change is a weight on
+// precomputed responses): from its current weights, its irradiance at one block of receivers. The
+// Relighter (runtime/relighter.h) keeps a partial sum per term and sums a term again only after its
+// state changed.
 #pragma once
 
 #include <cstddef>

@@ -32,8 +32,8 @@ void add_weighted_half_block_table(const RltHalf* t, std::size_t k, const float*
 
 // The same with F16C: eight values converted and multiplied-added a step, the block read in
 // its stored order (bases, then channels: one pass forward through memory). Keeping the 24
-// accumulators of a channel-outer loop in registers instead read each block in three strided
-// passes and ran at half the streaming rate (2026-12-04, bench/dragon-room.json).
+// accumulators of a channel-outer loop in registers instead reads each block in three strided
+// passes, at half the streaming rate (measured: docs/decisions.md; bench/dragon-room.json).
 __attribute__((target("avx2,f16c,fma"))) void add_weighted_half_block_f16c(
     const RltHalf* t, std::size_t k, const float* w, float scale, float (&acc)[3][kBlock]) {
   for (std::size_t basis = 0; basis < k; ++basis) {

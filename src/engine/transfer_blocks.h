@@ -1,11 +1,11 @@
-// The stored layout of SH transfer, designed for the run-time weighted sum
-// (ARCHITECTURE §4.6): receivers in blocks of kBlock; within a block, for each basis k
+// The stored layout of SH transfer, designed for the run-time weighted sum: receivers in blocks
+// of kBlock; within a block, for each basis k
 // and colour channel c, kBlock contiguous values. The relighter streams a luminaire's
 // blocks once per frame and accumulates acc_c[i] += W[k][c] · T[block][k][c][i], a loop
 // over i that vectorises. The last block is zero-padded.
 //
-// The values are stored as 32-bit floats or as binary16 (scene "precompute": {"storage"},
-// issue 18): the sum is bound by the bytes it streams, and binary16 halves them. A binary16
+// The values are stored as 32-bit floats or as binary16 (scene "precompute": {"storage"}):
+// the sum is bound by the bytes it streams, and binary16 halves them. A binary16
 // value stands for scale · value, the scale a power of two chosen when packing so that the
 // largest magnitude lands in [2¹⁴, 2¹⁵): binary16 keeps its 11 significant bits from there down
 // to 2⁻¹⁴, a range of 2²⁹, so no value that matters to the sum leaves the normal range, and the

@@ -23,11 +23,11 @@ namespace relight {
 void add_transfer_section(RltWriter& w, std::uint32_t type, const std::string& name,
                           const PackedTransfer& t);
 
-// Several ranks (issue 19; collective): `t` views this rank's blocks of the section
-// (RankShares local order, engine/column_registry.h pack_indirect_blocks), `block_bytes` the
-// bytes of one block. Rank 0 adds the section, its blocks gathered from every rank in file order
-// while w.write() runs (gather_blocks); the other ranks call send_transfer_section for the same
-// sections in the same order.
+// Several ranks (collective): `t` views this rank's blocks of the section (RankShares local order,
+// engine/column_registry.h pack_indirect_blocks), `block_bytes` the bytes of one block. Rank 0 adds
+// the section, its blocks gathered from every rank in file order while w.write() runs
+// (gather_blocks); the other ranks call send_transfer_section for the same sections in the same
+// order.
 void add_transfer_section(RltWriter& w, std::uint32_t type, const std::string& name,
                           BlockedTransfer t, const RankShares& ranks, std::size_t block_bytes);
 void send_transfer_section(BlockedTransfer t, const RankShares& ranks, std::size_t block_bytes);
@@ -38,10 +38,10 @@ void send_transfer_section(BlockedTransfer t, const RankShares& ranks, std::size
 void gather_blocks(const RankShares& ranks, std::span<const std::byte> mine,
                    std::size_t block_bytes, const RltWriter::Sink* sink);
 
-// Several ranks (issue 19; collective): a section of `stride` floats per receiver, `rows` holding
-// every receiver's place and this rank's own blocks filled in; rank 0 adds it, gathered from
-// every rank as it is written (gather_rows), the others call send_row_section in the same
-// order. One process adds `rows` as it is.
+// Several ranks (collective): a section of `stride` floats per receiver, `rows` holding every
+// receiver's place and this rank's own blocks filled in; rank 0 adds it, gathered from every rank
+// as it is written (gather_rows), the others call send_row_section in the same order. One process
+// adds `rows` as it is.
 void add_row_section(RltWriter& w, std::uint32_t type, const std::string& name,
                      std::span<const float> rows, std::size_t stride, const RankShares& ranks);
 void send_row_section(std::span<const float> rows, std::size_t stride, const RankShares& ranks);

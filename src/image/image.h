@@ -1,7 +1,7 @@
-// Images as the renderer produces them (Image: linear Rec.709 RGB in physical units,
-// ARCHITECTURE §4.4) and as they are displayed (Image8: 8-bit sRGB-encoded RGB).
-// Keeping the two apart makes every conversion from physical values to display values an
-// explicit step (tone_map.h, false_color.h) and keeps the HDR values unchanged for EXR.
+// Images as the renderer produces them (Image: linear Rec.709 RGB in physical units) and as they
+// are displayed (Image8: 8-bit sRGB-encoded RGB). Keeping the two apart makes every conversion from
+// physical values to display values an explicit step (tone_map.h, false_color.h) and keeps the HDR
+// values unchanged for EXR.
 #pragma once
 
 #include <cstddef>

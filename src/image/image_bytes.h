@@ -1,6 +1,6 @@
-// Image encoders (EXR, PNG) encode into memory and hand the bytes to this one writer, so
-// every format gets the same atomic write (ARCHITECTURE §4.8, common/atomic_file.h) and
-// the same error messages: "PATH: reason", with the reason taken from errno.
+// Image encoders (EXR, PNG) encode into memory and hand the bytes to this one writer, so every
+// format gets the same atomic write (common/atomic_file.h) and the same error messages: "PATH:
+// reason", with the reason taken from errno.
 #pragma once
 
 #include <cstdint>

@@ -192,8 +192,8 @@ std::int32_t little_endian_i32(const unsigned char* b) {
 }
 
 // Refuses a data window (box2i: xMin, yMin, xMax, yMax) that decode_exr would refuse, before
-// OpenEXR sizes its line buffers by it: a header declaring 10⁹ × 768 pixels made OpenEXR spend
-// seconds before decode_exr saw the window (fuzz_envmap).
+// OpenEXR sizes its line buffers by it: a header declaring 10⁹ × 768 pixels makes OpenEXR spend
+// seconds before decode_exr sees the window (fuzz_envmap).
 void check_data_window(const fs::path& path, const unsigned char (&box)[16],
                        std::size_t max_pixels) {
   const long long w =

@@ -1,7 +1,6 @@
 // OpenEXR keeps the physical values (cd/m², lux) that PNG cannot: renders are written
-// unchanged, and environment maps (including Blender's DWAB-compressed studio lights)
-// are read back. Uses the OpenEXR 3 C++ API from Debian (ARCHITECTURE §5: tinyexr cannot
-// read DWAB).
+// unchanged, and environment maps (including Blender's DWAB-compressed studio lights) are read
+// back. Uses the OpenEXR 3 C++ API from Debian (tinyexr cannot read DWAB).
 #pragma once
 
 #include <cstddef>
@@ -18,8 +17,8 @@ inline constexpr double kHalfMax = 65504.0;
 // half floats (relative precision 2^-11 ≈ 4.9e-4) unless a finite value exceeds kHalfMax
 // in magnitude — direct sunlight is ~1e5 lx, a luminaire's lamp ~1e7 cd/m² — in which case
 // they are 32-bit floats so that no physical value becomes infinite. NaN stays NaN.
-// Throws InputError "PATH: reason" when the file cannot be written.
-// kFloat writes 32-bit floats whatever the values (a captured environment map, issue 14).
+// Throws InputError "PATH: reason" when the file cannot be written. kFloat writes 32-bit floats
+// whatever the values (a captured environment map).
 enum class ExrChannels { kAuto, kFloat };
 void write_exr(const std::filesystem::path& path, const Image& image,
                ExrChannels channels = ExrChannels::kAuto);

@@ -143,8 +143,8 @@ std::uint32_t in_order(std::span<const std::uint8_t> b, std::size_t at, int byte
 // `wanted`, walking the segments' lengths (ITU-T T.81 §B.1.1.4); nullopt when none starts within
 // these bytes (at least 10 of them from the marker on). Where a segment's length does not end at
 // a marker, the walk skips to the next FF and a marker byte, as libjpeg does ("extraneous bytes
-// before marker"): a 236-byte file whose APP1 declared 5 bytes hid from a strict walk the frame
-// libjpeg then decoded, 32 s and 11 GB (fuzz_photo).
+// before marker"): a 236-byte file whose APP1 declares 5 bytes hides from a strict walk a frame
+// that libjpeg then decodes, for 32 s and 11 GB (fuzz_photo).
 template <typename Wanted>
 std::optional<std::size_t> find_jpeg_marker(std::span<const std::uint8_t> b, Wanted wanted) {
   std::size_t at = 2;
@@ -180,7 +180,7 @@ bool jpeg_reaches_its_end(std::span<const std::uint8_t> b) {
 // DC difference's category is a code of 1 to 16 bits, §F.1.2.1, Annex C; a progressive file
 // codes every DC first, §G.1.1.1.1), so the bytes from the first scan (SOS) on number at least
 // the blocks / 8. libjpeg decodes the blocks a file lacks as grey with only a warning: 859 bytes
-// declaring 12048 × 18956 px took 10 s to decode to nothing (fuzz_photo). Arithmetic coding
+// declaring 12048 × 18956 px take 10 s to decode to nothing (fuzz_photo). Arithmetic coding
 // (SOF9–11, 13–15) has no such bound and no camera writes it: refused as unsupported.
 void check_jpeg_scans_hold_the_frame(std::span<const std::uint8_t> b, const std::string& what) {
   const std::span<const std::uint8_t> head = b.first(std::min(b.size(), kHeaderBytes));

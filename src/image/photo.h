@@ -1,9 +1,8 @@
-// Photographs as a camera writes them (issue 14, `relight capture`): 8- or 16-bit RGB from
-// JPEG, PNG or TIFF, decoded by OpenCV's imgcodecs (Debian libopencv-imgcodecs-dev; the EXIF
-// orientation of a JPEG is applied), and the exposure its EXIF records, read by libexif
-// (Debian libexif-dev). The writer makes JPEGs that carry an exposure in EXIF, as a phone's
-// do: the tests' and the benchmark's synthetic brackets are such files.
-// Pinned by tests/image/photo_test.cpp.
+// Photographs as a camera writes them (`relight capture`): 8- or 16-bit RGB from JPEG, PNG or TIFF,
+// decoded by OpenCV's imgcodecs (Debian libopencv-imgcodecs-dev; the EXIF orientation of a JPEG is
+// applied), and the exposure its EXIF records, read by libexif (Debian libexif-dev). The writer
+// makes JPEGs that carry an exposure in EXIF, as a phone's do: the tests' and the benchmark's
+// synthetic brackets are such files. Pinned by tests/image/photo_test.cpp.
 #pragma once
 
 #include <cstdint>

@@ -3,15 +3,14 @@
 // its own test of one direction (`seen`). Two steps: 9 directions — the disc's centre and 8
 // points on its rim — and when they disagree (the point is in a penumbra) 80 directions: 40
 // spread evenly over the disc's area (a Vogel spiral, as light/sky_model.h sun_disc_spiral) and
-// their reflections through its centre. The pairs put a straight edge's 50 % point exactly
-// where the edge crosses the disc's centre (64 spiral points alone put it up to 0.039 radii
-// off: 2.6 m from a 0.5° source's occluder, 0.44 mm, 1.5 pixels of issue 15's image), and f is
-// within 0.045 of the closed form for a straight edge at any offset and direction (64 spiral
-// points: 0.049; 64 in pairs: 0.052; 96 in pairs: 0.040); a penumbra is narrow, so its few
-// points can afford them. A straight edge that cuts off less than the segment between two
-// neighbouring rim points (1.2 % of the disc) goes unseen. Unoccluded, the mean of n·ω over the
-// disc is n·s exactly (∫_disc ω dω = s·π sin²r), so E = E_n · f · max(0, n · s) with f = 1 is
-// the closed form.
+// their reflections through its centre. The pairs put a straight edge's 50 % point exactly where
+// the edge crosses the disc's centre (64 spiral points alone put it up to 0.039 radii off: 0.44 mm
+// at 2.6 m from a 0.5° source's occluder, over a pixel of a room's render), and f is within 0.045
+// of the closed form for a straight edge at any offset and direction (64 spiral points: 0.049; 64
+// in pairs: 0.052; 96 in pairs: 0.040); a penumbra is narrow, so its few points can afford them. A
+// straight edge that cuts off less than the segment between two neighbouring rim points (1.2 % of
+// the disc) goes unseen. Unoccluded, the mean of n·ω over the disc is n·s exactly (∫_disc ω dω =
+// s·π sin²r), so E = E_n · f · max(0, n · s) with f = 1 is the closed form.
 // Pinned by tests/sources/portal/portal_sun_test.cpp (f at and across a window's edge against the
 // closed form).
 #pragma once

@@ -1,8 +1,7 @@
-// The exterior seen through a portal (issue 4): an evaluable environment built from an
-// EnvironmentSpec, its SH projection and its cubemap rasterisation, in absolute units (cd/m²
-// per linear Rec.709 channel, ARCHITECTURE §4.4). World frame: right-handed, y up, NORTH −z,
-// EAST +x; SH in the world frame of math/sh.h (polar axis = world z); cubemaps in the layout
-// of math/cubemap.h.
+// The exterior seen through a portal: an evaluable environment built from an EnvironmentSpec, its
+// SH projection and its cubemap rasterisation, in absolute units (cd/m² per linear Rec.709 channel,
+// the photometric quantity their Y). World frame: right-handed, y up, NORTH −z, EAST +x; SH in the
+// world frame of math/sh.h (polar axis = world z); cubemaps in the layout of math/cubemap.h.
 //
 // Kinds:
 //  * uniform — one radiance over the whole sphere.

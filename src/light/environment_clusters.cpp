@@ -30,12 +30,11 @@ void add_moment(RgbMoment& m, Rgb l, double w, Vec3 d) {
 // Gives L·Ω·ω of every part of an equirectangular grid of W × H texels, each split into k × k
 // parts, to the nearest leaf; `radiance(i, j, ω_map)` the radiance of texel (i, j) in map
 // direction ω_map (called from many threads) and `to_world` a map direction in the frame.
-// The radiance and the nearest leaf of a band of rows are found in parallel, then deposited in
-// the grid's order, so the moments are those of one thread (a sky of 321 × 161 parts: 18 ms on
-// one core). With `kept` (parts no more than kMaxKeptParts) every part's directions and
-// nearest leaf are found once for the grid and frame and kept there; only the radiance is
-// found again (the showroom's sun moving frame to frame: its environment_ms 16.4 -> 3.7 ms,
-// the nearest leaf most of it).
+// The radiance and the nearest leaf of a band of rows are found in parallel, then deposited in the
+// grid's order, so the moments are those of one thread. With `kept` (parts no more than
+// kMaxKeptParts) every part's directions and nearest leaf are found once for the grid and frame and
+// kept there; only the radiance is found again, as the nearest leaf is most of the cost of a sun
+// moving frame to frame (measured: docs/decisions.md).
 constexpr std::size_t kMaxKeptParts = std::size_t{1} << 18;
 
 template <typename Radiance, typename ToWorld>

@@ -1,6 +1,6 @@
-// An environment clustered on the visibility cuts' direction tree (issue 15; Iwasaki et al.,
-// Cyberworlds, §V, Eq. 3: the capture paper, papers/003): per node k of the tree the first
-// moment of the environment's radiance over the directions its leaves stand for,
+// An environment clustered on the visibility cuts' direction tree (Iwasaki et al., Cyberworlds, §V,
+// Eq. 3: the capture paper, papers/003): per node k of the tree the first moment of the
+// environment's radiance over the directions its leaves stand for,
 //     M_k = ∫_{cell(k)} L(ω) ω dω   (per linear Rec.709 channel; cd/m² · sr),
 // where a leaf's cell is its Voronoi cell on the sphere (the directions nearer to it than to
 // any other leaf: math/point_grid.h nearest) and an inner node's the union of its leaves'.

@@ -1,8 +1,7 @@
-// Reading equirectangular environment maps (issue 4, "type": "map"): OpenEXR through
-// read_exr (any compression, including the DWAB files of Debian's blender-data) and Radiance
-// RGBE .hdr through stb_image's stbi_loadf (Debian libstb). The image becomes an EquirectMap
-// (light/environment.h) in the math/equirect.h orientation, values unchanged (cd/m² per
-// channel before the spec's scale).
+// Reading equirectangular environment maps ("type": "map"): OpenEXR through read_exr (any
+// compression, including the DWAB files of Debian's blender-data) and Radiance RGBE .hdr through
+// stb_image's stbi_loadf (Debian libstb). The image becomes an EquirectMap (light/environment.h) in
+// the math/equirect.h orientation, values unchanged (cd/m² per channel before the spec's scale).
 #pragma once
 
 #include <filesystem>

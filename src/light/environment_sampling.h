@@ -1,14 +1,14 @@
-// Directions drawn in proportion to an environment's continuous radiance (issue 15: the
-// reference's next-event estimate of a top-level environment, render/reference_tracer.cpp).
-// A piecewise-constant density over an equirectangular grid (math/equirect.h): for a map the
-// map's own texels weighted by their luminance and solid angle, so that a small bright source
-// in the map is drawn exactly where it is (the map is looked up per texel); for a sky or a
-// uniform environment a 256 × 128 grid of the continuous part's luminance at texel centres,
-// with a floor of 1 % of the mean so that no direction of light has density zero. A texel is
-// drawn from the cumulative sums (rows, then columns), the direction uniformly within it (φ and
-// cos θ, so uniform per steradian). The sun disc of a sky is not in it (the tracer samples the
-// disc's cone). Unbiased with any grid: the estimator divides by the density it drew with.
-// Pinned by tests/light/environment_sampling_test.cpp.
+// Directions drawn in proportion to an environment's continuous radiance (for the reference's
+// next-event estimate of a top-level environment, reference/reference_tracer.cpp). A
+// piecewise-constant density over an equirectangular grid (math/equirect.h): for a map the map's
+// own texels weighted by their luminance and solid angle, so that a small bright source in the map
+// is drawn exactly where it is (the map is looked up per texel); for a sky or a uniform environment
+// a 256 × 128 grid of the continuous part's luminance at texel centres, with a floor of 1 % of the
+// mean so that no direction of light has density zero. A texel is drawn from the cumulative sums
+// (rows, then columns), the direction uniformly within it (φ and cos θ, so uniform per steradian).
+// The sun disc of a sky is not in it (the tracer samples the disc's cone). Unbiased with any grid:
+// the estimator divides by the density it drew with. Pinned by
+// tests/light/environment_sampling_test.cpp.
 #pragma once
 
 #include <vector>

@@ -143,9 +143,9 @@ SkyTable tabulate(const Dome& dome, Vec3 sun, double norm) {
 }
 
 // The table's gradation at cos Z = y (>= 0) and its indicatrix (times its scale, the
-// normaliser) toward the unit `dir`. Without branches on the direction (the sun's side, a coin
-// toss over a cubemap, is a select), and inlined into the loops over many directions: 3× faster
-// than a call per direction.
+// normaliser) toward the unit `dir`. Without branches on the direction (the sun's side, a coin toss
+// over a cubemap, is a select), and inlined into the loops over many directions, which is several
+// times faster than a call per direction (measured: docs/decisions.md).
 [[gnu::always_inline]] inline double table_gradation(const SkyTable& t, double y) {
   return interpolate(
       t.gradation,
@@ -168,10 +168,10 @@ SkyTable tabulate(const Dome& dome, Vec3 sun, double norm) {
 
 // Zenith nodes of the quadrature that scales a sky to its horizontal illuminance (twice as
 // many in azimuth): a sky so scaled, integrated again at kZenithScalingNodes, is within 1.0e-7
-// of its E_h for every CIE type and within 1.5e-4 for Perez skies (whose guards put kinks into
-// the integrand), suns 2°–85° (measured 2026-12-03 over the tabulated dome: 16 types × 5 suns,
-// 100 weathers); a quarter of the cost of 192 × 384, which a moving sun pays every frame and
-// `relight annual` every hour.
+// of its E_h for every CIE type and within 1.5e-4 for Perez skies (whose guards put kinks into the
+// integrand), suns 2°–85° (measured over the tabulated dome: 16 types × 5 suns, 100 weathers); a
+// quarter of the cost of 192 × 384, which a moving sun pays every frame and `relight annual` every
+// hour.
 constexpr int kNormalisationNodes = 96;
 // The rule of a sky scaled by its zenith luminance (sky_relative_horizontal_illuminance's
 // default in sky_model.h): that integral is paid once per sky made, not per frame.

@@ -1,8 +1,8 @@
-// The Lambertian surface, the one surface model so far (ARCHITECTURE §4.4): under
+// The Lambertian surface, the model of every material without `metallic` or `roughness`: under
 // illuminance E (lx) a diffuse surface of albedo ρ has luminance L = ρE/π (cd/m²), per
 // colour channel. Every place that turns irradiance into radiance — vertex and pixel
 // shading, the studio's frames, the reference tracer's next-event estimate, the near-field
-// images — calls this. Pinned by tests/render/reference_closed_form_test.cpp (a diffuse
+// images — calls this. Pinned by tests/reference/reference_closed_form_test.cpp (a diffuse
 // patch under a point source against I·cosθ/d² · ρ/π).
 #pragma once
 

@@ -1,6 +1,6 @@
-// The glTF 2.0 metallic–roughness BRDF (issue 13; Khronos, glTF 2.0 specification, 2021,
-// Appendix B "BRDF Implementation"), the surface model of a material with a `metallic` or
-// `roughness` key (a material with neither stays Lambertian: lambert.h):
+// The glTF 2.0 metallic–roughness BRDF (Khronos, glTF 2.0 specification, 2021, Appendix B "BRDF
+// Implementation"), the surface model of a material with a `metallic` or `roughness` key (a
+// material with neither stays Lambertian: lambert.h):
 //
 //   f = F · D · V  +  diffuse,
 //   D = α² / (π ((n·h)² (α² − 1) + 1)²)                        (Trowbridge–Reitz / GGX, α =
@@ -82,8 +82,9 @@ Rgb specular_directional_albedo(const MetallicRoughness& m, double n_dot_v);
 // and `roughness`.
 std::pair<double, double> specular_albedo_split(double n_dot_v, double roughness);
 
-// Builds the table behind specular_directional_albedo and hemispherical_albedo now (0.9 s on
-// 2 cores, once per process; otherwise on first use, e.g. the first glossy material edit).
+// Builds the table behind specular_directional_albedo and hemispherical_albedo now, once per
+// process, so that its cost (measured: docs/decisions.md) falls outside a frame; otherwise it is
+// built on first use, e.g. the first glossy material edit.
 void prepare_metallic_roughness_tables();
 
 // The hemispherical–hemispherical albedo per channel: the cosine-weighted mean over incident

@@ -1,8 +1,7 @@
-// The glTF metallic–roughness BRDF's specular lobe (material/metallic_roughness.h) summed over
-// many lights toward one eye, eight lights at a time in single precision (issue 15: the glossy
-// view of the capture paper, papers/003 §V.B, Eq. 3 — per vertex Σ over its cut's nodes of the
-// node's light times the BRDF toward the eye; the view's frame is this sum at ~1,500 nodes of
-// each glossy vertex).
+// The glTF metallic–roughness BRDF's specular lobe (material/metallic_roughness.h) summed over many
+// lights toward one eye, eight lights at a time in single precision (the glossy view of the capture
+// paper, papers/003 §V.B, Eq. 3 — per vertex Σ over its cut's nodes of the node's light times the
+// BRDF toward the eye; the view's frame is this sum at ~1,500 nodes of each glossy vertex).
 //
 // Lights are given by their first moments, so that the irradiance is found in the same pass:
 // light k gives a surface of unit normal n the irradiance e_c = n · M_c[k] in channel c, from

@@ -1,5 +1,5 @@
-// Binary visibility cuts of the direction tree stored many to an array (issue 15; Iwasaki et
-// al., Cyberworlds, §V.A.2, Fig. 5: the capture paper, papers/003). A cut lists its nodes in
+// Binary visibility cuts of the direction tree stored many to an array (Iwasaki et al.,
+// Cyberworlds, §V.A.2, Fig. 5: the capture paper, papers/003). A cut lists its nodes in
 // leaf order and every root-to-leaf path holds exactly one of them, so a node is known from
 // the leaf where it starts and its height h (edges down to a leaf: 0 … 15 for 2¹⁵ leaves): it
 // is node (N + leaf) >> h of the heap (math/direction_tree.h), and the next node starts 2^h

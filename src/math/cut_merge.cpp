@@ -80,8 +80,8 @@ void merge(std::span<Cursor<View>> cursors, const Op& op, ValueCut& out) {
 }
 
 // As merge, for stored (binary) cuts alone: each output node's value is table[the set of
-// operands visible there, operand j as bit j]. Its own loop: merge taking a values policy for
-// both measured 1.5–2.5 % slower on the showroom's chair drag.
+// operands visible there, operand j as bit j]. Its own loop, as merge taking a values policy for
+// both is slower on a chair drag (measured: docs/decisions.md).
 template <typename View>
 void merge_visible(std::span<Cursor<View>> cursors, const float* table, ValueCut& out) {
   out.clear();

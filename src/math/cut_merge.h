@@ -1,18 +1,17 @@
 // Products and interpolations of cuts of the direction tree by the paper's merge with counters
-// (issue 15; Iwasaki et al., Cyberworlds, §V.A.3, Fig. 6, Steps 1–4: the capture paper,
-// papers/003). Every operand lists its nodes in leaf order by height alone
-// (math/cut_encoding.h), so the operands are walked together without a node index: a pointer
-// and a counter per operand (Step 1), the operation applied to the pointed nodes and stored at
-// the lowest of their heights h_min (Step 2), a pointer at h_min advanced and the others' counters
-// raised by 2^h_min, a pointer advanced when its counter reaches 2^h of its node (Step 3), until
-// every pointer is past its cut's last node (Step 4). Each counter is kept as the leaf its
-// pointed node ends at (the leaf reached plus what is left of the node): the smallest end is
-// the output node's, and a pointer moves when its end is reached — the same steps, without
-// raising every other counter at each output node (8 fields interpolated 14.5 -> 13.0 µs, a
-// product 65.8 -> 56.4 µs, bench/cuts_bench.cpp). The result is the coarsest common
-// refinement of the operands, with siblings of equal value merged again, so a product of
-// visibilities stays as compact as its edges allow. Pinned by tests/math/cut_merge_test.cpp
-// (against the same operations leaf by leaf).
+// (Iwasaki et al., Cyberworlds, §V.A.3, Fig. 6, Steps 1–4: the capture paper, papers/003). Every
+// operand lists its nodes in leaf order by height alone (math/cut_encoding.h), so the operands are
+// walked together without a node index: a pointer and a counter per operand (Step 1), the operation
+// applied to the pointed nodes and stored at the lowest of their heights h_min (Step 2), a pointer
+// at h_min advanced and the others' counters raised by 2^h_min, a pointer advanced when its counter
+// reaches 2^h of its node (Step 3), until every pointer is past its cut's last node (Step 4). Each
+// counter is kept as the leaf its pointed node ends at (the leaf reached plus what is left of the
+// node): the smallest end is the output node's, and a pointer moves when its end is reached — the
+// same steps, without raising every other counter at each output node, which makes interpolations
+// and products faster (measured: docs/decisions.md; bench/cuts_bench.cpp). The result is the
+// coarsest common refinement of the operands, with siblings of equal value merged again, so a
+// product of visibilities stays as compact as its edges allow. Pinned by
+// tests/math/cut_merge_test.cpp (against the same operations leaf by leaf).
 #pragma once
 
 #include <algorithm>
@@ -92,8 +91,7 @@ void multiply_cuts(const IndexCutsView& cuts, std::size_t cut,
 void multiply_cuts(std::span<const ValueCut* const> factors, ValueCut& out);
 
 // Calls visit(heap_node, value) for every node of `cut`, in leaf order (N leaves). Always
-// inlined, so that what a visitor sums stays in registers (the showroom's objects' sums:
-// 67 -> 61 ms a sun frame).
+// inlined, so that what a visitor sums stays in registers (measured: docs/decisions.md).
 template <typename Visit>
 [[gnu::always_inline]] inline void for_each_node(const ValueCut& cut, std::uint32_t leaf_count,
                                                  const Visit& visit) {

@@ -1,5 +1,5 @@
 // A cut of a direction tree (math/direction_tree.h) approximating a function sampled at its
-// leaves (issue 15; the capture paper, papers/003, §V, after Akerlund et al. 2007): every inner
+// leaves (the capture paper, papers/003, §V, after Akerlund et al. 2007): every inner
 // node holds the mean of the leaves below it and the error of standing in for them — the
 // largest |leaf − mean| — and the cut is the set of highest nodes whose error is within a
 // threshold, found from the root down, so that every leaf is within the threshold of its cut

@@ -1,4 +1,4 @@
-// The direction set and binary tree of the all-frequency visibility cuts (issue 15; Iwasaki,
+// The direction set and binary tree of the all-frequency visibility cuts (Iwasaki,
 // Dobashi, Nishita et al., the capture paper papers/003, §V.A.1, after Akerlund et al. 2007):
 // N directions spread uniformly over the unit sphere by point repulsion (the paper: 32,768),
 // and a complete binary tree over them whose leaves are the directions, so that a cut — a set

@@ -1,4 +1,4 @@
-// Points on or in the unit ball hashed into a uniform 3-D grid over [−1, 1]³ (issue 15): the
+// Points on or in the unit ball hashed into a uniform 3-D grid over [−1, 1]³: the
 // neighbours of a point within one cell, and the nearest point. The direction tree
 // (math/direction_tree.h) relaxes its directions with the neighbours, and a direction is
 // binned to its nearest leaf — the leaf's Voronoi cell on the sphere — when an environment is

@@ -1,4 +1,4 @@
-// Linear Rec.709 RGB (ARCHITECTURE §4.4). Y = 0.2126 r + 0.7152 g + 0.0722 b is the
+// Linear Rec.709 RGB, the one colour space of relight. Y = 0.2126 r + 0.7152 g + 0.0722 b is the
 // photometric quantity: lux for illuminance, cd/m² for luminance.
 #pragma once
 

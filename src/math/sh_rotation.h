@@ -17,7 +17,7 @@
 // of f to those of the rotated function g(d) = f(Rᵀ d) (a lobe along a ends up along R a).
 // Built from a Frame (R = [t b n]), it maps coefficients expressed in the frame's local
 // coordinates to world coordinates: this is how a luminaire projected once in its own frame is
-// aimed (ARCHITECTURE §4.5).
+// aimed, by rotation rather than a new projection.
 #pragma once
 
 #include <cstddef>

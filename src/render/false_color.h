@@ -1,7 +1,7 @@
-// False colour: each pixel's photometric quantity (Y of linear Rec.709, ARCHITECTURE §4.4:
-// illuminance in lux or luminance in cd/m²) shown as a colour from a fixed ramp, with a
-// legend that reads back in physical units. This is how lighting designers check
-// levels against targets (e.g. 500 lx on a desk), which a tone-mapped picture cannot show.
+// False colour: each pixel's photometric quantity (Y of linear Rec.709: illuminance in lux or
+// luminance in cd/m²) shown as a colour from a fixed ramp, with a legend that reads back in
+// physical units. This is how lighting designers check levels against targets (e.g. 500 lx on a
+// desk), which a tone-mapped picture cannot show.
 //
 // The ramp is this project's own: seven control points, equally spaced in scale position
 // t ∈ [0, 1], from deep blue through blue, cyan, green, yellow and red to white: the

@@ -1,4 +1,4 @@
-// Glare at an observer's eye looking along a view direction (issue 17, `relight glare`):
+// Glare at an observer's eye looking along a view direction (`relight glare`):
 //
 //  * UGR, the unified glare rating (CIE 117-1995):
 //      UGR = 8·log10( (0.25 / L_b) · Σ L²·ω / p² )

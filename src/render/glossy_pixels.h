@@ -1,5 +1,5 @@
-// Glossy surfaces in `relight render --direct pixel` (issue 13): the luminance a glossy surface
-// sends toward the eye, per pixel,
+// Glossy surfaces in `relight render --direct pixel`: the luminance a glossy surface sends toward
+// the eye, per pixel,
 //   L(v) = Σ_lights f(l, v) E_l  +  (1/N) Σ_i f(l_i, v) cos θ_i / p(l_i) · L_room(l_i),
 // the luminaires' and suns' direct light exact at the hit (their highlights), and the room's
 // reflection gathered by N BRDF samples (sample_metallic_roughness) that find either a surface —

@@ -1,8 +1,8 @@
 // One entry point for the CLI's output images: the file extension picks the format.
 // .exr keeps the physical values (cd/m² or lux) unchanged; .png is for looking at, so it
 // is either tone-mapped like a photograph (tone_map.h) or false colour with a legend
-// (false_color.h), as DisplayOptions say. Writes are atomic and failures are InputError
-// "PATH: reason" (ARCHITECTURE §4.8).
+// (false_color.h), as DisplayOptions say. Writes are atomic and failures are InputError "PATH:
+// reason".
 #pragma once
 
 #include <filesystem>

@@ -1,10 +1,10 @@
-// `relight report`: one self-contained HTML page of a lit scene for a lighting designer
-// (issue 17) — no script, no network, inline SVG, printable (an @media print style): per sensor
-// set a plan view in false colour with its legend (render/false_color_scale.h rules on the
-// set's values) and Em, Emin, Emax, U0; the EN 12464-1 task checks with maintained values
-// (render/task_check.h); the luminaire schedule with a polar plot of each distribution (the
-// C0–C180 and C90–C270 planes, cd); and, with a weather file, the annual metrics
-// (runtime/daylight_metrics.h) and a plan of DA300 per set. Names are HTML-escaped.
+// `relight report`: one self-contained HTML page of a lit scene for a lighting designer — no
+// script, no network, inline SVG, printable (an @media print style): per sensor set a plan view in
+// false colour with its legend (render/false_color_scale.h rules on the set's values) and Em, Emin,
+// Emax, U0; the EN 12464-1 task checks with maintained values (render/task_check.h); the luminaire
+// schedule with a polar plot of each distribution (the C0–C180 and C90–C270 planes, cd); and, with
+// a weather file, the annual metrics (runtime/daylight_metrics.h) and a plan of DA300 per set.
+// Names are HTML-escaped.
 // Pinned by tests/cli/report_command_test.cpp (content) and tests/studio/report.test.mjs
 // (Chromium opens it with no console error).
 #pragma once

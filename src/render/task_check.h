@@ -1,10 +1,10 @@
-// EN 12464-1 checks of the scene's task areas (issue 17, `relight probe --check`): for every
-// sensor set with a "task" (docs/scene-format.md), the maintained average illuminance Ē, the
-// uniformity U0 = Emin/Ē and UGR at each of its observers (render/glare.h), each against its
-// requirement. Maintained values: the state's electric lighting (luminaires and emitters)
-// times the scene's maintenance factor (CIE 97: MF = LLMF·LSF·LMF·RSMF; undeclared, 1),
-// daylight as it is (runtime/lighting_state.h maintained_state). UGR with no luminaire in view
-// of an observer passes (there is nothing to rate). Pinned by tests/cli/probe_check_test.cpp.
+// EN 12464-1 checks of the scene's task areas (`relight probe --check`): for every sensor set with
+// a "task" (docs/scene-format.md), the maintained average illuminance Ē, the uniformity U0 = Emin/Ē
+// and UGR at each of its observers (render/glare.h), each against its requirement. Maintained
+// values: the state's electric lighting (luminaires and emitters) times the scene's maintenance
+// factor (CIE 97: MF = LLMF·LSF·LMF·RSMF; undeclared, 1), daylight as it is
+// (runtime/lighting_state.h maintained_state). UGR with no luminaire in view of an observer passes
+// (there is nothing to rate). Pinned by tests/cli/probe_check_test.cpp.
 #pragma once
 
 #include <optional>

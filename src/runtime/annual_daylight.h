@@ -1,7 +1,7 @@
-// A year of daylight through the precomputed transfer (issue 17, `relight annual`): every
-// occupied hour of an EnergyPlus weather file (light/epw_weather.h) with the sun up becomes a
-// Perez all-weather sky (light/perez_sky.h) in every portal, and the scene is relit with it —
-// the same state `relight probe --state` would apply for that hour, so the two agree.
+// A year of daylight through the precomputed transfer (`relight annual`): every occupied hour of an
+// EnergyPlus weather file (light/epw_weather.h) with the sun up becomes a Perez all-weather sky
+// (light/perez_sky.h) in every portal, and the scene is relit with it — the same state `relight
+// probe --state` would apply for that hour, so the two agree.
 //
 // Time: a record's hour h (1..24) is the hour ending at h, local standard time; it is
 // evaluated at h − 30 min of the record's own year and date, at the weather file's latitude,

@@ -4,7 +4,7 @@
 // of a set, each point standing for an equal area (a regular grid):
 //  * DA300 (daylight autonomy; Reinhart & Walkenhorst 2001): the share of hours with
 //    E >= 300 lx.
-//  * UDI (useful daylight illuminance; Nabil & Mardaljevic 2005, bands of the issue):
+//  * UDI (useful daylight illuminance; Nabil & Mardaljevic 2005, their bands):
 //    fell short E < 100 lx, useful 100 <= E <= 2000 lx, exceeded E > 2000 lx; the three
 //    shares add up to 1.
 //  * ASE hours: hours whose direct sunlight alone (no interreflection) is >= 1000 lx

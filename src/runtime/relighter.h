@@ -1,4 +1,4 @@
-// The run-time half of precomputed transfer (ARCHITECTURE §1, §4.6): lighting state → small
+// The run-time half of precomputed transfer: lighting state → small
 // weight vectors → one weighted sum over the stored transfer → irradiance per receiver. Each
 // source kind is one term (engine/source_term.h) owned by its module: the luminaires
 // (sources/luminaire/luminaire_lighting.h), the portals (sources/portal/portal_lighting.h) and

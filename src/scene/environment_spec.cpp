@@ -1,5 +1,6 @@
-// Parsing of the ENV objects of issue 4 (see environment_spec.h for every convention). The
-// CIE parameter table itself lives in light/sky_model.h; here only which types need a sun.
+// Parsing of the ENV objects of a scene or lighting state (see environment_spec.h for every
+// convention). The CIE parameter table itself lives in light/sky_model.h; here only which types
+// need a sun.
 #include "scene/environment_spec.h"
 
 #include <algorithm>

@@ -1,7 +1,7 @@
-// What a scene or a run-time lighting state says about the exterior seen through a portal:
-// the ENV objects of issue 4, as plain data parsed from JSON. light/environment.h turns a
-// spec into an evaluable Environment (it computes the sun position and reads no files);
-// light/environment_map_io.h reads the map files.
+// What a scene or a run-time lighting state says about the exterior seen through a portal: the ENV
+// objects, as plain data parsed from JSON. light/environment.h turns a spec into an evaluable
+// Environment (it computes the sun position and reads no files); light/environment_map_io.h reads
+// the map files.
 //
 //   { "type": "uniform", "luminance": cd/m², "color": [r, g, b] }
 //   { "type": "map", "file": "x.exr" | "x.hdr", "rotate_deg": deg, "scale": factor }
@@ -15,7 +15,7 @@
 //
 // Conventions (world frame: metres, right-handed, y up; NORTH IS −z, EAST IS +x):
 //  * uniform: the same luminance in every direction of the sphere. "color" is a tint that is
-//    normalised to unit luminance (Y = 0.2126 r + 0.7152 g + 0.0722 b, ARCHITECTURE §4.4), so
+//    normalised to unit luminance (Y = 0.2126 r + 0.7152 g + 0.0722 b of linear Rec.709), so
 //    the photometric luminance is always "luminance"; default [1, 1, 1].
 //  * map: an equirectangular image in the math/equirect.h orientation (image centre column =
 //    south +z, left edge = north −z, a quarter of the width = east +x; top row = zenith).

@@ -1,6 +1,6 @@
-// A JSON value together with where it came from ("FILE:/json/pointer"), so that every
-// validation failure in a scene or lighting-state file names the exact place
-// (ARCHITECTURE §4.8). Unknown keys are errors: expect_keys() checks them.
+// A JSON value together with where it came from ("FILE:/json/pointer"), so that every validation
+// failure in a scene or lighting-state file names the exact place. Unknown keys are errors:
+// expect_keys() checks them.
 #pragma once
 
 #include <cstddef>
@@ -49,8 +49,8 @@ class JsonNode {
   Vec3 direction() const;         // non-zero vec3, normalised
   Rgb rgb_in_unit_range() const;  // [r, g, b], each 0..1
   Rgb rgb_non_negative() const;   // [r, g, b], each >= 0
-  // A light's colour: [r, g, b] ≥ 0 with positive luminance, scaled to luminance 1
-  // (a chromaticity; ARCHITECTURE §4.4).
+  // A light's colour: [r, g, b] ≥ 0 with positive luminance, scaled to luminance 1 (a chromaticity:
+  // Y of linear Rec.709 is the photometric quantity).
   Rgb chromaticity() const;
   std::vector<double> numbers() const;  // array of finite numbers
 

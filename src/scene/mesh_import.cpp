@@ -1,4 +1,4 @@
-// Picks the reader for a mesh file by its extension (ARCHITECTURE §2, scene stage).
+// Picks the reader for a mesh file by its extension.
 #include "scene/mesh_import.h"
 
 #include <algorithm>

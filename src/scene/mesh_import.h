@@ -1,7 +1,7 @@
 // Mesh files (OBJ, glTF 2.0, PLY) read into one plain form: positions, triangles with the
-// file's winding, and one material per triangle. The scene loader places these in the world
-// and mesh preparation (mesh_preparation.h) turns them into receivers (ARCHITECTURE §2).
-// Every reader reports bad input as InputError "FILE[:LINE]: reason" (ARCHITECTURE §4.8).
+// file's winding, and one material per triangle. The scene loader places these in the world and
+// mesh preparation (mesh_preparation.h) turns them into receivers. Every reader reports bad input
+// as InputError "FILE[:LINE]: reason", never crashes on it.
 #pragma once
 
 #include <cstdint>

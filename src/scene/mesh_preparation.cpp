@@ -1,4 +1,4 @@
-// The mesh preparation pipeline (ARCHITECTURE §2: weld, subdivide, per-vertex attributes):
+// The mesh preparation pipeline (weld, subdivide, per-vertex attributes):
 // weld -> drop degenerate -> subdivide -> normals and vertex splitting. Order matters:
 // welding first lets subdivision share midpoints across what were separate soup triangles,
 // and normals come last so that they see the final vertices.

@@ -1,8 +1,8 @@
-// Mesh preparation: turns the scene's triangle soup into the vertices that receive
-// precomputed transfer (ARCHITECTURE §4.1). Transfer is stored and interpolated per vertex,
-// so vertices must be shared where the surface is continuous (welding), close enough together
-// to resolve lighting (subdivision to a maximum edge length, without T-junctions), and carry
-// one normal and one material each (split at creases and material boundaries).
+// Mesh preparation: turns the scene's triangle soup into the vertices that receive precomputed
+// transfer (receivers are vertices and sensors). Transfer is stored and interpolated per vertex, so
+// vertices must be shared where the surface is continuous (welding), close enough together to
+// resolve lighting (subdivision to a maximum edge length, without T-junctions), and carry one
+// normal and one material each (split at creases and material boundaries).
 #pragma once
 
 #include <cstddef>

@@ -1,8 +1,8 @@
 // OBJ import. tinyobjloader reads faces, groups and materials, but it repairs or skips what
 // it cannot parse (a bad coordinate becomes 0, a two-vertex face disappears, an index past the
 // end is kept). A first pass over the lines therefore checks every `v` and `f` statement and
-// reports the first problem with its line number (ARCHITECTURE §4.8); it also keeps the
-// coordinates in double precision, which tinyobjloader's float build would round.
+// reports the first problem with its line number, so bad input gets a clear error; it also keeps
+// the coordinates in double precision, which tinyobjloader's float build would round.
 #include "scene/obj_import.h"
 
 #include <algorithm>

@@ -23,7 +23,7 @@ namespace relight {
 struct Material {
   std::string name;
   Rgb albedo{0.5, 0.5, 0.5};  // diffuse reflectance (glTF base colour), linear, 0..1
-  bool portal = false;        // window glass: an opening to the exterior (daylight issue)
+  bool portal = false;        // window glass: an opening to the exterior
   bool glossy = false;        // `metallic` or `roughness` given
   double metallic = 0;        // 0..1 (glTF default when only roughness is given: 0)
   double roughness = 1;       // 0..1, α = roughness² (glTF default when only metallic is given)
@@ -56,9 +56,9 @@ struct TaskObserver {
   Vec3 view{0, 0, -1};  // unit
 };
 
-// What EN 12464-1 asks of a task area (issue 17, `relight probe --check`): the maintained
-// average illuminance Ē >= em, the uniformity U0 = Emin/Ē >= u0, and UGR <= ugr_l at each
-// observer; each requirement optional.
+// What EN 12464-1 asks of a task area (`relight probe --check`): the maintained average illuminance
+// Ē >= em, the uniformity U0 = Emin/Ē >= u0, and UGR <= ugr_l at each observer; each requirement
+// optional.
 struct TaskRequirements {
   std::optional<double> em;     // lx
   std::optional<double> u0;     // 0..1
@@ -75,9 +75,8 @@ struct SensorSet {
   std::optional<TaskRequirements> task = std::nullopt;  // a task area (EN 12464-1)
 };
 
-// A window (Yue et al. 2009 §3): the triangles of its portal materials, through which light
-// of the exterior environment enters. Precompute and run time use it from the daylight
-// issue on; the loader validates it now.
+// A window (Yue et al. 2009 §3): the triangles of its portal materials, through which light of the
+// exterior environment enters.
 struct Portal {
   std::string name;
   std::vector<std::uint32_t> materials;  // indices into Scene::materials, all "portal": true
@@ -91,21 +90,21 @@ struct Portal {
   double shell_tolerance_deg = 5;
 };
 
-// Exterior geometry seen through the portals (issue 4, the paper's §6 dynamic environment):
-// drawn into every portal's shell from the portal centre, over the sky, never part of the
-// interior's transfer. The lighting state moves it (translate, turn about the vertical axis
-// through `pivot`, hide).
+// Exterior geometry seen through the portals (Yue et al. 2009 §6, the dynamic environment): drawn
+// into every portal's shell from the portal centre, over the sky, never part of the interior's
+// transfer. The lighting state moves it (translate, turn about the vertical axis through `pivot`,
+// hide).
 struct ExteriorGeometry {
   std::string name;  // "" when unnamed (then it cannot be moved)
   TriangleSoup geometry;
   Vec3 pivot;  // centre of its bounding box
 };
 
-// A near-field area emitter (issue 5, Sun 2005): a diffuse emitting surface of
-// constant luminance that moves close to the receivers, lit by adaptive sampling of the
-// incident radiance instead of by precomputed luminaire transfer. Not part of the room: it
-// neither occludes nor reflects in the precompute. The lighting state moves (translate, turn
-// about the vertical axis through `pivot`), dims and re-colours it.
+// A near-field area emitter (Sun 2005): a diffuse emitting surface of constant luminance that moves
+// close to the receivers, lit by adaptive sampling of the incident radiance instead of by
+// precomputed luminaire transfer. Not part of the room: it neither occludes nor reflects in the
+// precompute. The lighting state moves (translate, turn about the vertical axis through `pivot`),
+// dims and re-colours it.
 struct Emitter {
   std::string name;
   TriangleSoup geometry;  // emitting on the front side of each triangle
@@ -114,11 +113,10 @@ struct Emitter {
   Vec3 pivot;             // centre of its bounding box
 };
 
-// A movable object of the room (issue 12, Iwasaki et al. 2007): furniture that a lighting
-// state moves (translate, turn about the vertical axis through `pivot`) or hides. At its scene
-// placement it is part of the room — it occludes, reflects and receives like any surface —
-// but it is not part of the precomputed transfer: the run time adds what it changes
-// (sources/object/object_lighting.h).
+// A movable object of the room (Iwasaki et al. 2007): furniture that a lighting state moves
+// (translate, turn about the vertical axis through `pivot`) or hides. At its scene placement it is
+// part of the room — it occludes, reflects and receives like any surface — but it is not part of
+// the precomputed transfer: the run time adds what it changes (sources/object/object_lighting.h).
 struct MovableObject {
   std::string name;
   TriangleSoup geometry;  // as the scene places it, each triangle with its material
@@ -131,13 +129,13 @@ struct Camera {
   double fov_deg = 60;  // vertical field of view
 };
 
-// The visibility cuts of a top-level environment (issue 15; Iwasaki et al., Cyberworlds, §V.A:
-// the capture paper, papers/003): `directions` leaves of the direction tree (a power of two
-// ≤ 32,768), binary self-visibility cuts at every receiver merging nodes whose leaves agree to
-// within `threshold` (a fraction below ½; 0: only nodes whose leaves all agree, exact),
-// visibility cut fields of each movable object sampled on `sphere_count` concentric spheres
-// of 6 · sphere_points² points between inner_radius and outer_radius times its bounding
-// sphere's radius. Defaults: the paper's; it gives no threshold, 0 keeps every edge.
+// The visibility cuts of a top-level environment (Iwasaki et al., Cyberworlds, §V.A: the capture
+// paper, papers/003): `directions` leaves of the direction tree (a power of two ≤ 32,768), binary
+// self-visibility cuts at every receiver merging nodes whose leaves agree to within `threshold` (a
+// fraction below ½; 0: only nodes whose leaves all agree, exact), visibility cut fields of each
+// movable object sampled on `sphere_count` concentric spheres of 6 · sphere_points² points between
+// inner_radius and outer_radius times its bounding sphere's radius. Defaults: the paper's; it gives
+// no threshold, 0 keeps every edge.
 struct CutsSettings {
   int directions = 32768;
   int sphere_count = 32;
@@ -158,21 +156,21 @@ struct PrecomputeSettings {
   double tolerance = 1e-4;  // relative change that ends the bounce iteration
   int max_bounces = 100;
   std::string direct = "exact";  // "exact" | "sh" (Dobashi et al. 1995's mode)
-  // How the luminaires' and portals' interreflected SH transfer is stored: "fp16" (binary16
-  // scaled by a power of two, half the bytes for the run-time sum) | "fp32" (issue 18;
-  // engine/transfer_blocks.h).
+  // How the luminaires' and portals' interreflected SH transfer is stored: "fp16" (binary16 scaled
+  // by a power of two, half the bytes for the run-time sum) | "fp32" (the sum is bound by the bytes
+  // it streams; engine/transfer_blocks.h).
   std::string storage = "fp16";
-  // Portals (issue 4, Yue et al. 2009 §4.1): the direct component is a cubemap of
-  // portal_face_size² cells a face per receiver, each cell the portal covers integrated over
-  // portal_samples_per_cell directions (16× as many on the window's outline); the indirect
-  // component is SH, l < portal_sh_order, RGB.
+  // Portals (Yue et al. 2009 §4.1): the direct component is a cubemap of portal_face_size² cells a
+  // face per receiver, each cell the portal covers integrated over portal_samples_per_cell
+  // directions (16× as many on the window's outline); the indirect component is SH, l <
+  // portal_sh_order, RGB.
   int portal_face_size = 32;
   int portal_sh_order = 6;
   int portal_samples_per_cell = 4;
-  // Near-field emitters (issue 5, Sun 2005 §3.2.1): per-receiver SH transfer vectors with
-  // self-shadowing, l < nearfield_sh_order, from nearfield_directions stratified directions
-  // (a square number), made only when the scene has emitters; with nearfield_interreflection
-  // also their interreflected part through the gather operator (RGB).
+  // Near-field emitters (Sun 2005 §3.2.1): per-receiver SH transfer vectors with self-shadowing, l
+  // < nearfield_sh_order, from nearfield_directions stratified directions (a square number), made
+  // only when the scene has emitters; with nearfield_interreflection also their interreflected part
+  // through the gather operator (RGB).
   int nearfield_sh_order = 4;
   int nearfield_directions = 256;
   bool nearfield_interreflection = false;
@@ -195,9 +193,9 @@ struct Scene {
   std::vector<SensorSet> sensors;
   std::vector<Camera> cameras;
   std::vector<Portal> portals;
-  // A top-level environment (issue 15): lights the scene from infinity wherever its geometry
-  // does not block it (a showroom under a sky or a captured map): through the visibility cuts
-  // (src/sources/cuts/) at run time, exactly in `relight reference`.
+  // A top-level environment: lights the scene from infinity wherever its geometry does not block it
+  // (a showroom under a sky or a captured map): through the visibility cuts (src/sources/cuts/) at
+  // run time, exactly in `relight reference`.
   std::optional<EnvironmentSpec> environment;
   std::vector<ExteriorGeometry> exterior;
   std::vector<Emitter> emitters;

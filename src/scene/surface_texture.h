@@ -1,15 +1,15 @@
-// Base colour textures (issue 13; Khronos, glTF 2.0 specification, 2021, §3.9.2
-// "pbrMetallicRoughness.baseColorTexture" and §3.8.4 "Samplers"): what relight keeps of a
-// glTF material's texture, and how surfaces sample it. The albedo is the material's base
-// colour times the texture (glTF: baseColorFactor × texture), linear (the file's sRGB decoded,
-// math/srgb.h). Transfer is per vertex, so the fast path takes the texture as the albedo of
-// the vertices ("sampled at the vertices"): each vertex the texture's mean over its footprint
-// (a square as wide as its incident edges' mean length), read trilinearly from a box-filtered
-// pyramid — a point sample would alias a wood grain or a tiled floor whose period is finer
-// than the vertex spacing. The reference tracer samples the texture at each hit point at full
-// resolution (texture_at), so it checks what the vertex sampling loses. Odd sizes lose their
-// last row or column in the next level (a bias of at most one texel's share).
-// Pinned by tests/scene/surface_texture_test.cpp and tests/cli/textured_room_test.cpp.
+// Base colour textures (Khronos, glTF 2.0 specification, 2021, §3.9.2
+// "pbrMetallicRoughness.baseColorTexture" and §3.8.4 "Samplers"): what relight keeps of a glTF
+// material's texture, and how surfaces sample it. The albedo is the material's base colour times
+// the texture (glTF: baseColorFactor × texture), linear (the file's sRGB decoded, math/srgb.h).
+// Transfer is per vertex, so the fast path takes the texture as the albedo of the vertices
+// ("sampled at the vertices"): each vertex the texture's mean over its footprint (a square as wide
+// as its incident edges' mean length), read trilinearly from a box-filtered pyramid — a point
+// sample would alias a wood grain or a tiled floor whose period is finer than the vertex spacing.
+// The reference tracer samples the texture at each hit point at full resolution (texture_at), so it
+// checks what the vertex sampling loses. Odd sizes lose their last row or column in the next level
+// (a bias of at most one texel's share). Pinned by tests/scene/surface_texture_test.cpp and
+// tests/cli/textured_room_test.cpp.
 #pragma once
 
 #include <array>

@@ -1,8 +1,8 @@
-// `relight precompute`: everything a static scene needs so that every later change of a
-// source's state is a weighted sum (ARCHITECTURE §1). The engine prepares the mesh, the
-// receivers and the gather operator; each source module (sources/luminaire, sources/portal,
-// sources/nearfield) computes its direct transfer and registers the columns it bounces; all
-// bounce together through one gather operator (rays traced once, ARCHITECTURE §4.3).
+// `relight precompute`: everything a static scene needs so that every later change of a source's
+// state is a weighted sum (light transport is linear). The engine prepares the mesh, the receivers
+// and the gather operator; each source module (sources/luminaire, sources/portal,
+// sources/nearfield) computes its direct transfer and registers the columns it bounces; all bounce
+// together through one gather operator (rays traced once for every basis and bounce).
 #pragma once
 
 #include <cstdint>

@@ -1,14 +1,14 @@
-// The memory a precompute cannot do without, known before any ray is traced (issue 19: a scene
-// too large for a rank's share of memory is refused before tracing, with the numbers). Every
-// source's bounced basis columns (a luminaire's sh_order², a portal's portal_sh_order²) are
-// dense over the receivers, 4 bytes a value, and at the peak — the interreflected columns packed
-// into each source's blocks while the bounce's result and the direct columns are still held —
-// seven receivers × columns float matrices live at once: the direct columns, three channels of
-// the bounce's result, three channels packed (5.5 with binary16 storage, whose three packed
-// channels take half). The gather operator, the cubemaps and the direct
-// geometry come on top (their sizes are known only once traced), so this is a lower bound: a
-// scene it refuses cannot fit; one it passes may still not. Pinned by
-// tests/cli/mpi_precompute_test.cpp (a scene that needs more than the machine has).
+// The memory a precompute cannot do without, known before any ray is traced (a scene too large for
+// a rank's share of memory is refused before tracing, with the numbers). Every source's bounced
+// basis columns (a luminaire's sh_order², a portal's portal_sh_order²) are dense over the
+// receivers, 4 bytes a value, and at the peak — the interreflected columns packed into each
+// source's blocks while the bounce's result and the direct columns are still held — seven
+// receivers × columns float matrices live at once: the direct columns, three channels of the
+// bounce's result, three channels packed (5.5 with binary16 storage, whose three packed channels
+// take half). The gather operator, the cubemaps and the direct geometry come on top (their sizes
+// are known only once traced), so this is a lower bound: a scene it refuses cannot fit; one it
+// passes may still not. Pinned by tests/cli/mpi_precompute_test.cpp (a scene that needs more than
+// the machine has).
 #pragma once
 
 #include <cstdint>

@@ -46,7 +46,7 @@ using GatherMatrix = Eigen::SparseMatrix<float, Eigen::RowMajor>;
 // The gather operator's sections, in file order.
 enum class GatherSection { rows, columns, values };
 
-// Several ranks (issue 19; collective): one of the gather operator's sections from every rank's
+// Several ranks (collective): one of the gather operator's sections from every rank's
 // rows (engine/gather_operator.h: each rank holds its own), gathered block by block of
 // receivers as rank 0 writes it: per block, its rows' entry counts, columns or values. `sink`
 // (rank 0) receives the blocks in file order; the other ranks pass none.

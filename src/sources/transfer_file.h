@@ -25,7 +25,7 @@ std::string scene_digest(const nlohmann::json& scene_document);
 // `scene_document` is the scene JSON as loaded from `scene_file`.
 // The IES/LDT files of the scene's luminaires are stored in the file too, so a .rlt
 // keeps the photometry it was computed with, wherever the scene's folder goes.
-// With several `ranks` (issue 19; collective), `precomputed` holds each rank's share of the
+// With several `ranks` (collective), `precomputed` holds each rank's share of the
 // blocked transfer (sources/precompute.h); rank 0 writes, gathering those sections from every
 // rank while it writes them, and the other ranks call send_transfer_file_sections.
 void write_transfer_file(const std::filesystem::path& file, const Precomputed& precomputed,

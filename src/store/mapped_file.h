@@ -1,8 +1,8 @@
 // A whole file mapped read-only into memory, unmapped when the owner goes away.
 //
-// .rlt transfer data is read in place by the run-time loop (ARCHITECTURE §4.6): the
-// kernel pages it in from the page cache, nothing is copied or parsed, and several
-// processes relighting the same scene share the same physical pages.
+// .rlt transfer data is read in place by the run-time loop: the kernel pages it in from the
+// page cache, nothing is copied or parsed, and several processes relighting the same scene share
+// the same physical pages.
 #pragma once
 
 #include <cstddef>

@@ -1,6 +1,6 @@
 // An open .rlt file: the whole file memory-mapped read-only and fully validated on
 // open (docs/rlt-format.md), then handed out as spans that point into the mapping, so
-// the run-time loop reads transfer data in place with no parse step (ARCHITECTURE §4.6).
+// the run-time loop reads transfer data in place with no parse step.
 // Every payload starts on a 64-byte boundary. Spans stay valid while the RltFile (or
 // the RltFile it is moved into) lives.
 #pragma once

@@ -1,7 +1,7 @@
 // The byte layout of a .rlt file (docs/rlt-format.md): a 64-byte header, a table of
 // 64-byte section entries, then the section payloads, each starting on a 64-byte
 // boundary so that a memory-mapped section is ready for SIMD loads and whole cache
-// lines (ARCHITECTURE §4.6: transfer is read in place, with no parse step).
+// lines (transfer is read in place, with no parse step).
 //
 // Multi-byte fields are stored in the writer's byte order, which is little-endian on
 // every machine relight supports; the byte-order mark turns a mismatch into an error.

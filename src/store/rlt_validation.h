@@ -1,7 +1,7 @@
 // Every check a .rlt file passes before a single section is handed out: magic, format
 // version, byte order, header and table checksums, file size, section bounds and
-// alignment, zero padding, and every payload checksum (ARCHITECTURE §4.8: a truncated
-// or corrupted file is rejected, never read as garbage).
+// alignment, zero padding, and every payload checksum: a truncated or corrupted file is
+// rejected, never read as garbage.
 #pragma once
 
 #include <cstddef>

@@ -2,8 +2,8 @@
 //
 // Sections are added as spans of the caller's memory and streamed to disk by write():
 // transfer matrices of hundreds of MB are neither copied into the writer nor buffered
-// twice. The file appears atomically (ARCHITECTURE §4.8): a failed write leaves the
-// previous file, if any, untouched and no temporary behind.
+// twice. The file appears atomically: a failed write leaves the previous file, if any, untouched
+// and no temporary behind.
 #pragma once
 
 #include <cstdint>
@@ -51,8 +51,8 @@ struct RltWriter {
                std::uint32_t flags = 0) {
     add_values(type, name, values, flags);
   }
-  // A section whose bytes `produce` hands to its sink in order, piece by piece, while write()
-  // runs: bytes gathered from other processes as the file is written (issue 19), never held
+  // A section whose bytes `produce` hands to its sink in order, piece by piece, while write() runs:
+  // bytes gathered from other ranks of a distributed precompute as the file is written, never held
   // whole. Its size is what it produced; a size that is not a whole number of elements throws
   // std::invalid_argument from write().
   using Sink = std::function<void(std::span<const std::byte>)>;

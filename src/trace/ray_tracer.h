@@ -1,4 +1,4 @@
-// Ray casting through Embree 3 (ARCHITECTURE §5): one BVH over a set of triangles,
+// Ray casting through Embree 3: one BVH over a set of triangles,
 // single-ray rtcIntersect1 / rtcOccluded1 and a batch of closest hits through rtcIntersect1M,
 // safe to call from many threads at once (callers parallelise with oneTBB). Returned triangle
 // ids are the caller's.

@@ -1,7 +1,7 @@
-// The issue's acceptance for `relight capture` (capture/capture.h) on a synthetic capture of
-// Blender's interior.exr (Debian blender-data): two 190° equidistant fisheye brackets with an
-// off-centre circle, a concave response, five exposures two stops apart in EXIF, 8-bit JPEG,
-// a dark lens-frame band and a photographer low in the back view. Tolerances from the issue.
+// The acceptance test of `relight capture` (capture/capture.h) on a synthetic capture of Blender's
+// interior.exr (Debian blender-data): two 190° equidistant fisheye brackets with an off-centre
+// circle, a concave response, five exposures two stops apart in EXIF, 8-bit JPEG, a dark lens-frame
+// band and a photographer low in the back view. Tolerances from the acceptance criteria.
 #include <gtest/gtest.h>
 
 #include <cmath>

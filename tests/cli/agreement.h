@@ -31,8 +31,8 @@ inline Agreement relative_agreement(const std::vector<double>& fast,
   return a;
 }
 
-// Two images compared as the glossy acceptance asks (issue 13): the luminance of each
-// block × block square of pixels, relative to the second image's.
+// Two images compared as the glossy acceptance asks: the luminance of each block × block square of
+// pixels, relative to the second image's.
 struct BlockAgreement {
   int blocks = 0;
   double mean = 0, worst = 0;  // relative differences of block luminance

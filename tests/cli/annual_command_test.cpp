@@ -1,4 +1,4 @@
-// `relight annual` (issue 17): a year of daylight from an EnergyPlus weather file.
+// `relight annual`: a year of daylight from an EnergyPlus weather file.
 //  * Consistency: for 20 random hours, the hourly illuminance equals `relight probe --state`
 //    with that hour's Perez sky in the window within 0.1 %.
 //  * The per-sensor metrics are those of the hourly values (DA300 and the UDI bands counted

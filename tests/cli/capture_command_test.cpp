@@ -1,7 +1,6 @@
-// `relight capture` end to end (issue 14): a synthetic capture of Blender's interior.exr
-// becomes a float OpenEXR whose map lights a window like the truth map (work-plane
-// illuminance within 2 %), --debug writes its PNGs, clipped highlights warn, and bad input
-// exits 2 naming the file or option.
+// `relight capture` end to end: a synthetic capture of Blender's interior.exr becomes a float
+// OpenEXR whose map lights a window like the truth map (work-plane illuminance within 2 %), --debug
+// writes its PNGs, clipped highlights warn, and bad input exits 2 naming the file or option.
 #include <ImfChannelList.h>
 #include <ImfHeader.h>
 #include <ImfInputFile.h>

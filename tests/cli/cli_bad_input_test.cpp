@@ -31,9 +31,9 @@ std::string room_with(const std::string& distribution) {
   return s;
 }
 
-// A top-level environment (issue 15): a bad one gets its JSON path; `relight reference` lights
-// a good one (here an open floor under a uniform sky: an up-facing sensor reads π L), and
-// `relight precompute`, which does not carry it yet, refuses the scene rather than drop it.
+// A top-level environment: a bad one gets its JSON path; `relight reference` lights a good one
+// (here an open floor under a uniform sky: an up-facing sensor reads π L), and `relight
+// precompute`, which does not carry it yet, refuses the scene rather than drop it.
 TEST(CliBadInput, TopLevelEnvironment) {
   TempDir dir;
   const std::string floor = R"({

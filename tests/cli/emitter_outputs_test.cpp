@@ -1,4 +1,4 @@
-// Near-field emitters in every output (issue 11), as a user runs them:
+// Near-field emitters in every output, as a user runs them:
 //  * probe and the reference against the closed form of a small far emitter, I·cosθ/d²: 0.5 %;
 //  * a panel 0.4 m over a table: probe within 2 % mean and 6 % worst of the reference
 //    (65,536 spp) on the table, the work plane and the ceiling (which only interreflection
@@ -74,7 +74,7 @@ class EmitterOutputs : public ::testing::Test {
 };
 std::unique_ptr<TempDir> EmitterOutputs::dir_;
 
-// Probe and reference (same state) agree per sensor set within the issue's bounds.
+// Probe and reference (same state) agree per sensor set within the bounds above.
 void expect_probe_matches_reference(const fs::path& rlt, const fs::path& scene,
                                     const std::string& state, const fs::path& dir,
                                     const std::string& name) {

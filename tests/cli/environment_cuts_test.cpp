@@ -1,7 +1,7 @@
-// A top-level environment through the visibility cuts (issue 15; Iwasaki et al., Cyberworlds,
-// §V–VI): a box on an open floor under a CIE sky with a sun, `relight precompute` building the
-// self-visibility cuts at 8,192 directions. `relight probe` (every bounce) against `relight
-// reference` on sensors in the sun, in the box's shadow and beside it; `relight render
+// A top-level environment through the visibility cuts (Iwasaki et al., Cyberworlds, §V–VI): a box
+// on an open floor under a CIE sky with a sun, `relight precompute` building the self-visibility
+// cuts at 8,192 directions. `relight probe` (every bounce) against `relight reference` on sensors
+// in the sun, in the box's shadow and beside it; `relight render
 // --max-bounces 1` against `relight reference --max-bounces 1` (256 samples a pixel): 8 × 8-
 // pixel block means of luminance within 3 % on average for a Lambertian box and for a steel one
 // (roughness 0.3) shaded toward the eye through its vertices' cuts, and for a movable crate of

@@ -1,8 +1,8 @@
-// A small bright source's shadow through the top-level environment (issue 15, the acceptance's
-// first item; Iwasaki et al., Cyberworlds, §VI): a 0.5 × 0.5 × 2 m column on a floor under a map
-// that holds one 0.5° source (∫L dω = 50,000 lx, 30° high in the west) and a dim uniform rest
-// (1,000 cd/m²). The camera looks straight down at the side edge of the column's shadow 2 m
-// from it, 512 × 512 pixels over 15 cm (0.29 mm a pixel). `relight render --direct pixel
+// A small bright source's shadow through the top-level environment (the cuts' first acceptance
+// item; Iwasaki et al., Cyberworlds, §VI): a 0.5 × 0.5 × 2 m column on a floor under a map that
+// holds one 0.5° source (∫L dω = 50,000 lx, 30° high in the west) and a dim uniform rest
+// (1,000 cd/m²). The camera looks straight down at the side edge of the column's shadow 2 m from
+// it, 512 × 512 pixels over 15 cm (0.29 mm a pixel). `relight render --direct pixel
 // --max-bounces 1` against `relight reference --max-bounces 1` (16 samples a pixel): the
 // luminance across the edge, averaged over every row, crosses 50 % of the way from the umbra
 // to the lit floor within 1 pixel of where the reference's does, and its 10–90 % width is

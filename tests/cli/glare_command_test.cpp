@@ -1,7 +1,7 @@
-// `relight glare` (issue 17): DGP of a bright window view and UGR of one luminaire against the
-// formulas evaluated by hand (Wienold & Christoffersen 2006; CIE 117-1995, the Guth position
-// index written out again here), UGR in the CIE 190 standard room against the standard's
-// tabular value, and bad arguments.
+// `relight glare`: DGP of a bright window view and UGR of one luminaire against the formulas
+// evaluated by hand (Wienold & Christoffersen 2006; CIE 117-1995, the Guth position index written
+// out again here), UGR in the CIE 190 standard room against the standard's tabular value, and bad
+// arguments.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -130,9 +130,9 @@ TEST(GlareCommand, UgrOfOneLuminaireMatchesTheFormulaByHand) {
 // (Σ F_GL,i·Φ_zL,i over the cumulative zonal fluxes to 41.4°, 60°, 75.5° and 90°, from 10° zones),
 // F_DW the rest of the downward flux, F_DC the upward, and for k = 2.67 the geometry factors
 // F_GL = 0.280, 0.165, 0.499, 0.006 (CIE 190:2010 Table 4) and the transfer factors at
-// 0.7/0.5/0.2 F_T,FW = 0.115, F_T,WW−1 = 0.211, F_T,CW = 0.307 (Table 5). `relight glare` gets
-// L_b from the room's own interreflection instead (precomputed transfer); the acceptance
-// (issue 17): within 1 UGR unit of the tabular value.
+// 0.7/0.5/0.2 F_T,FW = 0.115, F_T,WW−1 = 0.211, F_T,CW = 0.307 (Table 5). `relight glare` gets L_b
+// from the room's own interreflection instead (precomputed transfer); the acceptance: within 1 UGR
+// unit of the tabular value.
 TEST(GlareCommand, UgrInTheCie190StandardRoomIsItsTabularValueWithinOneUnit) {
   const std::filesystem::path ldt = std::filesystem::path(RELIGHT_SHARED_DIR) / "data" /
                                     "photometry" / "photometric-viewer" / "ldt" /

@@ -1,6 +1,6 @@
-// A glossy movable object (issues 12 and 13): a brushed-steel cabinet (metallic 1, roughness
-// 0.3) moved and turned through the state in a Lambertian room under a downlight and a wall
-// washer. `relight render --state` — per pixel and per vertex — against `relight reference
+// A glossy movable object: a brushed-steel cabinet (metallic 1, roughness 0.3) moved and turned
+// through the state in a Lambertian room under a downlight and a wall washer. `relight render
+// --state` — per pixel and per vertex — against `relight reference
 // --state` (512 samples per pixel): 8 × 8-pixel block means of luminance within 5 % on average
 // per pixel and 10 % per vertex, as the glossy room's images are held (glossy_probe_test.cpp).
 // The cabinet fills most of the view, so the blocks are mostly its faces.

@@ -1,6 +1,6 @@
-// Glossy surfaces through the transfer (issue 13's acceptance): a 5 × 4 × 2.8 m room with a
-// polished metal floor (metallic 1, roughness 0.3) and a satin dielectric wall (roughness 0.2),
-// a narrow downlight and a wall washer.
+// Glossy surfaces through the transfer (their acceptance): a 5 × 4 × 2.8 m room with a polished
+// metal floor (metallic 1, roughness 0.3) and a satin dielectric wall (roughness 0.2), a narrow
+// downlight and a wall washer.
 //  - `relight probe` within 3 % mean and 10 % worst of `relight reference` (131,072 samples per
 //    sensor) on the ceiling, the walls and the table. Without the glossy first bounce
 //    (engine/glossy_first_bounce.h) the ceiling above the polished floor comes out 13 % low on

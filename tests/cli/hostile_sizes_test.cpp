@@ -1,9 +1,9 @@
-// Hostile sizes (issue 16): inputs that declare far more data than they hold — an IES with 10⁹
-// vertical angles, an LDT with 10⁹ C planes, a glTF accessor of 10⁹ elements, a PLY header with
-// 10¹² faces — are refused as bad input (exit 2, one line naming the file and the count) before
-// anything that large is allocated: the command runs under a 4 GiB address-space limit, which
-// an allocation of the declared size would break. (A .rlt whose sections claim more than the
-// file holds: tests/store/rlt_corruption_test.cpp; a studio message over its limit:
+// Hostile sizes: inputs that declare far more data than they hold — an IES with 10⁹ vertical
+// angles, an LDT with 10⁹ C planes, a glTF accessor of 10⁹ elements, a PLY header with 10¹²
+// faces — are refused as bad input (exit 2, one line naming the file and the count) before anything
+// that large is allocated: the command runs under a 4 GiB address-space limit, which an allocation
+// of the declared size would break. (A .rlt whose sections claim more than the file holds:
+// tests/store/rlt_corruption_test.cpp; a studio message over its limit:
 // tests/studio/fuzz.test.mjs.)
 
 #include <chrono>

@@ -1,9 +1,9 @@
-// Live material edits (issue 13, docs/lighting-state.md "Materials"): a state that changes a
-// wall's albedo and makes the floor glossy gives, through `relight probe`, the light of a new
-// precompute of the edited scene — within 1 % at every sensor (the issue's acceptance; the
-// difference left is the solver's tolerance and the stored SH transfer's own truncation, which
-// both runs share but bounce differently) — and a state naming the scene's own materials
-// changes nothing. Sensors on the floor and on a wall, a luminaire and a daylit window.
+// Live material edits (docs/lighting-state.md "Materials"): a state that changes a wall's albedo
+// and makes the floor glossy gives, through `relight probe`, the light of a new precompute of the
+// edited scene — within 1 % at every sensor (the acceptance; the difference left is the solver's
+// tolerance and the stored SH transfer's own truncation, which both runs share but bounce
+// differently) — and a state naming the scene's own materials changes nothing. Sensors on the floor
+// and on a wall, a luminaire and a daylit window.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

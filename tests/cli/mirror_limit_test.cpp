@@ -1,13 +1,13 @@
-// The mirror limit (issue 13's acceptance): a metal floor (F0 0.9, roughness 0.05) under a
-// downlight in a room whose walls and ceiling absorb everything, so that the ceiling's only
-// light is the floor's reflection of the downlight. Its illuminance at a ceiling point x is
-// then the image-source closed form
+// The mirror limit (the glossy surfaces' acceptance): a metal floor (F0 0.9, roughness 0.05) under
+// a downlight in a room whose walls and ceiling absorb everything, so that the ceiling's only light
+// is the floor's reflection of the downlight. Its illuminance at a ceiling point x is then the
+// image-source closed form
 //     E = I(γ) · cos θ / d² · F(γ),
 // d the unfolded path |x − p'| (p' the downlight mirrored in the floor), γ the angle from the
 // downlight's axis (straight down) to the reflection point — equal to the incidence on the
 // floor and to the arrival's angle θ at the ceiling — and F Schlick's Fresnel with F0 = 0.9.
 //  - `relight reference` (4,096 samples per sensor): within 2 % at every ceiling sensor
-//    (render/reference_mirror.h; without the lobe about the image it finds almost nothing).
+//    (reference/reference_mirror.h; without the lobe about the image it finds almost nothing).
 //  - `relight probe`: within 3 % at every ceiling sensor (engine/mirror_reflection.h, and the
 //    glossy first bounce taking out what the SH transfer reflected: 6.5 % low without that).
 //  - At the roughness up to which a surface reflects as its image (0.15), probe within 2 % mean
@@ -180,7 +180,7 @@ TEST(MirrorLimit, TheImagesLightBouncesOnFromAWhiteCeiling) {
 // due south and a nearly black sky. The sun's patch on the floor (z 2.7–3.5 m) throws its image
 // on the ceiling (z 1.1–1.9 m), where E = E_⊥ cos θ F(θ) with θ = 30° on floor and ceiling
 // alike: 46,766 lx. Ceiling sensors inside the image: reference (16,384 samples; the lobe
-// about the sun's image, render/reference_mirror.h) and probe (the sun's image traced at run
+// about the sun's image, reference/reference_mirror.h) and probe (the sun's image traced at run
 // time, sources/portal/portal_lighting.cpp) within 3 %.
 std::string sun_room() {
   nlohmann::json scene = nlohmann::json::parse(room(0.05));

@@ -1,9 +1,9 @@
-// `mpirun -n 2 relight precompute` (issue 19) writes the file one process writes, byte for byte,
-// and probe reads the same light from it: on the demo room (luminaires and a window) and on a
-// room with two windows, a luminaire, a near-field emitter and a movable object (every
-// per-receiver phase the ranks split: gather rays, direct visibility, portal cubemaps, near-field
-// transfer). Two ranks on this machine's cores, oversubscribed on loopback (as root where CI runs
-// as root). A failure before the ranks exchange anything is reported once, exit 2.
+// `mpirun -n 2 relight precompute` writes the file one process writes, byte for byte, and probe
+// reads the same light from it: on the demo room (luminaires and a window) and on a room with two
+// windows, a luminaire, a near-field emitter and a movable object (every per-receiver phase the
+// ranks split: gather rays, direct visibility, portal cubemaps, near-field transfer). Two ranks on
+// this machine's cores, oversubscribed on loopback (as root where CI runs as root). A failure
+// before the ranks exchange anything is reported once, exit 2.
 #include <unistd.h>
 
 #include <algorithm>

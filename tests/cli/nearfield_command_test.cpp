@@ -1,7 +1,7 @@
-// `relight nearfield` as a user runs it (issue 5): one JSON line with the contract's keys for
-// each method; moving an emitter through the state changes the samples and the image and
-// leaves the .rlt as it was (no new precompute); emitters in scene and state are validated
-// with their JSON paths; a scene without emitters is bad input.
+// `relight nearfield` as a user runs it: one JSON line with the contract's keys for each method;
+// moving an emitter through the state changes the samples and the image and leaves the .rlt as it
+// was (no new precompute); emitters in scene and state are validated with their JSON paths; a scene
+// without emitters is bad input.
 #include <filesystem>
 #include <memory>
 

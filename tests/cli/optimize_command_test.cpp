@@ -1,8 +1,7 @@
-// `relight optimize` (issue 20) as a user runs it: the one JSON line, the state it writes
-// loaded as it is by `probe` (the achieved values reproduced from its CSV), `reference` (the
-// desk's Em within 3 %) and `render`,
-// infeasible targets (exit 0, the binding one named), bad targets (exit 2 with the JSON path),
-// and a start state's relative photometry file still found from the output's folder.
+// `relight optimize` as a user runs it: the one JSON line, the state it writes loaded as it is by
+// `probe` (the achieved values reproduced from its CSV), `reference` (the desk's Em within 3 %) and
+// `render`, infeasible targets (exit 0, the binding one named), bad targets (exit 2 with the JSON
+// path), and a start state's relative photometry file still found from the output's folder.
 #include <cmath>
 #include <filesystem>
 #include <fstream>

@@ -1,5 +1,5 @@
-// A .rlt keeps a map environment's path, not the image (docs/design-notes.md): a state that
-// uses the map after the file moved is an input error naming the portal's environment.
+// A .rlt keeps a map environment's path, not the image (docs/decisions.md): a state that uses the
+// map after the file moved is an input error naming the portal's environment.
 #include <filesystem>
 
 #include <gtest/gtest.h>

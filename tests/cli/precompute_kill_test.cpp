@@ -1,7 +1,7 @@
-// Crash safety (issue 16): `relight precompute` killed with SIGKILL at 20 moments spread over a
-// whole run — tracing, solving, writing, renaming — never leaves a partial or corrupt .rlt at
-// the output path: the earlier file there stays byte for byte, or the run had finished and its
-// new file is whole (it opens and validates).
+// Crash safety: `relight precompute` killed with SIGKILL at 20 moments spread over a whole
+// run — tracing, solving, writing, renaming — never leaves a partial or corrupt .rlt at the output
+// path: the earlier file there stays byte for byte, or the run had finished and its new file is
+// whole (it opens and validates).
 #include <fcntl.h>
 #include <signal.h>
 #include <spawn.h>

@@ -1,7 +1,7 @@
-// `relight probe --check` (issue 17): each task area's maintained Ē, U0 and UGR against its
-// EN 12464-1 requirements; the maintenance factor scales the electric light (a room lit by one
-// luminaire: Ē by MF exactly, U0 unchanged, UGR by 8·log10 MF), a failed requirement still
-// exits 0, an undeclared factor is 1 with a warning, and bad task keys exit 2.
+// `relight probe --check`: each task area's maintained Ē, U0 and UGR against its EN 12464-1
+// requirements; the maintenance factor scales the electric light (a room lit by one luminaire: Ē by
+// MF exactly, U0 unchanged, UGR by 8·log10 MF), a failed requirement still exits 0, an undeclared
+// factor is 1 with a warning, and bad task keys exit 2.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>

@@ -1,6 +1,6 @@
-// relight reference --state with the windows' whole state (issue 11): exterior objects placed
-// for each window and frosted glass are traced (render/reference_portals.h), so probe can be
-// checked against it for any state:
+// relight reference --state with the windows' whole state: exterior objects placed for each window
+// and frosted glass are traced (reference/reference_portals.h), so probe can be checked against it
+// for any state:
 //  * a grey wall 2 m outside a south window under a uniform sky takes light from the back of
 //    the room; hidden by the state, the room reads as without it; probe agrees with the
 //    reference in both (the shell's parallax, which the precompute warns about, is the

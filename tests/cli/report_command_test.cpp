@@ -1,6 +1,6 @@
-// `relight report` (issue 17): the page of a room with a window, a luminaire and a task area,
-// with a month of daylight — its tables and plans, the task check, the luminaire schedule and
-// the annual metrics equal to `relight annual`'s, names escaped, nothing fetched from elsewhere.
+// `relight report`: the page of a room with a window, a luminaire and a task area, with a month of
+// daylight — its tables and plans, the task check, the luminaire schedule and the annual metrics
+// equal to `relight annual`'s, names escaped, nothing fetched from elsewhere.
 #include <filesystem>
 #include <regex>
 #include <string>

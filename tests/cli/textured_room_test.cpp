@@ -1,7 +1,7 @@
-// glTF base colour textures through the product (issue 13: "base colour textures sampled at
-// the vertices as albedo"; scene/surface_texture.h). A 4 × 3 × 2.6 m room whose floor is a
-// glTF quad textured dark blue on the west half and light sand on the east (a 2 × 1 PNG,
-// clamped: the albedo runs from one to the other across the middle), lit by a downlight.
+// glTF base colour textures through the product ("base colour textures sampled at the vertices as
+// albedo"; scene/surface_texture.h). A 4 × 3 × 2.6 m room whose floor is a glTF quad textured dark
+// blue on the west half and light sand on the east (a 2 × 1 PNG, clamped: the albedo runs from one
+// to the other across the middle), lit by a downlight.
 //  - `relight probe` (the texture's footprint mean at each vertex) within 3 % mean and 8 % worst
 //    of `relight reference` (32,768 samples per sensor; the texture at every hit point): 0.81 %
 //    and 2.73 % measured; the ceiling over the sand is 6 % brighter than over the blue (the

@@ -1,9 +1,8 @@
-// Stored SH transfer in binary16 (scene "precompute": {"storage": "fp16"}, issue 18) against
-// fp32: every value `relight probe` reports within 0.1 % of the fp32 file's (lux and each of
-// r, g, b), on the demo room (five luminaires and a window under an overcast sky; under a state
-// with the luminaires dimmed, recoloured and re-aimed and the window under a sunny sky) and on
-// a room with a window and a skylight; the fp16 file's interreflected transfer takes half the
-// bytes.
+// Stored SH transfer in binary16 (scene "precompute": {"storage": "fp16"}) against fp32: every
+// value `relight probe` reports within 0.1 % of the fp32 file's (lux and each of r, g, b), on the
+// demo room (five luminaires and a window under an overcast sky; under a state with the luminaires
+// dimmed, recoloured and re-aimed and the window under a sunny sky) and on a room with a window and
+// a skylight; the fp16 file's interreflected transfer takes half the bytes.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

@@ -1,6 +1,5 @@
-// The dimmer programs (design/dimmer_program.h) against brute-force grid searches over the
-// dimmers of the design room's luminaires (issue 20's acceptance: within 0.5 %), and their
-// optimum against the relit scene.
+// The dimmer programs (design/dimmer_program.h) against brute-force grid searches over the dimmers
+// of the design room's luminaires (within 0.5 %), and their optimum against the relit scene.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,7 +1,7 @@
-// The bounce solver (ARCHITECTURE §4.3) against closed forms: inside a closed sphere of
-// albedo ρ under uniform direct irradiance E_d the total is E_d / (1 − ρ) at every vertex
-// and sensor, per colour channel; the iteration stops after the predicted number of
-// bounces; basis columns are independent and superpose; a closed room conserves flux.
+// The bounce solver against closed forms: inside a closed sphere of albedo ρ under uniform direct
+// irradiance E_d the total is E_d / (1 − ρ) at every vertex and sensor, per colour channel; the
+// iteration stops after the predicted number of bounces; basis columns are independent and
+// superpose; a closed room conserves flux.
 #include "engine/bounce_solver.h"
 
 #include <algorithm>

@@ -1,7 +1,7 @@
-// The gather operator (ARCHITECTURE §4.3) against closed forms: a row sums to the
-// point-to-surface form factor (1 inside a closed room, 0 facing nothing), its barycentric
-// split reproduces the cosine-weighted mean hit position, back sides and portals gather
-// nothing, and the matrix is a deterministic function of the seed.
+// The gather operator against closed forms: a row sums to the point-to-surface form factor
+// (1 inside a closed room, 0 facing nothing), its barycentric split reproduces the cosine-weighted
+// mean hit position, back sides and portals gather nothing, and the matrix is a deterministic
+// function of the seed.
 #include "engine/gather_operator.h"
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// engine/mirror_planes.h and engine/mirror_reflection.h: near-mirror triangles grouped into
+// material/mirror_planes.h and engine/mirror_reflection.h: near-mirror triangles grouped into
 // planes by key and geometry, and a light's image found through them at a receiver — the
 // path's geometry against the image-source closed form, a blocker on either leg removing it.
 #include <cmath>

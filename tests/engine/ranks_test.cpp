@@ -1,7 +1,7 @@
-// The ranks of one precompute (engine/ranks.h, issue 19) without MPI: the receivers' blocks are
-// dealt in turn and cover every receiver once, and ranks run as threads of this process —
-// exchanging through memory — share rows exactly and build the gather operator bit for bit as
-// one process does. `mpirun` itself is tested in tests/cli/mpi_precompute_test.cpp.
+// The ranks of one precompute (engine/ranks.h) without MPI: the receivers' blocks are dealt in turn
+// and cover every receiver once, and ranks run as threads of this process — exchanging through
+// memory — share rows exactly and build the gather operator bit for bit as one process does.
+// `mpirun` itself is tested in tests/cli/mpi_precompute_test.cpp.
 #include "engine/ranks.h"
 
 #include <algorithm>

@@ -1,7 +1,7 @@
-// Stored SH transfer (engine/transfer_blocks.h, transfer_sections.h; issue 18): binary16 with a
-// power-of-two scale keeps every value within 2⁻¹¹ relative over a range of 2²⁹ below the
-// largest; the weighted sum over it (F16C and table alike) is the float sum of the decoded
-// values; a section comes back from a .rlt bit for bit with its scale.
+// Stored SH transfer (engine/transfer_blocks.h, transfer_sections.h): binary16 with a power-of-two
+// scale keeps every value within 2⁻¹¹ relative over a range of 2²⁹ below the largest; the weighted
+// sum over it (F16C and table alike) is the float sum of the decoded values; a section comes back
+// from a .rlt bit for bit with its scale.
 #include <gtest/gtest.h>
 
 #include <cmath>

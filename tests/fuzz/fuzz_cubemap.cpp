@@ -1,11 +1,10 @@
-// Fuzz target (issue 16, issue 18): one receiver's direct portal cubemap record
-// (sources/portal/cubemap_encoding.h: empty, pulse, Haar, pulse runs, face rectangles) as the
-// run time reads it from a `.rlt` — parsed, decoded, summed alone and summed in a block (the
-// AVX2 loops that read eight levels and eight cells at a time). The `rlt` target cannot reach
-// these: a changed record fails its section's checksum first. Byte 0 picks the face size N =
-// 2^(1 + byte % 7) (2 to 128: 2-byte indices up to 64, 4-byte at 128), the rest is the record.
-// Bad input must end in InputError; anything else — a crash, a sanitizer report, a read past the
-// record or the shell's planes — is a defect.
+// Fuzz target: one receiver's direct portal cubemap record (sources/portal/cubemap_encoding.h:
+// empty, pulse, Haar, pulse runs, face rectangles) as the run time reads it from a `.rlt` — parsed,
+// decoded, summed alone and summed in a block (the AVX2 loops that read eight levels and eight
+// cells at a time). The `rlt` target cannot reach these: a changed record fails its section's
+// checksum first. Byte 0 picks the face size N = 2^(1 + byte % 7) (2 to 128: 2-byte indices up to
+// 64, 4-byte at 128), the rest is the record. Bad input must end in InputError; anything else — a
+// crash, a sanitizer report, a read past the record or the shell's planes — is a defect.
 #include <array>
 #include <bit>
 #include <cstddef>

@@ -1,9 +1,9 @@
-// Fuzz target (issue 16): an environment map file (light/environment_map_io.h): OpenEXR when the
-// input starts with its magic number, else Radiance RGBE .hdr. Bad input must end in
-// InputError; anything else is a defect. Maps of more than 2¹⁴ pixels are refused from their
-// headers: decoding large pictures, not finding defects, was what the target spent its time on
-// (60–1,000 executions a second; with 2¹⁸ still 80 % of it in clearing fresh pages for the
-// pictures); the decoders' code is the same for every size.
+// Fuzz target: an environment map file (light/environment_map_io.h): OpenEXR when the input starts
+// with its magic number, else Radiance RGBE .hdr. Bad input must end in InputError; anything else
+// is a defect. Maps of more than 2¹⁴ pixels are refused from their headers: decoding large
+// pictures, not finding defects, is what the target would spend its time on (60–1,000 executions a
+// second; with 2¹⁸ still 80 % of it in clearing fresh pages for the pictures); the decoders' code
+// is the same for every size.
 #include <cstddef>
 #include <cstdint>
 #include <cstring>

@@ -1,5 +1,5 @@
-// Fuzz target (issue 16): EnergyPlus weather text (light/epw_weather.h). Bad input must end in
-// InputError; anything else is a defect.
+// Fuzz target: EnergyPlus weather text (light/epw_weather.h). Bad input must end in InputError;
+// anything else is a defect.
 #include <cstddef>
 #include <cstdint>
 #include <string_view>

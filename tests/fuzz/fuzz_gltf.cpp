@@ -1,6 +1,6 @@
-// Fuzz target (issue 16): a glTF 2.0 mesh (scene/gltf_import.h, through tinygltf), as .glb when
-// the input starts with the binary container's magic, else as .gltf text. Bad input must end
-// in InputError; anything else is a defect.
+// Fuzz target: a glTF 2.0 mesh (scene/gltf_import.h, through tinygltf), as .glb when the input
+// starts with the binary container's magic, else as .gltf text. Bad input must end in InputError;
+// anything else is a defect.
 #include <cstddef>
 #include <cstdint>
 #include <cstring>

@@ -1,6 +1,5 @@
-// Fuzz target (issue 16): IES LM-63 text (light/ies_parser.h). Bad input must end in InputError
-// (exit 2 in the product); anything else — a crash, a sanitizer report, another exception — is
-// a defect.
+// Fuzz target: IES LM-63 text (light/ies_parser.h). Bad input must end in InputError (exit 2 in the
+// product); anything else — a crash, a sanitizer report, another exception — is a defect.
 #include <cstddef>
 #include <cstdint>
 #include <string_view>

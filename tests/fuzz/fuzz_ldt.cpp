@@ -1,5 +1,5 @@
-// Fuzz target (issue 16): EULUMDAT text (light/ldt_parser.h). Bad input must end in InputError;
-// anything else is a defect.
+// Fuzz target: EULUMDAT text (light/ldt_parser.h). Bad input must end in InputError; anything else
+// is a defect.
 #include <cstddef>
 #include <cstdint>
 #include <string_view>

@@ -1,7 +1,6 @@
-// Fuzz target (issue 16): a studio client's text message (serve/studio_messages.h: state, pick,
-// distribution, ping, annual with a weather file's text) against a small scene with a
-// luminaire, a window, an emitter and a movable object. Bad input must end in InputError;
-// anything else is a defect.
+// Fuzz target: a studio client's text message (serve/studio_messages.h: state, pick, distribution,
+// ping, annual with a weather file's text) against a small scene with a luminaire, a window, an
+// emitter and a movable object. Bad input must end in InputError; anything else is a defect.
 #include <cstddef>
 #include <cstdint>
 #include <optional>

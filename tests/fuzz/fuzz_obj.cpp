@@ -1,4 +1,4 @@
-// Fuzz target (issue 16): a Wavefront OBJ mesh (scene/obj_import.h, through tinyobjloader).
+// Fuzz target: a Wavefront OBJ mesh (scene/obj_import.h, through tinyobjloader).
 // Bad input must end in InputError; anything else is a defect.
 #include <cstddef>
 #include <cstdint>

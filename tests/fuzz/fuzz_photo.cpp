@@ -1,10 +1,10 @@
-// Fuzz target (issue 16): a photograph as `relight capture` reads it (image/photo.h): JPEG, PNG
-// or TIFF through OpenCV's imgcodecs, and its EXIF exposure through libexif. The input is
-// written with the extension its first bytes suggest (the decoders go by content). Bad input
-// must end in InputError; anything else is a defect. Pictures declaring more than 2¹⁶ pixels
-// are refused from their headers, as environment maps are in fuzz_envmap: decoding large
-// pictures under AddressSanitizer (a 204-byte TIFF had OpenCV allocate 879 MB) held the target
-// at 1,300 executions a second; the decoders' code is the same for every size.
+// Fuzz target: a photograph as `relight capture` reads it (image/photo.h): JPEG, PNG or TIFF
+// through OpenCV's imgcodecs, and its EXIF exposure through libexif. The input is written with the
+// extension its first bytes suggest (the decoders go by content). Bad input must end in InputError;
+// anything else is a defect. Pictures declaring more than 2¹⁶ pixels are refused from their
+// headers, as environment maps are in fuzz_envmap: decoding large pictures under AddressSanitizer
+// (a 204-byte TIFF had OpenCV allocate 879 MB) held the target at 1,300 executions a second; the
+// decoders' code is the same for every size.
 #include <cstddef>
 #include <cstdint>
 #include <cstring>

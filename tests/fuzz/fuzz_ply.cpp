@@ -1,5 +1,5 @@
-// Fuzz target (issue 16): a PLY mesh, ASCII or binary (scene/ply_import.h). Bad input must end
-// in InputError; anything else is a defect.
+// Fuzz target: a PLY mesh, ASCII or binary (scene/ply_import.h). Bad input must end in InputError;
+// anything else is a defect.
 #include <cstddef>
 #include <cstdint>
 

@@ -1,6 +1,6 @@
-// Fuzz target (issue 16): a precomputed `.rlt` file as every command opens it
-// (sources/transfer_file.h: header, section table, checksums, then each source's sections).
-// Bad input must end in InputError; anything else is a defect.
+// Fuzz target: a precomputed `.rlt` file as every command opens it (sources/transfer_file.h:
+// header, section table, checksums, then each source's sections). Bad input must end in InputError;
+// anything else is a defect.
 #include <cstddef>
 #include <cstdint>
 

@@ -1,6 +1,6 @@
-// Fuzz target (issue 16): a scene document (docs/scene-format.md) parsed and validated as
-// `relight precompute` reads it (scene/scene_loader.h), files resolved against an empty
-// folder. Bad input must end in InputError; anything else is a defect.
+// Fuzz target: a scene document (docs/scene-format.md) parsed and validated as `relight precompute`
+// reads it (scene/scene_loader.h), files resolved against an empty folder. Bad input must end in
+// InputError; anything else is a defect.
 #include <cstddef>
 #include <cstdint>
 #include <string>

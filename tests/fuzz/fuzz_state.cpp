@@ -1,7 +1,6 @@
-// Fuzz target (issue 16): a lighting state document (docs/lighting-state.md) applied to a small
-// scene with a luminaire, a window, an emitter and a movable object, as `relight probe --state`
-// and the studio read it (runtime/lighting_state.h). Bad input must end in InputError; anything
-// else is a defect.
+// Fuzz target: a lighting state document (docs/lighting-state.md) applied to a small scene with a
+// luminaire, a window, an emitter and a movable object, as `relight probe --state` and the studio
+// read it (runtime/lighting_state.h). Bad input must end in InputError; anything else is a defect.
 #include <cstddef>
 #include <cstdint>
 #include <string>

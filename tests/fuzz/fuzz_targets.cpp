@@ -1,7 +1,6 @@
-// Fuzz target (issue 16): an inverse-design TARGETS.json (docs/optimize.md) read against a small
-// scene with a sensor set and a luminaire, as `relight optimize --targets` and the studio's
-// optimise panel read it (design/design_targets.h). Bad input must end in InputError; anything
-// else is a defect.
+// Fuzz target: an inverse-design TARGETS.json (docs/optimize.md) read against a small scene with a
+// sensor set and a luminaire, as `relight optimize --targets` and the studio's optimise panel read
+// it (design/design_targets.h). Bad input must end in InputError; anything else is a defect.
 #include <cstddef>
 #include <cstdint>
 #include <string>

@@ -1,7 +1,7 @@
-// Replays fuzz inputs through a fuzz target without libFuzzer (issue 16): every file under the
-// folders (or the files) given, in name order, once. `make test` runs each target over its seed
-// corpus and its regression inputs (tests/fuzz/corpus/NAME/); a crash or an exception that is
-// not InputError fails the test. Prints how many inputs it ran.
+// Replays fuzz inputs through a fuzz target without libFuzzer: every file under the folders (or the
+// files) given, in name order, once. `make test` runs each target over its seed corpus and its
+// regression inputs (tests/fuzz/corpus/NAME/); a crash or an exception that is not InputError fails
+// the test. Prints how many inputs it ran.
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>

@@ -293,7 +293,7 @@ TEST_F(ImageExr, AChannelListIsWalkedChannelByChannelAsOpenExrReadsIt) {
   EXPECT_FLOAT_EQ(static_cast<float>(read.at(3, 1).b), 3.0f);
 }
 
-// Blender's studio-light environment maps are DWAB-compressed (ARCHITECTURE §5).
+// Blender's studio-light environment maps are DWAB-compressed, which tinyexr cannot read.
 TEST(ImageExrBlenderData, ReadsStudioLightEnvironmentMaps) {
   const fs::path folder = "/usr/share/blender/datafiles/studiolights/world";
   if (!fs::is_directory(folder)) GTEST_SKIP() << "blender-data is not installed";

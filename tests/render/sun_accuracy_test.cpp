@@ -1,7 +1,7 @@
-// Issue 21 acceptance: the sun through a window, exact at every sensor and vertex
+// Acceptance of the sun through a window: exact at every sensor and vertex
 // (sources/portal/portal_sun.h) with its interreflection bounced at run time through the
 // stored gather operator (engine/runtime_scene.h), against `relight reference`
-// (render/reference_portals.h) at 16384 samples per sensor and against the closed-form
+// (reference/reference_portals.h) at 16384 samples per sensor and against the closed-form
 // geometry of the patch: the window's outline projected along the sun. The room is the
 // daylight tests' 4 × 3 × 5 m room (tests/support/daylight_room.h), grey (albedo 0.5), its
 // south window x ∈ [1, 3], y ∈ [0.9, 2.1] in the wall z = 5, under a CIE clear sky (type 12)

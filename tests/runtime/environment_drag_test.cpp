@@ -74,8 +74,8 @@ TEST(EnvironmentDrag, AnyHistoryOfPlacementsGivesTheLightOfTheFinalOne) {
 }
 
 // An object turned a little every frame (a designer turning a chair) leaves nothing behind: the
-// turned frames' light and leaf tables kept are those of the placement as it stands (before,
-// each frame's turn added ~4 MB of them for good).
+// turned frames' light and leaf tables kept are those of the placement as it stands (each frame's
+// turn kept for good would add ~4 MB of them).
 TEST(EnvironmentDrag, TurningAnObjectFrameAfterFrameKeepsOnlyTheCurrentTurnsTables) {
   testing::TempDir dir;
   const std::filesystem::path rlt = testing::write_precomputed(dir, "crates", two_crates());

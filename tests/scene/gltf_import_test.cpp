@@ -150,9 +150,9 @@ TEST_F(GltfImport, EmbeddedBufferQuadIsTranslatedWithBaseColorAlbedo) {
   EXPECT_EQ(mesh.triangle_material, (std::vector<std::uint32_t>{0, 0}));
 }
 
-// issue 13: metallicFactor and roughnessFactor make the material glossy (the absent one at
-// glTF's default 1); a file with base colours only stays Lambertian (the test above); a
-// factor outside 0..1 is an input error.
+// metallicFactor and roughnessFactor make the material glossy (the absent one at glTF's default 1);
+// a file with base colours only stays Lambertian (the test above); a factor outside 0..1 is an
+// input error.
 TEST_F(GltfImport, MetallicAndRoughnessFactorsMakeTheMaterialGlossy) {
   json doc =
       quad_document(embedded_buffer(), {{{"mesh", 0}, {"translation", {1, 2, 3}}}}, indexed_quad());
@@ -287,9 +287,9 @@ TEST_F(GltfImport, BrokenJsonMissingBufferAndBadReferencesAreInputErrors) {
   EXPECT_THROW(import_mesh(truncated), InputError);
 }
 
-// Found by fuzz_gltf (issue 16): tinygltf hands an image in a buffer view to the image loader as
-// the view's bytes without checking that the view lies inside its buffer; the import refuses it
-// instead of reading past the buffer (under ASan: a heap-buffer-overflow before the fix).
+// Found by fuzz_gltf: tinygltf hands an image in a buffer view to the image loader as the view's
+// bytes without checking that the view lies inside its buffer; the import refuses it instead of
+// reading past the buffer (under ASan, reading it is a heap-buffer-overflow).
 TEST_F(GltfImport, AnImageWhoseBufferViewRunsPastItsBufferIsAnInputError) {
   json doc = quad_document(embedded_buffer(), {{{"mesh", 0}}}, indexed_quad());
   doc["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 40}, {"byteLength", 400}});
@@ -319,9 +319,9 @@ json quad_document_with_uvs(int set) {
   return doc;
 }
 
-// issue 13: a base colour texture (a 2 × 1 PNG: red, then blue) on the quad, through
-// TEXCOORD_0 (accessor 2), as a file beside the .gltf and as a data URI: the triangles carry
-// the texture and their corners' UVs, the texture holds the decoded (linear) texels.
+// A base colour texture (a 2 × 1 PNG: red, then blue) on the quad, through TEXCOORD_0 (accessor 2),
+// as a file beside the .gltf and as a data URI: the triangles carry the texture and their corners'
+// UVs, the texture holds the decoded (linear) texels.
 TEST_F(GltfImport, BaseColourTextureRidesOnTheTrianglesWithTheirUvs) {
   Image8 image;
   image.width = 2;
@@ -370,9 +370,9 @@ TEST_F(GltfImport, BaseColourTextureRidesOnTheTrianglesWithTheirUvs) {
       << error_of(no_uv);
 }
 
-// issue 13: KHR_texture_transform on the base colour texture takes the UVs through
-// offset · rotation · scale (the extension's T · R · S; rotation counter-clockwise in UV space),
-// and its texCoord overrides the texture info's; bad values are input errors naming it.
+// KHR_texture_transform on the base colour texture takes the UVs through offset · rotation · scale
+// (the extension's T · R · S; rotation counter-clockwise in UV space), and its texCoord overrides
+// the texture info's; bad values are input errors naming it.
 TEST_F(GltfImport, TextureTransformMovesTurnsAndScalesTheUvs) {
   Image8 image;
   image.width = 2;

@@ -135,8 +135,8 @@ TEST(SceneLoader, UnknownMaterialAndPrecomputeKeyAreErrors) {
   EXPECT_NE(load_error(scene).find("/precompute/max_edges: unknown key"), std::string::npos);
 }
 
-// issue 13: metallic and roughness (either makes a material glossy, the other at the glTF
-// default), 0..1 with the JSON path; glass needs no albedo and takes neither key.
+// Metallic and roughness (either makes a material glossy, the other at the glTF default), 0..1 with
+// the JSON path; glass needs no albedo and takes neither key.
 TEST(SceneLoader, MetallicRoughnessKeysMakeAMaterialGlossy) {
   json scene = minimal_scene();
   scene["materials"]["steel"] = {{"albedo", {0.5, 0.5, 0.5}}, {"metallic", 1}, {"roughness", 0.3}};

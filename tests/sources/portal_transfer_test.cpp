@@ -1,11 +1,10 @@
-// Issue 4 acceptance, transfer side: the precomputed direct portal transfer of a black room
-// (no interreflection) against the closed forms E = L·π·F of a rectangular opening to a
-// uniform sky (tests/support/daylight_room.h). A uniform shell of luminance L gives every
-// receiver E = L·Σ_cells t̂ (its decoded cubemap record, as the run time's dot product
-// with a constant cubemap) and, from the SH-basis direct columns that feed the bounce
-// solver, E = L·√(4π)·S_r,00. Both are checked at floor sensors (centre, off-centre, near a
-// wall) and over every floor vertex. Run time, interreflection and the reference tracer:
-// tests/render/daylight_accuracy_test.cpp.
+// Daylight acceptance, transfer side: the precomputed direct portal transfer of a black room (no
+// interreflection) against the closed forms E = L·π·F of a rectangular opening to a uniform sky
+// (tests/support/daylight_room.h). A uniform shell of luminance L gives every receiver
+// E = L·Σ_cells t̂ (its decoded cubemap record, as the run time's dot product with a constant
+// cubemap) and, from the SH-basis direct columns that feed the bounce solver, E = L·√(4π)·S_r,00.
+// Both are checked at floor sensors (centre, off-centre, near a wall) and over every floor vertex.
+// Run time, interreflection and the reference tracer: tests/render/daylight_accuracy_test.cpp.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

@@ -1,6 +1,5 @@
-// RltWriter::write is atomic (ARCHITECTURE §4.8): when it fails, whatever was at the
-// target stays as it was and no temporary file is left beside it; when it succeeds,
-// the new file replaces the old one whole.
+// RltWriter::write is atomic: when it fails, whatever was at the target stays as it was and no
+// temporary file is left beside it; when it succeeds, the new file replaces the old one whole.
 #include <gtest/gtest.h>
 
 #include <algorithm>

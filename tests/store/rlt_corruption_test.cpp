@@ -115,8 +115,8 @@ TEST_F(RltCorruption, AnyChangedHeaderOrTableByteIsRefused) {
   open_error(bytes, {"section table is corrupted (checksum mismatch)"});
 }
 
-// A hostile file whose checksums are all right but whose section claims 2^40 bytes: refused by
-// the bounds check, before anything reads or allocates that much (issue 16).
+// A hostile file whose checksums are all right but whose section claims 2^40 bytes: refused by the
+// bounds check, before anything reads or allocates that much.
 TEST_F(RltCorruption, ASectionClaimingMoreThanTheFileHoldsIsRefusedThoughItsChecksumsMatch) {
   std::vector<std::byte> bytes = bytes_;
   const auto put_u64 = [&](std::size_t at, std::uint64_t value) {

@@ -237,7 +237,7 @@ TEST(RltWriter, AProducedSectionIsWrittenByteForByteAsTheSameBytesAdded) {
   RltWriter added, produced;
   for (RltWriter* w : {&added, &produced}) w->add_text(kMeta, "metadata", "{}");
   added.add_f32(7, "values", values);
-  // In pieces of 4,097 floats, as ranks' blocks arrive (issue 19).
+  // In pieces of 4,097 floats, as ranks' blocks arrive.
   produced.add_produced_section(
       7, "values",
       [&](const RltWriter::Sink& sink) {

@@ -1,11 +1,10 @@
-// A small precomputed office for the inverse-design tests (issue 20): a 6 × 3 × 4 m grey room
-// (walls of quads, the south one around a 1.5 × 1.2 m window)
-// with three downlights under the ceiling ("left" and "right" cosine-power, "middle" the
-// bilateral IES file of tests/data/photometry with its 25 W input power, 0.2 m lower so that
-// its spherical luminous opening of 1 ft stays below the ceiling), a "desk" work-plane
-// grid of 6 × 4 points and a "wall" grid of 4 × 2 points facing into the room from the east
-// wall, and a south window (a portal to a uniform sky of 2000 cd/m²); precomputed at low
-// settings into a .rlt in a temporary folder (a few seconds).
+// A small precomputed office for the inverse-design tests: a 6 × 3 × 4 m grey room (walls of quads,
+// the south one around a 1.5 × 1.2 m window) with three downlights under the ceiling ("left" and
+// "right" cosine-power, "middle" the bilateral IES file of tests/data/photometry with its 25 W
+// input power, 0.2 m lower so that its spherical luminous opening of 1 ft stays below the ceiling),
+// a "desk" work-plane grid of 6 × 4 points and a "wall" grid of 4 × 2 points facing into the room
+// from the east wall, and a south window (a portal to a uniform sky of 2000 cd/m²); precomputed at
+// low settings into a .rlt in a temporary folder (a few seconds).
 #pragma once
 
 #include <string>

@@ -1,9 +1,9 @@
-// Synthetic phone captures for `relight capture` (issue 14's acceptance): two 190° fisheye
-// brackets rendered from a known equirectangular map, with an off-centre image circle, a known
-// non-linear camera response, exposures two stops apart written to EXIF, a dark lens-frame
-// band near the rim and a photographer low in the back view. The projection here is written
-// out independently of src/capture (equidistant, the documented front/back orientation) so a
-// mistake in the product's geometry cannot cancel against the same mistake here.
+// Synthetic phone captures for `relight capture` (its acceptance test): two 190° fisheye brackets
+// rendered from a known equirectangular map, with an off-centre image circle, a known non-linear
+// camera response, exposures two stops apart written to EXIF, a dark lens-frame band near the rim
+// and a photographer low in the back view. The projection here is written out independently of
+// src/capture (equidistant, the documented front/back orientation) so a mistake in the product's
+// geometry cannot cancel against the same mistake here.
 #pragma once
 
 #include <algorithm>

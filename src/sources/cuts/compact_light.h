@@ -1,7 +1,7 @@
 // The compact sources of a top-level environment (light/compact_sources.h: a sky's sun, a map's
-// small bright spots) lit exactly at a point (issue 15): a direction of a source's disc counts
-// when its ray from the point meets nothing of `occluders` — the static scene, and the placed
-// objects where they are included — on its way to infinity, and
+// small bright spots) lit exactly at a point: a direction of a source's disc counts when its ray
+// from the point meets nothing of `occluders` — the static scene, and the placed objects where they
+// are included — on its way to infinity, and
 //     E = Σ_s E_s,n · f_s · max(0, n · s),
 // f_s the fraction of the disc seen that way (light/disc_visibility.h: 9 directions, 80 in a
 // penumbra). The run time evaluates it at receivers and object vertices

@@ -1,14 +1,13 @@
-// The precompute of the visibility cuts (issue 15; Iwasaki et al., Cyberworlds, §V.A.1: the
-// capture paper, papers/003), made when the scene has a top-level environment: the direction
-// tree of `CutsSettings::directions` directions and a self-visibility cut
-// (sources/cuts/self_visibility.h) at every receiver — the static scene's vertices, then its
-// sensors — traced against the static scene's opaque surfaces and its portals' glass (a
-// window shows its own exterior, not the top-level environment: render/reference_tracer.h
-// does the same), height encoded (math/cut_encoding.h). Movable objects are not in these
-// cuts: they shadow through their visibility cut fields (sources/cuts/visibility_field.h),
-// and each object vertex has its own cut of the object's self-occlusion, in the object's
-// frame. Every rank of an MPI run computes every cut (they are not dealt out). Pinned by
-// tests/cli/environment_cuts_test.cpp.
+// The precompute of the visibility cuts (Iwasaki et al., Cyberworlds, §V.A.1: the capture paper,
+// papers/003), made when the scene has a top-level environment: the direction tree of
+// `CutsSettings::directions` directions and a self-visibility cut (sources/cuts/self_visibility.h)
+// at every receiver — the static scene's vertices, then its sensors — traced against the static
+// scene's opaque surfaces and its portals' glass (a window shows its own exterior, not the
+// top-level environment: reference/reference_tracer.h does the same), height encoded
+// (math/cut_encoding.h). Movable objects are not in these cuts: they shadow through their
+// visibility cut fields (sources/cuts/visibility_field.h), and each object vertex has its own cut
+// of the object's self-occlusion, in the object's frame. Every rank of an MPI run computes every
+// cut (they are not dealt out). Pinned by tests/cli/environment_cuts_test.cpp.
 #pragma once
 
 #include <cstdint>

@@ -1,7 +1,7 @@
-// The top-level environment's run-time term (issue 15; Iwasaki et al., Cyberworlds, §V, Eq. 3:
-// the capture paper, papers/003): at every receiver of normal n the product of its binary
-// self-visibility cut (sources/cuts/self_visibility.h) with the environment's first moments on
-// the direction tree (light/environment_clusters.h), summed over the cut's visible nodes,
+// The top-level environment's run-time term (Iwasaki et al., Cyberworlds, §V, Eq. 3: the capture
+// paper, papers/003): at every receiver of normal n the product of its binary self-visibility cut
+// (sources/cuts/self_visibility.h) with the environment's first moments on the direction tree
+// (light/environment_clusters.h), summed over the cut's visible nodes,
 //     E(x) = Σ_{k visible from x} n · ∫_{cell(k)} L ω dω,
 // exact for any environment on nodes whose leaves agree, so a small bright source's shadow is
 // as sharp as the leaves' spacing (1.1° at 32,768 directions); then that direct light bounced

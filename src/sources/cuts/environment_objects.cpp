@@ -54,10 +54,9 @@ std::array<std::size_t, 4> four_nodes(const std::uint8_t* height, std::size_t i,
 // Σ value · n · M over a cut's nodes.
 Rgb cut_irradiance_portable(const ValueCut& cut, std::uint32_t leaves, std::span<const RgbMoment> m,
                             Vec3 n) {
-  // No test of v > 0: a fifth of a product's nodes are 0 in no order a branch predicts (the
-  // showroom's sun frame: 55 -> 39 ms for its 30 M nodes); values are never negative. Four
-  // sums, a node in four to each, so that a node's adds need not wait for the last node's
-  // (the showroom's sun frame: objects_ms 58 -> 48.5 ms with two, 44 ms with four).
+  // No test of v > 0: a fifth of a product's nodes are 0 in no order a branch predicts, and
+  // values are never negative. Four sums, a node in four to each, so that a node's adds need not
+  // wait for the last node's; four beat two (measured: docs/decisions.md).
   RgbMoment s0, s1, s2, s3;
   const std::size_t count = cut.size();
   const std::uint8_t* height = cut.height.data();
@@ -79,7 +78,7 @@ Rgb cut_irradiance_portable(const ValueCut& cut, std::uint32_t leaves, std::span
 }
 
 // The same with AVX2 and FMA: a moment's first eight floats in one register times the node's
-// value, its ninth apart (the showroom's sun frame: objects_ms 44 -> 34.5 ms).
+// value, its ninth apart (measured: docs/decisions.md).
 static_assert(sizeof(RgbMoment) == 9 * sizeof(float));
 __attribute__((target("avx2,fma"))) Rgb cut_irradiance_avx2(const ValueCut& cut,
                                                             std::uint32_t leaves,
@@ -331,7 +330,7 @@ bool EnvironmentObjects::field_factor(std::size_t o, Vec3 x, Vec3 n, double fram
   interpolate_cuts(operands, s.interpolated);
   // Expanded: a cone holds hundreds to thousands of leaves (~800 on average in the showroom's
   // drag), each a random read, against a binary search of the cut's nodes. (Writing only the
-  // nodes other than 1 and putting them back after measured the same.)
+  // nodes other than 1 and putting them back after is no faster.)
   s.leaves.resize(tree_.leaf_count());
   expand_cut(s.interpolated, s.leaves);
   const std::vector<std::uint32_t>& turn = leaf_turn(relative);

@@ -1,6 +1,6 @@
-// Movable objects under the top-level environment (issue 15; Iwasaki et al., Cyberworlds, §V,
-// Eq. 3–4: the capture paper, papers/003): the visibility at a receiver x is its own cut times
-// the occlusion of every object near it,
+// Movable objects under the top-level environment (Iwasaki et al., Cyberworlds, §V, Eq. 3–4: the
+// capture paper, papers/003): the visibility at a receiver x is its own cut times the occlusion of
+// every object near it,
 //     V(x, ω) = SVC(x, ω) · Π_o VCF_o(x, ω),
 // each VCF_o interpolated from the eight samples of object o's field around x
 // (sources/cuts/visibility_field.h) and the product taken by the merge with counters

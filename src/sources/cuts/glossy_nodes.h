@@ -1,13 +1,12 @@
-// The direction tree's nodes as a glossy view sums them (issue 15; the capture paper,
-// papers/003, §V.B, Eq. 3, as sources/cuts/environment_lighting.h shades a vertex toward an
-// eye): the BRDF is evaluated once a node of the view's split — the nodes where a walk from the
-// root stops, a cone within the view's node size (3°) or a leaf — so that a node of open sky
-// does not put a quadrant's light at one direction of a narrow lobe, and a cut's nodes finer
-// than that (a shadow's edge, a product of visibility fields) are summed into the split node
-// that holds them. The split nodes cover the sphere once, and in leaf order every node at or
-// above them owns a contiguous range of them. Their lights are kept in planes of floats
-// (material/specular_lobe_sum.h), so a vertex's visible nodes become a few long ranges of one
-// array summed eight at a time.
+// The direction tree's nodes as a glossy view sums them (the capture paper, papers/003, §V.B,
+// Eq. 3, as sources/cuts/environment_lighting.h shades a vertex toward an eye): the BRDF is
+// evaluated once a node of the view's split — the nodes where a walk from the root stops, a cone
+// within the view's node size (3°) or a leaf — so that a node of open sky does not put a quadrant's
+// light at one direction of a narrow lobe, and a cut's nodes finer than that (a shadow's edge, a
+// product of visibility fields) are summed into the split node that holds them. The split nodes
+// cover the sphere once, and in leaf order every node at or above them owns a contiguous range of
+// them. Their lights are kept in planes of floats (material/specular_lobe_sum.h), so a vertex's
+// visible nodes become a few long ranges of one array summed eight at a time.
 // Pinned by tests/sources/cuts/glossy_nodes_test.cpp.
 #pragma once
 

@@ -1,16 +1,15 @@
-// Visibility cut fields (VCF; issue 15, Iwasaki et al., Cyberworlds, §V.A.1, Fig. 4: the capture
-// paper, papers/003): the occlusion a movable object casts, precomputed around it so that its
-// shadows under an environment follow it with no tracing. Sample points lie on `sphere_count`
-// concentric spheres about the object's bounding sphere (centre c, radius R) as the scene
-// places it, radii from inner_radius · R to outer_radius · R in geometric steps, each sphere
-// with 6 · P² points (P = sphere_points) at the cell centres of a cube map's faces projected
-// onto it (math/cubemap.h layout). At each point x_s the object's binary occlusion V(x_s, ω) —
-// 0 where the ray from x_s toward ω meets the object — over the direction tree's leaves is
-// stored as a cut that merges nodes only where their leaves agree (threshold 0), so its shadow
-// edges stay as sharp as the leaves; only the directions within the cone of the bounding
-// sphere from x_s are traced (the rest see past the object). The fields are in the object's own
-// frame: a receiver x is looked up at the placement's inverse of x, its directions turned back
-// by the placement's rotation.
+// Visibility cut fields (VCF; Iwasaki et al., Cyberworlds, §V.A.1, Fig. 4: the capture paper,
+// papers/003): the occlusion a movable object casts, precomputed around it so that its shadows
+// under an environment follow it with no tracing. Sample points lie on `sphere_count` concentric
+// spheres about the object's bounding sphere (centre c, radius R) as the scene places it, radii
+// from inner_radius · R to outer_radius · R in geometric steps, each sphere with 6 · P² points
+// (P = sphere_points) at the cell centres of a cube map's faces projected onto it (math/cubemap.h
+// layout). At each point x_s the object's binary occlusion V(x_s, ω) — 0 where the ray from x_s
+// toward ω meets the object — over the direction tree's leaves is stored as a cut that merges nodes
+// only where their leaves agree (threshold 0), so its shadow edges stay as sharp as the leaves;
+// only the directions within the cone of the bounding sphere from x_s are traced (the rest see past
+// the object). The fields are in the object's own frame: a receiver x is looked up at the
+// placement's inverse of x, its directions turned back by the placement's rotation.
 //
 // Between samples a receiver's cut is interpolated (math/cut_merge.h) from the eight samples
 // around it: the two spheres bracketing its distance (linear in log radius) times the 2 × 2

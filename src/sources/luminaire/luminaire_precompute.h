@@ -1,8 +1,7 @@
-// The luminaires' precompute (Dobashi et al. 1995 §3, with exact direct light,
-// docs/design-notes.md "Direct light is geometry"): per luminaire the exact-direct geometry
-// toward every receiver, and the response to each SH basis intensity distribution Y_k (world
-// frame, l < sh_order) — its direct irradiance as K bounced columns, its interreflection
-// taken back after the shared bounce solve.
+// The luminaires' precompute (Dobashi et al. 1995 §3, with exact direct light, docs/decisions.md
+// "Direct light is geometry"): per luminaire the exact-direct geometry toward every receiver, and
+// the response to each SH basis intensity distribution Y_k (world frame, l < sh_order) — its direct
+// irradiance as K bounced columns, its interreflection taken back after the shared bounce solve.
 #pragma once
 
 #include <string>

@@ -24,10 +24,10 @@ struct LuminaireBlockBytes {
   std::size_t indirect = 0, direct_sh = 0;
 };
 
-// `photometry[j]`: the file text of luminaire j, empty when it has none. The writer keeps
-// spans into both until it writes. On one of several ranks (issue 19; collective), rank 0's
-// writer gathers the blocked sections from every rank as it writes them, and the others call
-// send_luminaire_sections in the same order (engine/transfer_sections.h).
+// `photometry[j]`: the file text of luminaire j, empty when it has none. The writer keeps spans
+// into both until it writes. On one of several ranks (collective), rank 0's writer gathers the
+// blocked sections from every rank as it writes them, and the others call send_luminaire_sections
+// in the same order (engine/transfer_sections.h).
 void write_luminaire_sections(RltWriter& writer, std::span<const LuminaireTransfer> luminaires,
                               std::span<const std::string> photometry, const RankShares& ranks,
                               const LuminaireBlockBytes& block);

@@ -3,8 +3,8 @@
 // frame), which weight the precomputed responses to the basis distributions Y_lm(ω).
 //
 // Dobashi, Kaneda, Nakatani, Yamashita, Nishita, "A Quick Rendering Method Using Basis
-// Functions for Interactive Lighting Design", CGF 1995 (Dobashi et al. 1995); ARCHITECTURE §4.5
-// ("rotation, not recomputation"):
+// Functions for Interactive Lighting Design", CGF 1995 (Dobashi et al. 1995); a distribution is
+// projected once in its own frame and aimed by rotation, not recomputation:
 //  * Axisymmetric distributions (isotropic, cosine power, curve, webs whose C planes are all
 //    equal): Legendre weights w_l of Eq. 2-3 by composite Simpson (Eq. 19), windowed per band
 //    (Eq. 12-13 sigma factor or an alternative of math/sh_window.h), aimed by the addition

@@ -1,7 +1,7 @@
 // Full SH projection of a measured type-C web (IES / EULUMDAT) in the luminaire's own
 // right-handed frame: the general case of Dobashi et al. 1995 §3.2, where the
-// distribution depends on C as well as γ and the addition theorem (Eq. 7-10) no longer
-// suffices; it is aimed afterwards by a general SH rotation (ARCHITECTURE §4.5).
+// distribution depends on C as well as γ and the addition theorem (Eq. 7-10) no longer suffices; it
+// is aimed afterwards by a general SH rotation, not projected again.
 //
 // What is projected is the web's own interpolant (light/photometric_web.h: bilinear in
 // (C, γ), periodic in C, zero outside the measured γ range), so the l = 0 term reproduces
@@ -22,9 +22,8 @@
 //    240 × 480 sphere rule for every C-dependent file in luminaire_sh_files_test.cpp).
 // The flux (l = 0) of the shared IES/LDT files comes out within 1e-14 of flux_lm().
 // Cost: (C cells)·order per row for the Fourier sums plus (γ nodes)·order² for the Legendre
-// sums: ≈ 0.1 ms for a 145 × 37 web at order 8, ≈ 0.3 ms at order 16 — cheaper than the
-// generic product rule with ≥ 2·(γ resolution) nodes × uniform φ, and exact where that one
-// is not.
+// sums, cheaper than the generic product rule with ≥ 2·(γ resolution) nodes × uniform φ
+// (measured: docs/decisions.md), and exact where that one is not.
 #pragma once
 
 #include <vector>

@@ -43,8 +43,8 @@ IncidentRadiance sample_incident_radiance(Vec3 x, const RayTracer& emitters,
                                           const RayTracer* occluders,
                                           const IncidentRadianceSettings& settings);
 
-// |l| of the oracle (Eq. 3.3): the Euclidean norm of the coefficient vector, of each
-// coefficient's luminance (ARCHITECTURE §4.4: Y of linear Rec.709).
+// |l| of the oracle (Eq. 3.3): the Euclidean norm of the coefficient vector, of each coefficient's
+// luminance (Y of linear Rec.709).
 double sh_luminance_norm(std::span<const Rgb> sh);
 
 }  // namespace relight

@@ -2,10 +2,10 @@
 // transfer t_k = ∫ V max(0, n·ω) Y_k dω (world frame, l < nearfield_sh_order). With
 // "nearfield_interreflection" the precompute also keeps the gather operator (sources/precompute.h),
 // and the run time bounces the emitters' direct field through it
-// (sources/nearfield/emitter_lighting.h): bouncing the SH columns instead, as issue 5 did, assumes
-// the same incident radiance at every surface — the distant-light assumption that near-field
-// emitters break (a ceiling above a downward panel got no interreflected light at all). Nothing is
-// stored without emitters.
+// (sources/nearfield/emitter_lighting.h): bouncing the SH columns instead would assume the same
+// incident radiance at every surface — the distant-light assumption that near-field emitters break
+// (a ceiling above a downward panel would get no interreflected light at all). Nothing is stored
+// without emitters.
 #pragma once
 
 #include <cstdint>

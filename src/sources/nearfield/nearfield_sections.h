@@ -15,9 +15,9 @@
 
 namespace relight {
 
-// The writer keeps spans into `nearfield` until it writes. On several ranks (issue 19;
-// collective) rank 0 gathers the transfer's rows as it writes, and the others call
-// send_nearfield_sections in the same order.
+// The writer keeps spans into `nearfield` until it writes. On several ranks (collective) rank 0
+// gathers the transfer's rows as it writes, and the others call send_nearfield_sections in the same
+// order.
 void write_nearfield_sections(RltWriter& writer, const NearfieldTransfer& nearfield,
                               const RankShares& ranks);
 void send_nearfield_sections(const NearfieldTransfer& nearfield, const RankShares& ranks);

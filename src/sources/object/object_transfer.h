@@ -1,7 +1,7 @@
-// How movable objects change the light every receiver gathers (issue 12), traced at run time
-// whenever an object moves. The room's stored gather operator G (engine/gather_operator.h)
-// holds where cosine-distributed rays from each receiver land in the empty room; an object
-// placed in it changes only the rays that meet it, so only those are traced:
+// How movable objects change the light every receiver gathers, traced at run time whenever an
+// object moves. The room's stored gather operator G (engine/gather_operator.h) holds where
+// cosine-distributed rays from each receiver land in the empty room; an object placed in it changes
+// only the rays that meet it, so only those are traced:
 //
 //  * room receivers (vertices and sensors): for each visible object, rays uniformly over the
 //    cone of the object's bounding sphere (all of the hemisphere when the receiver is inside
@@ -24,14 +24,13 @@
 // column V + q.
 //
 // Iwasaki et al. 2007 instead make each object a secondary source from PCA basis radiance
-// fields on concentric spheres (§3.1, §4.2–4.3) and shadow the room with occlusion fields;
-// why relight traces instead, and the measurements, are in docs/design-notes.md ("Movable
-// objects"). Rows of vertices far from an object are not traced but interpolated from
-// sparse proxy vertices (receiver_proxies.h), which stands in for the paper's fields where
-// they are smooth. The paper's culling of small contributions (§5.4) is kept: a receiver spends
-// rays on an object in proportion to the object's cosine-weighted share of its hemisphere,
-// and none when that share is below `cull`. Pinned by
-// tests/runtime/object_transfer_test.cpp.
+// fields on concentric spheres (§3.1, §4.2–4.3) and shadow the room with occlusion fields; why
+// relight traces instead, and the measurements, are in docs/decisions.md ("Movable objects"). Rows
+// of vertices far from an object are not traced but interpolated from sparse proxy vertices
+// (receiver_proxies.h), which stands in for the paper's fields where they are smooth. The paper's
+// culling of small contributions (§5.4) is kept: a receiver spends rays on an object in proportion
+// to the object's cosine-weighted share of its hemisphere, and none when that share is below
+// `cull`. Pinned by tests/runtime/object_transfer_test.cpp.
 #pragma once
 
 #include <cstdint>

@@ -1,11 +1,11 @@
-// Proxies for vertices far from a movable object (issue 12). What an object changes in a
-// room vertex's gather — the light it reflects there and the light it hides — varies over a
-// length of the order of the vertex's distance to it: far from the object it is smooth, and
-// tracing every vertex's rays there is wasted. Iwasaki et al. 2007 make it cheap with radiance
-// fields on concentric spheres around each object (§3.1); relight keeps its traced rows near
-// the object and, farther than a few proxy spacings, interpolates them from a sparse set of
-// proxy vertices — the way irradiance caching (Ward, Rubinstein, Clear 1988, §2) reuses a sparse
-// set of gathers over smooth indirect light.
+// Proxies for vertices far from a movable object. What an object changes in a room vertex's
+// gather — the light it reflects there and the light it hides — varies over a length of the order
+// of the vertex's distance to it: far from the object it is smooth, and tracing every vertex's rays
+// there is wasted. Iwasaki et al. 2007 make it cheap with radiance fields on concentric spheres
+// around each object (§3.1); relight keeps its traced rows near the object and, farther than a few
+// proxy spacings, interpolates them from a sparse set of proxy vertices — the way irradiance
+// caching (Ward, Rubinstein, Clear 1988, §2) reuses a sparse set of gathers over smooth indirect
+// light.
 //
 // The objects' vertices likewise, each object apart: a rigid move keeps its proxies and weights.
 //

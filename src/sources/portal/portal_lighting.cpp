@@ -92,7 +92,7 @@ void update_portal_lighting(PortalLighting& lighting, std::uint32_t index,
   // of the whole shell a bright feature there — a sun behind the building, a bright map
   // region — rings into the directions that do pass and lights the room through the indirect
   // transfer (a map of high contrast through a window: floor error against the reference
-  // 4.4 % mean, 16 % worst unmasked; see docs/design-notes.md).
+  // 4.4 % mean, 16 % worst unmasked; see docs/decisions.md).
   inputs.sh_outward_half = true;
   // A sun in front of clear glass is traced exactly (portal_sun.h), not put into the shell.
   const std::optional<SunDisc>& sun = environment.sun();

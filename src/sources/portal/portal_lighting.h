@@ -1,15 +1,15 @@
-// The run-time side of one portal (Yue et al. 2009 §5, issue 4 item 4): from the
-// portal's lighting state (environment, window tint, frost, where the exterior objects are)
-// to the two things the weighted sum needs — the shell's radiance cubemap in pulse (as texels
-// and as planes for the runs) and Haar form for the direct component (a sparse dot product per
-// receiver, the paper's Appendix Eq. 7), and the shell's SH coefficients times colour as weights of
-// the stored indirect responses. Rebuilt only when the portal's state changes.
+// The run-time side of one portal (Yue et al. 2009 §5): from the portal's lighting state
+// (environment, window tint, frost, where the exterior objects are) to the two things the weighted
+// sum needs — the shell's radiance cubemap in pulse (as texels and as planes for the runs) and Haar
+// form for the direct component (a sparse dot product per receiver, the paper's Appendix Eq. 7),
+// and the shell's SH coefficients times colour as weights of the stored indirect responses. Rebuilt
+// only when the portal's state changes.
 //
-// Behind clear glass the sun is not in the shell (issue 21): it is traced exactly at every
-// receiver (sources/portal/portal_sun.h), and its interreflection is that exact direct light
-// bounced at run time through the stored gather operator (engine/runtime_scene.h) — a sharp
-// patch and the light it throws, where the shell's 2.8° cell and l < 6 SH smeared both.
-// Behind frosted glass the sun stays in the shell, which spreads it (shell_frost.h).
+// Behind clear glass the sun is not in the shell: it is traced exactly at every receiver
+// (sources/portal/portal_sun.h), and its interreflection is that exact direct light bounced at run
+// time through the stored gather operator (engine/runtime_scene.h) — a sharp patch and the light it
+// throws, which the shell's 2.8° cell and l < 6 SH would smear. Behind frosted glass the sun stays
+// in the shell, which spreads it (shell_frost.h).
 #pragma once
 
 #include <optional>

@@ -44,8 +44,8 @@ namespace {
 
 enum class RecordPart { records, sizes };
 
-// Several ranks (issue 19; collective): each rank's blocks of cubemap records, or their
-// records' sizes, to rank 0's `sink` in file order (each rank holds its own, engine/ranks.h).
+// Several ranks (collective): each rank's blocks of cubemap records, or their records' sizes, to
+// rank 0's `sink` in file order (each rank holds its own, engine/ranks.h).
 void gather_cubemap_records(const PortalDirect& direct, const RankShares& ranks, RecordPart part,
                             const RecordSink* sink) {
   // Records of ~300 bytes: 64 receivers a block, a few MB a round.

@@ -20,10 +20,9 @@
 
 namespace relight {
 
-// The writer keeps spans into `portals` until it writes.
-// On one of several ranks (issue 19; collective), the indirect transfer ("PI", blocks of
-// `indirect_block_bytes`) is gathered from every rank as rank 0 writes it; the others call
-// send_portal_sections in the same order.
+// The writer keeps spans into `portals` until it writes. On one of several ranks (collective), the
+// indirect transfer ("PI", blocks of `indirect_block_bytes`) is gathered from every rank as rank 0
+// writes it; the others call send_portal_sections in the same order.
 void write_portal_sections(RltWriter& writer, std::span<const PortalTransfer> portals,
                            const RankShares& ranks, std::size_t indirect_block_bytes);
 void send_portal_sections(std::span<const PortalTransfer> portals, const RankShares& ranks,

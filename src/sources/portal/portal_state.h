@@ -16,7 +16,7 @@ namespace relight {
 // moved by `translate`; hidden when not visible.
 using ExteriorPlacement = MovablePlacement;
 
-// What a window shows and how its glass changes it (issue 4, Yue et al. 2009 §5).
+// What a window shows and how its glass changes it (Yue et al. 2009 §5).
 struct PortalState {
   EnvironmentSpec environment;
   Rgb tint{1, 1, 1};

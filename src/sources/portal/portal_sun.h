@@ -1,14 +1,13 @@
-// The sun through a window, exact at any point (issue 21). The shell (sources/portal/shell.h)
-// would put the sun's 0.53° disc into one 2.8° cubemap cell and, for the indirect light, into
-// SH of l < 6: at receivers the sun patch's edges smeared over about a quarter of a metre.
-// Behind clear glass the sun is instead traced from every point that needs it — vertices
-// and sensors when the sun moves (sources/portal/portal_lighting.h), pixels in
-// `render --direct pixel` — the way `relight reference` traces it (render/reference_portals.h):
-// a direction of the disc counts when its ray from the point leaves the room through this
-// portal (the first glass it crosses is this portal's) and meets no opaque surface on the
-// way nor past the window — the room's geometry, overhangs and neighbours in `geometry`
-// (the paper's backward occlusion, Yue et al. 2009 §4.1.2), and the exterior objects as the
-// state places them.
+// The sun through a window, exact at any point. The shell (sources/portal/shell.h) would put the
+// sun's 0.53° disc into one 2.8° cubemap cell and, for the indirect light, into SH of l < 6: at
+// receivers the sun patch's edges would smear over about a quarter of a metre. Behind clear glass
+// the sun is instead traced from every point that needs it — vertices and sensors when the sun
+// moves (sources/portal/portal_lighting.h), pixels in `render --direct pixel` — the way `relight
+// reference` traces it (reference/reference_portals.h): a direction of the disc counts when its ray
+// from the point leaves the room through this portal (the first glass it crosses is this portal's)
+// and meets no opaque surface on the way nor past the window — the room's geometry, overhangs and
+// neighbours in `geometry` (the paper's backward occlusion, Yue et al. 2009 §4.1.2), and the
+// exterior objects as the state places them.
 //
 //     E = E_sun,n · tint · f · max(0, n · s),
 // f the fraction of the disc seen that way, found by light/disc_visibility.h (9 directions, 80

@@ -1,5 +1,5 @@
-// sources/nearfield/nearfield_lighting.h — the acceptance in kind, on receivers spread over
-// a sphere (an object in the open; 0.5 m, and 2 cm for the point light):
+// sources/nearfield/nearfield_lighting.h — the near-field acceptance in kind, on receivers spread
+// over a sphere (an object in the open; 0.5 m, and 2 cm for the point light):
 //  * a single small isotropic emitter far away is reconstructed at every receiver as the
 //    closed-form SH projection of a point light, (I/d_p²) Y_k(ω_p), within 1 %;
 //  * near emitters: at equal sample counts the adaptive method's RMSE is below ICP's;
@@ -170,7 +170,7 @@ TEST(NearfieldLighting, APanelOverATableIsRefinedAndBeatsIcpAtEveryEpsilon) {
   const double truth_rms = std::sqrt(truth_sq / static_cast<double>(truth.sh.size()));
   ASSERT_GT(truth_rms, 0);
   std::vector<double> rmse;
-  // ε from the range (1 … 0.001, where the one-sided panel gave one sample) and above
+  // ε from the acceptance range (1 … 0.001, where the one-sided panel gave one sample) and above
   // it, where the oracle still decides (its values next to the panel reach hundreds).
   for (const double e : {3000.0, 1000.0, 300.0, 100.0, 1.0, 0.001}) {
     const NearfieldResult adaptive =

@@ -689,7 +689,7 @@ TEST(CubemapEncoding, RejectsBadInputAndMalformedRecords) {
                InputError);
 }
 
-// The sizes issue 4 asks to report, at the default N = 32: a receiver 8 m from a 1 m window
+// The record sizes reported, at the default N = 32: a receiver 8 m from a 1 m window
 // (a 2 × 2 rectangle of cells, four bytes under pulse), 1 m from a 2 m × 2 m window (runs: the
 // window's patch is far from rectangular on the faces so near), under an open sky (runs, two
 // bytes under rectangles; Haar is smaller only with a threshold).
