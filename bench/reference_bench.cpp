@@ -10,7 +10,7 @@
 #include "light/luminaire_frame.h"
 #include "math/frame.h"
 #include "math/sampling.h"
-#include "render/reference_tracer.h"
+#include "reference/reference_tracer.h"
 #include "scene/scene_loader.h"
 #include "trace/traced_scene.h"
 

@@ -24,12 +24,12 @@
 // for every luminaire, engine/glossy_first_bounce.h), or with --aim every luminaire turned
 // 1° about its C0 axis, back and forth (its exact direct light, its transfer rotated and, on
 // glossy surfaces, its first glossy bounce made again); only the kind of source that changed
-// is summed again (runtime/relighter.h), or with --environment the top-level environment
-// (issue 15: as --sky does to a window's; clustered on the cuts' tree, every receiver's cut
-// summed, bounced, and with movable objects their shadows and light through the cuts; with
-// environment_ms, bounce_ms, objects_ms, and view_ms: the glossy vertices shaded toward an
-// eye that moves a centimetre a frame, the viewpoint change). With --optimize TARGETS.json:
-// `relight optimize` timed against a relight of the whole scene (ratio_to_relight).
+// is summed again (runtime/relighter.h), or with --environment the top-level environment (as --sky
+// does to a window's; clustered on the cuts' tree, every receiver's cut summed, bounced, and with
+// movable objects their shadows and light through the cuts; with environment_ms, bounce_ms,
+// objects_ms, and view_ms: the glossy vertices shaded toward an eye that moves a centimetre a
+// frame, the viewpoint change). With --optimize TARGETS.json: `relight optimize` timed against a
+// relight of the whole scene (ratio_to_relight).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -45,7 +45,7 @@
 #include "cli/commands.h"
 #include "common/input_error.h"
 #include "design/optimize.h"
-#include "engine/material_reflectance.h"
+#include "material/material_reflectance.h"
 #include "math/mat3.h"
 #include "render/relit_scene_image.h"
 #include "runtime/relit_scene.h"
@@ -362,7 +362,7 @@ int run_bench(const BenchArgs& args) {
                          {"ratio", effective / streaming},
                          {"fps", 1e3 / frame_ms}};
   if (args.sky) {
-    // The weighted sum alone (issue 18: the window sum at the streaming rate): each frame less
+    // The weighted sum alone (to compare the window sum with the streaming rate): each frame less
     // its shells and suns, its bytes against the same streaming read.
     std::vector<double> sum_ms;
     for (std::size_t i = 0; i < frame_times.size(); ++i) {

@@ -1,7 +1,7 @@
 // `relight precompute SCENE.json -o SCENE.rlt`: the expensive step, once per static
-// scene; prints a summary of rays, rates, time per phase and bytes stored. Under an MPI
-// launcher (`mpirun -n N relight precompute …`, issue 19) the ranks share the work and rank 0
-// writes the same file one process would (engine/ranks.h).
+// scene; prints a summary of rays, rates, time per phase and bytes stored. Under an MPI launcher
+// (`mpirun -n N relight precompute …`) the ranks share the work and rank 0 writes the same file one
+// process would (engine/ranks.h).
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -20,7 +20,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.h"
-#include "cli/mpi_ranks.h"
+#include "engine/mpi_ranks.h"
 #include "cli/precompute_run.h"
 #include "common/input_error.h"
 #include "common/memory.h"
@@ -208,7 +208,7 @@ void precompute_and_write(const Scene& scene, const nlohmann::json& document,
             double(std::max<std::size_t>(1, p.receivers.size())));
   }
   if (!p.cuts.empty()) {
-    // The cuts' sizes (issue 15): height encoded as stored, and with 2-byte node indices.
+    // The cuts' sizes: height encoded as stored, and with 2-byte node indices.
     const HeightCutsView svc = p.cuts.self_visibility.view();
     const double receivers = static_cast<double>(std::max<std::size_t>(1, p.receivers.size()));
     std::printf(
@@ -270,12 +270,12 @@ void run_precompute(const nlohmann::json& document, const std::filesystem::path&
 
 namespace {
 
-// `mpirun -n N relight precompute` (issue 19). What can fail on some ranks and not others
-// before the ranks exchange anything (the scene read, the output folder checked on rank 0, which
-// writes, each rank's share of memory) is agreed (engine/ranks.h agree_on_failure): on a failure
-// rank 0 reports the first failing rank's error once and every rank exits 2. A failure after that
-// (out of memory, a rank's internal error) ends every rank through MPI_Abort, since the others may
-// be waiting in an exchange; only rank 0 writes, so no partial file is left at the output path.
+// `mpirun -n N relight precompute`. What can fail on some ranks and not others before the ranks
+// exchange anything (the scene read, the output folder checked on rank 0, which writes, each rank's
+// share of memory) is agreed (engine/ranks.h agree_on_failure): on a failure rank 0 reports the
+// first failing rank's error once and every rank exits 2. A failure after that (out of memory, a
+// rank's internal error) ends every rank through MPI_Abort, since the others may be waiting in an
+// exchange; only rank 0 writes, so no partial file is left at the output path.
 int run_precompute_on_ranks(const PrecomputeArgs& args, PrecomputeOptions options) {
   MpiRanks mpi;
   // The ranks on one machine share its cores (RELIGHT_THREADS, when set, caps it further).

@@ -16,11 +16,11 @@
 #include "common/input_error.h"
 #include "light/environment_map_io.h"
 #include "light/luminaire_frame.h"
-#include "render/reference_tracer.h"
+#include "reference/reference_tracer.h"
 #include "render/sensor_report.h"
 #include "runtime/lighting_state.h"
 #include "scene/scene_loader.h"
-#include "sources/nearfield/emitter_placement.h"
+#include "light/emitter_placement.h"
 #include "sources/portal/portal_lighting.h"
 #include "trace/traced_scene.h"
 

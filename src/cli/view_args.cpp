@@ -3,7 +3,7 @@
 #include <CLI/CLI.hpp>
 
 #include "common/input_error.h"
-#include "render/camera.h"
+#include "scene/camera.h"
 
 namespace relight {
 

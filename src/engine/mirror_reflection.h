@@ -1,27 +1,26 @@
-// The image of a point light in the near-mirror planes (engine/mirror_planes.h) at every
-// receiver, at run time (issue 13, the mirror limit). For a light at p and a plane in front
-// of which both p and receiver x lie, the light's image p' reaches x along the segment x–p'
-// where it first meets the plane, at y, when nothing blocks x–y or y–p:
+// The image of a point light in the near-mirror planes (material/mirror_planes.h) at every
+// receiver, at run time (the mirror limit: roughness near 0). For a light at p and a plane in front
+// of which both p and receiver x lie, the light's image p' reaches x along the segment x–p' where
+// it first meets the plane, at y, when nothing blocks x–y or y–p:
 //     E_x = I(p → y) · cos θ_x / |x − p'|² · E_s(cos θ_y),
 // (for the sun, parallel light of normal illuminance E_⊥: E_x = E_⊥(y) · cos θ_x · E_s(cos θ_y)),
 // I the light's intensity toward y, θ_x the angle of the arrival at x, |x − p'| the unfolded
 // path, E_s the mirror's specular directional albedo at the incidence θ_y (for a perfect
 // mirror the Fresnel factor F(θ_y); material/metallic_roughness.h) — the image-source form
-// I(γ) cos θ / d² · F the issue's mirror-limit test checks. The diffuse layer of such a mirror
-// still reflects through the gather operator (engine/glossy_first_bounce.h).
+// I(γ) cos θ / d² · F that tests/cli/mirror_limit_test.cpp checks. The diffuse layer of such a
+// mirror still reflects through the gather operator (engine/glossy_first_bounce.h).
 //
 // A path is traced once per light position and material state (a ray x → p' that must hit the
 // plane's own triangles, and a shadow ray y → p) and kept as a record; the light's aim and
-// photometry only change I, evaluated per record. Moved objects do not block a traced path
-// (issue 12's objects shadow the room's own light only). Pinned by
-// tests/engine/mirror_reflection_test.cpp.
+// photometry only change I, evaluated per record. Moved objects do not block a traced path (movable
+// objects shadow the room's own light only). Pinned by tests/engine/mirror_reflection_test.cpp.
 #pragma once
 
 #include <cstdint>
 #include <span>
 #include <vector>
 
-#include "engine/mirror_planes.h"
+#include "material/mirror_planes.h"
 #include "engine/runtime_scene.h"
 #include "material/metallic_roughness.h"
 #include "math/vec3.h"

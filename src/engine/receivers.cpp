@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "engine/material_reflectance.h"
+#include "material/material_reflectance.h"
 
 namespace relight {
 

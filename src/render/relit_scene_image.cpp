@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <optional>
 
-#include "engine/material_reflectance.h"
+#include "material/material_reflectance.h"
 #include "material/lambert.h"
 #include "render/glossy_pixels.h"
 #include "render/pixel_direct.h"

@@ -9,7 +9,7 @@
 #include <span>
 #include <vector>
 
-#include "render/camera.h"
+#include "scene/camera.h"
 #include "render/vertex_shading.h"
 #include "runtime/relit_scene.h"
 

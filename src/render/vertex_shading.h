@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "image/image.h"
-#include "render/camera.h"
+#include "scene/camera.h"
 #include "scene/triangle_soup.h"
 #include "trace/ray_tracer.h"
 
@@ -33,15 +33,15 @@ struct VertexShadingInput {
   // When set, a ray that meets no surface shows this luminance (the view out of a window:
   // the portal's shell); its illuminance stays NaN.
   std::function<Rgb(Vec3 origin, Vec3 dir)> background;
-  // With direct_at_hit, when set: the luminance a glossy surface sends toward the eye (issue
-  // 13; render/glossy_pixels.h) at a hit on `triangle` (at barycentrics `bary` of its three
-  // vertices) seen from direction v (unit, toward the eye) — the pixel's luminance instead of
-  // ρ/π E — or nothing for a Lambertian triangle.
+  // With direct_at_hit, when set: the luminance a glossy surface sends toward the eye
+  // (render/glossy_pixels.h) at a hit on `triangle` (at barycentrics `bary` of its three vertices)
+  // seen from direction v (unit, toward the eye) — the pixel's luminance instead of ρ/π E — or
+  // nothing for a Lambertian triangle.
   std::function<std::optional<Rgb>(std::uint32_t triangle, const std::array<double, 3>& bary,
                                    Vec3 point, Vec3 normal, Vec3 v)>
       glossy_radiance;
-  // Without direct_at_hit, when set (3 per vertex): the luminance each vertex sends toward the
-  // eye, interpolated instead of ρ/π E where it is not NaN (glossy vertices, issue 13).
+  // Without direct_at_hit, when set (3 per vertex): the luminance each vertex sends toward the eye,
+  // interpolated instead of ρ/π E where it is not NaN (glossy vertices).
   std::span<const float> vertex_luminance;
 };
 

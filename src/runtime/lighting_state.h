@@ -13,7 +13,7 @@
 
 #include "scene/scene.h"
 #include "sources/luminaire/luminaire_state.h"
-#include "sources/nearfield/emitter_state.h"
+#include "light/emitter_state.h"
 #include "sources/portal/portal_state.h"
 
 namespace relight {
@@ -23,11 +23,11 @@ struct LightingState {
   std::vector<PortalState> portals;        // scene order
   std::vector<EmitterState> emitters;      // scene order
   std::vector<MovablePlacement> objects;   // movable objects, scene order
-  // The scene's materials with the state's edits (albedo, metallic, roughness; issue 13),
-  // scene order. Window glass is not edited here (its look is its portal's tint and frost).
+  // The scene's materials with the state's edits (albedo, metallic, roughness), scene order. Window
+  // glass is not edited here (its look is its portal's tint and frost).
   std::vector<Material> materials;
-  // The top-level environment (issue 15): swapped, rotated or its sky changed; present exactly
-  // when the scene has one.
+  // The top-level environment: swapped, rotated or its sky changed; present exactly when the scene
+  // has one.
   std::optional<EnvironmentSpec> environment;
 };
 

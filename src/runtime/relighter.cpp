@@ -8,7 +8,7 @@
 #include <tbb/parallel_for.h>
 
 #include "common/input_error.h"
-#include "engine/material_reflectance.h"
+#include "material/material_reflectance.h"
 #include "engine/transfer_blocks.h"
 
 namespace relight {

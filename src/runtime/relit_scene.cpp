@@ -4,6 +4,7 @@
 
 #include "engine/receivers.h"
 #include "material/lambert.h"
+#include "runtime/window_view.h"
 
 namespace relight {
 
@@ -58,6 +59,25 @@ std::vector<Rgb> RelitScene::sensor_rows(std::span<const float> per_receiver) co
     out.push_back({per_receiver[r], per_receiver[r + 1], per_receiver[r + 2]});
   }
   return out;
+}
+
+std::vector<Rgb> RelitScene::window_radiance() const {
+  std::vector<Rgb> out;
+  out.reserve(transfer_->view.portals.size());
+  for (std::size_t p = 0; p < transfer_->view.portals.size(); ++p) {
+    out.push_back(window_view_radiance(relighter_->shell(p), transfer_->view.portals[p].outward));
+  }
+  return out;
+}
+
+std::span<const float> RelitScene::object_albedo() const {
+  const ObjectLighting* objects = relighter_->objects();
+  return objects ? std::span<const float>(objects->placed().albedo) : std::span<const float>{};
+}
+
+std::span<const float> RelitScene::object_irradiance() const {
+  const ObjectLighting* objects = relighter_->objects();
+  return objects ? objects->irradiance(true) : std::span<const float>{};
 }
 
 std::vector<Rgb> RelitScene::sensor_irradiance() const {

@@ -63,6 +63,23 @@ class RelitScene {
   // receiver or per vertex).
   std::vector<float> vertex_radiance(std::span<const float> irradiance) const;
 
+  // What a viewer of the lit scene shows besides the irradiance: what each portal's glass
+  // shows looking out (runtime/window_view.h), in scene order; what the vertices reflect under
+  // the state's materials (3 per vertex); the movable objects' vertices' albedo and
+  // irradiance with direct light (3 per object vertex each, every object back to back in scene
+  // order; empty without objects).
+  std::vector<Rgb> window_radiance() const;
+  std::span<const float> vertex_albedo() const { return relighter_->vertex_albedo(); }
+  std::span<const float> object_albedo() const;
+  std::span<const float> object_irradiance() const;
+  // A material edit's approximate frame: n bounces of the edit's light until set back to −1
+  // (converged; Relighter::set_material_bounces).
+  void set_material_bounces(int bounces) { relighter_->set_material_bounces(bounces); }
+  // How many luminaire distributions the relighter has projected incrementally.
+  std::size_t incremental_curve_updates() const {
+    return relighter_->incremental_curve_updates();
+  }
+
   // Ray tracers over the stored mesh, built on first use: the opaque triangles (ids: the
   // triangle's index in the mesh), the portals' glass (ids: the portal's index), and every
   // triangle (ids: its index; for picking).

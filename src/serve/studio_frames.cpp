@@ -6,7 +6,6 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "engine/receivers.h"
 #include "material/lambert.h"
 #include "math/vec3.h"
 #include "serve/half_float.h"
@@ -131,9 +130,9 @@ void compute_frame_values(const TransferFile& t, std::span<const int> vertex_por
     }
     out.illuminance[v] = static_cast<float>(photometric(e));
   }
+  const std::span<const float> sensors = irradiance.subspan(3 * t.vertex_count);
   for (std::size_t s = 0; s < t.sensor_count; ++s) {
-    out.sensors[s] =
-        static_cast<float>(photometric(&irradiance[3 * sensor_receiver(t.vertex_count, s)]));
+    out.sensors[s] = static_cast<float>(photometric(&sensors[3 * s]));
   }
 }
 

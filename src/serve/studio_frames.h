@@ -13,8 +13,7 @@
 #include <vector>
 
 #include "math/rgb.h"
-#include "sources/object/object_mesh.h"
-#include "sources/transfer_file.h"
+#include "runtime/relit_scene.h"
 
 namespace relight {
 
@@ -42,16 +41,16 @@ struct FrameValues {
   std::vector<float> object_illuminance;  // 1 per object vertex, lx
 };
 
-// `irradiance`: 3 per receiver (vertices, then sensors) as the Relighter writes it;
+// `irradiance`: 3 per receiver (vertices, then sensors) as RelitScene::irradiance gives it;
 // `glass_radiance`: per portal, what its glass vertices show (the shell's mean radiance);
 // `vertex_albedo`: 3 per vertex, what the vertices reflect under the state's materials
-// (Relighter::vertex_albedo).
+// (RelitScene::vertex_albedo).
 void compute_frame_values(const TransferFile& transfer, std::span<const int> vertex_portal,
                           std::span<const float> irradiance, std::span<const Rgb> glass_radiance,
                           std::span<const float> vertex_albedo, FrameValues& out);
 
 // The objects' vertices' values from their albedo and irradiance (3 floats per object vertex
-// each: PlacedObjects::albedo, ObjectLighting::irradiance(true)). Throws
+// each: RelitScene::object_albedo, object_irradiance). Throws
 // std::invalid_argument when the two disagree in size.
 void compute_object_values(std::span<const float> albedo, std::span<const float> irradiance,
                            FrameValues& out);

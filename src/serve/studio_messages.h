@@ -17,8 +17,8 @@
 #include "light/epw_weather.h"
 #include "math/vec3.h"
 #include "runtime/annual_daylight.h"
-#include "sources/luminaire/distribution_profile.h"
-#include "sources/transfer_file.h"
+#include "runtime/luminaire_profile.h"
+#include "runtime/relit_scene.h"
 
 namespace relight {
 

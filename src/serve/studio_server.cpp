@@ -17,12 +17,12 @@
 #include "material/metallic_roughness.h"
 #include "render/relit_scene_image.h"
 #include "runtime/annual_daylight.h"
+#include "runtime/luminaire_profile.h"
 #include "runtime/relit_scene.h"
 #include "serve/static_files.h"
 #include "serve/studio_frames.h"
 #include "serve/studio_messages.h"
 #include "serve/transport/websocket_server.h"
-#include "serve/window_view.h"
 #include "trace/ray_tracer.h"
 
 namespace relight {
@@ -137,16 +137,11 @@ struct StudioServer::Impl {
   // Relights with `state` (the worker's relighter) and makes the frame.
   std::shared_ptr<const FrameValues> relight_values(const LightingState& state) {
     relit->apply(state);
-    std::vector<Rgb> glass;
-    for (std::size_t p = 0; p < scene().portals.size(); ++p) {
-      glass.push_back(
-          window_view_radiance(relit->relighter().shell(p), transfer().view.portals[p].outward));
-    }
     auto values = std::make_shared<FrameValues>();
-    compute_frame_values(transfer(), vertex_portal, relit->irradiance(), glass,
-                         relit->relighter().vertex_albedo(), *values);
-    if (const ObjectLighting* objects = relit->relighter().objects()) {
-      compute_object_values(objects->placed().albedo, objects->irradiance(true), *values);
+    compute_frame_values(transfer(), vertex_portal, relit->irradiance(), relit->window_radiance(),
+                         relit->vertex_albedo(), *values);
+    if (!relit->object_albedo().empty()) {
+      compute_object_values(relit->object_albedo(), relit->object_irradiance(), *values);
     }
     return values;
   }
@@ -184,9 +179,9 @@ struct StudioServer::Impl {
         // A material edit shows its first bounce at once, then the converged light
         // (runtime/relighter.h set_material_bounces); the state messages say which.
         if (relit->state().materials != p.state.materials) {
-          relit->relighter().set_material_bounces(0);
+          relit->set_material_bounces(0);
           show(p, shown_document, frame_number, false);
-          relit->relighter().set_material_bounces(-1);
+          relit->set_material_bounces(-1);
         }
         show(p, shown_document, frame_number, true);
         last_good = std::move(p.state);
@@ -194,7 +189,7 @@ struct StudioServer::Impl {
         for (const auto& [id, eye] : eyes) views_due.insert(id);
       } catch (const std::exception& e) {  // e.g. a map file that cannot be read
         send_json(p.client, error_message(p.seq, e.what()));
-        relit->relighter().set_material_bounces(-1);
+        relit->set_material_bounces(-1);
         try {
           relit->apply(last_good);
         } catch (const std::exception&) {  // it lit before: cannot fail again
@@ -214,7 +209,7 @@ struct StudioServer::Impl {
     const std::uint32_t number = frame_number + 1;
     const auto frame =
         std::make_shared<const std::string>(encode_frame(number, p.seq, ms.count(), *values));
-    incremental_updates = relit->relighter().incremental_curve_updates();
+    incremental_updates = relit->incremental_curve_updates();
     std::vector<std::string> profiles;
     for (std::size_t j = 0; j < scene().luminaires.size(); ++j) {
       const std::string& name = scene().luminaires[j].name;
@@ -265,8 +260,7 @@ struct StudioServer::Impl {
                                  int samples = kDefaultProfileSamples) const {
     const DistributionSpec& spec = state.luminaires.at(j).distribution;
     const int order = transfer().view.sh_order;
-    const DistributionProfile profile =
-        distribution_profile(load_distribution(spec), order, ShWindow::kSigma, samples);
+    const DistributionProfile profile = luminaire_profile(spec, order, samples);
     return distribution_message(seq, scene().luminaires[j], spec, profile, order,
                                 incremental_updates.load());
   }

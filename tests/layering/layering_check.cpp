@@ -66,6 +66,17 @@ std::vector<Stage> read_stages(const fs::path& cmake_lists) {
     names.push_back(library_name(s.folder));
     stages.push_back(std::move(s));
   }
+  const std::regex never(R"(\nrelight_stage_never_includes\(([^)]*)\))");
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), never); it != std::sregex_iterator();
+       ++it) {
+    std::istringstream words((*it)[1].str());
+    std::string folder, other;
+    words >> folder;
+    const auto stage = std::find_if(stages.begin(), stages.end(),
+                                    [&](const Stage& s) { return s.folder == folder; });
+    if (stage == stages.end()) throw std::runtime_error("never_includes names no stage: " + folder);
+    while (words >> other) stage->never_includes.push_back(other);
+  }
   return stages;
 }
 
@@ -130,6 +141,13 @@ std::vector<std::string> layering_violations(const fs::path& root) {
                       stages[static_cast<std::size_t>(own)].folder);
       } else if (theirs != own) {
         included[static_cast<std::size_t>(own)].insert(theirs);
+      }
+      const std::string& their_folder = stages[static_cast<std::size_t>(theirs)].folder;
+      for (const std::string& banned : stages[static_cast<std::size_t>(own)].never_includes) {
+        if (their_folder == banned || their_folder.rfind(banned + "/", 0) == 0) {
+          out.push_back(where + "includes \"" + header + "\" of stage " + their_folder + ", which " +
+                        stages[static_cast<std::size_t>(own)].folder + " never includes");
+        }
       }
     }
   }

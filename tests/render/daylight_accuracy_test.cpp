@@ -1,8 +1,8 @@
-// Issue 4 acceptance, run-time side: daylight through portals precomputed once and relit
-// from lighting states (scene_from_json → precompute_transfer → in_memory_view → Relighter),
-// against closed forms (black rooms: E = L·π·F, flux through the window) and against the
-// independent reference path tracer (grey rooms: uniform sky, an HDR map, the CIE overcast
-// sky, the sun patch at two dates). Every test prints its measured figures.
+// Daylight acceptance, run-time side: daylight through portals precomputed once and relit from
+// lighting states (scene_from_json → precompute_transfer → in_memory_view → Relighter), against
+// closed forms (black rooms: E = L·π·F, flux through the window) and against the independent
+// reference path tracer (grey rooms: uniform sky, an HDR map, the CIE overcast sky, the sun patch
+// at two dates). Every test prints its measured figures.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -18,7 +18,7 @@
 #include "light/environment_map_io.h"
 #include "light/luminaire_frame.h"
 #include "math/cubemap.h"
-#include "render/reference_tracer.h"
+#include "reference/reference_tracer.h"
 #include "runtime/lighting_state.h"
 #include "runtime/relighter.h"
 #include "scene/scene_loader.h"
@@ -337,10 +337,10 @@ FluxRoom flux(const json& state) {
 
 // Behind clear glass the sun is traced exactly at every receiver (sources/portal/portal_sun.h),
 // so the flux through the window is the closed form A·(πL/2 + E_sun·cos θ) with the sun's own
-// direction, within 0.5 % (issue 21). The sky part comes through the shell's cubemap. Before,
-// the shell put the sun into the one 32² cubemap cell holding it and the sun arrived from the
-// cell's direction (1.85° off here: +1.5 % of the sun's flux, +3.2 % of the total); the figure
-// with the cell's direction is printed beside it.
+// direction, within 0.5 %. The sky part comes through the shell's cubemap. A sun put into the one
+// 32² cubemap cell holding it would arrive from the cell's direction (1.85° off here: +1.5 % of
+// the sun's flux, +3.2 % of the total); the figure with the cell's direction is printed beside
+// it.
 TEST(DaylightAccuracy, ClearWindowFluxMatchesClosedForm) {
   const FluxRoom clear = flux(json::object());
   const double a = (kWindow.u1 - kWindow.u0) * (kWindow.v1 - kWindow.v0);

@@ -1,11 +1,11 @@
-// Issue 12 acceptance: movable objects (sources/object/object_lighting.h) moved, turned, hidden
-// and at their scene placement, against `relight reference` (render/reference_tracer.h, the
-// objects placed into the geometry by runtime/lighting_state.h scene_with_state) at 16384
-// samples per sensor and against a fresh precompute with the objects placed there statically;
-// energy conservation in a closed white room; and the paper's Figure 9 comparison (Iwasaki et
-// al. 2007 §6: a rendered image against the reference, RMS difference on the 0–1 display
-// scale). The room: 5 × 3 × 4 m, two IES downlights (a rectangular and a point opening), a
-// tall yellow cabinet and a blue table of two boxes. Every test prints its measured figures.
+// Acceptance of movable objects (sources/object/object_lighting.h): moved, turned, hidden and at
+// their scene placement, against `relight reference` (reference/reference_tracer.h, the objects
+// placed into the geometry by runtime/lighting_state.h scene_with_state) at 16384 samples per
+// sensor and against a fresh precompute with the objects placed there statically; energy
+// conservation in a closed white room; and the paper's Figure 9 comparison (Iwasaki et al. 2007 §6:
+// a rendered image against the reference, RMS difference on the 0–1 display scale). The room:
+// 5 × 3 × 4 m, two IES downlights (a rectangular and a point opening), a tall yellow cabinet and a
+// blue table of two boxes. Every test prints its measured figures.
 //
 // The luminaires' indirect light starts from their distribution in SH (Dobashi et al. 1995
 // Eq. 18): at the default l < 8 the point opening's 2200 cd peak, blurred by the window,
@@ -25,15 +25,15 @@
 #include <nlohmann/json.hpp>
 
 #include "light/luminaire_frame.h"
-#include "render/camera.h"
-#include "render/reference_tracer.h"
+#include "scene/camera.h"
+#include "reference/reference_tracer.h"
 #include "render/relit_scene_image.h"
 #include "render/tone_map.h"
 #include "runtime/lighting_state.h"
 #include "runtime/relighter.h"
 #include "runtime/relit_scene.h"
 #include "scene/scene_loader.h"
-#include "sources/nearfield/emitter_placement.h"
+#include "light/emitter_placement.h"
 #include "sources/precompute.h"
 #include "sources/transfer_file.h"
 #include "support/daylight_harness.h"

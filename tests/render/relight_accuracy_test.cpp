@@ -8,7 +8,7 @@
 
 #include "light/luminaire_frame.h"
 #include "render/pixel_direct.h"
-#include "render/reference_tracer.h"
+#include "reference/reference_tracer.h"
 #include "render/vertex_shading.h"
 #include "runtime/relighter.h"
 #include "scene/scene_loader.h"

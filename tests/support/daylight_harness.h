@@ -18,7 +18,7 @@
 #include "light/environment.h"
 #include "light/environment_map_io.h"
 #include "light/luminaire_frame.h"
-#include "render/reference_tracer.h"
+#include "reference/reference_tracer.h"
 #include "runtime/lighting_state.h"
 #include "runtime/relighter.h"
 #include "scene/scene_loader.h"

@@ -1,4 +1,4 @@
-// Direct light from a luminaire, precomputed as geometry only (ARCHITECTURE §4.2):
+// Direct light from a luminaire, precomputed as geometry only:
 // per receiver the unit direction ω from the luminaire's photometric centre and the
 // factor g = V · max(0, n·(−ω)) / d², V the visible fraction of the luminous opening (1 or
 // 0 for a point source). At run time E_direct = colour · dimmer · I(ω in the current
@@ -49,10 +49,6 @@ struct DirectFactor {
 // at each hit. `rays` counts the shadow rays cast.
 DirectFactor direct_factor(const Occluders& occluders, Vec3 p, Vec3 n, Vec3 luminaire_position,
                            const std::vector<Vec3>& opening_offsets, std::uint64_t& rays);
-
-// Keeps a shadow ray toward a luminaire from reaching the luminaire (or the surface it sits
-// on): the ray stops this far short of it, m.
-inline constexpr double kLightMargin = 1e-4;
 
 // direct_factor in its two parts, for callers that keep one tracer's visibility and trace
 // another's (movable objects, sources/object/object_lighting.h): the factor is the fraction

@@ -1,8 +1,8 @@
-// The exact direct light of near-field emitters at a point (issue 11: sensors and pixels get
-// it exactly, as luminaires' exact direct; vertices get Sun 2005's SH reconstruction). Each
-// emitter triangle is a uniform Lambertian area light of radiance L that emits from its front
-// side. Unoccluded, its irradiance on a plane of normal n at p is Lambert's polygon formula
-// over the triangle clipped to the plane's upper side,
+// The exact direct light of near-field emitters at a point (sensors and pixels get it exactly, as
+// luminaires' exact direct; vertices get Sun 2005's SH reconstruction). Each emitter triangle is a
+// uniform Lambertian area light of radiance L that emits from its front side. Unoccluded, its
+// irradiance on a plane of normal n at p is Lambert's polygon formula over the triangle clipped to
+// the plane's upper side,
 //     E = L/2 · |Σ_i Θ_i (n · γ_i)|,
 // Θ_i the angle subtended by edge i seen from p and γ_i the unit normal of the plane through p
 // and that edge — exact. Occlusion by the static scene is the visible fraction of the
@@ -14,7 +14,7 @@
 
 #include "math/rgb.h"
 #include "math/vec3.h"
-#include "sources/nearfield/emitter_placement.h"
+#include "light/emitter_placement.h"
 #include "trace/ray_tracer.h"
 
 namespace relight {

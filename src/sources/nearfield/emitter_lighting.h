@@ -1,12 +1,12 @@
-// The near-field emitters' run-time term (Sun 2005 Fig. 3.1, issue 11): for a placement of the
-// emitters, the incident radiance is sampled adaptively over the receiver BVH and
-// reconstructed at every receiver (sources/nearfield/nearfield_lighting.h) and shaded with the
-// stored shadowed transfer, E_r = Σ_k t_rk · l_rk; at sensors the exact area-light integral
+// The near-field emitters' run-time term (Sun 2005 Fig. 3.1): for a placement of the emitters, the
+// incident radiance is sampled adaptively over the receiver BVH and reconstructed at every receiver
+// (sources/nearfield/nearfield_lighting.h) and shaded with the stored shadowed transfer,
+// E_r = Σ_k t_rk · l_rk; at sensors the exact area-light integral
 // (sources/nearfield/emitter_direct.h) replaces it. With the stored gather operator this direct
 // field bounces through the scene (engine/bounce_solver.h, the precompute's own solver): the
-// interreflection of light that differs from surface to surface, which no precomputed SH
-// response can hold for emitters this near. Sampled and bounced again only when an emitter's
-// state changes.
+// interreflection of light that differs from surface to surface, which no precomputed SH response
+// can hold for emitters this near.
+// Sampled and bounced again only when an emitter's state changes.
 #pragma once
 
 #include <cstddef>
@@ -17,8 +17,8 @@
 #include "engine/runtime_scene.h"
 #include "engine/source_term.h"
 #include "scene/scene.h"
-#include "sources/nearfield/emitter_placement.h"
-#include "sources/nearfield/emitter_state.h"
+#include "light/emitter_placement.h"
+#include "light/emitter_state.h"
 #include "sources/nearfield/nearfield_lighting.h"
 #include "sources/nearfield/nearfield_transfer_view.h"
 #include "trace/ray_tracer.h"

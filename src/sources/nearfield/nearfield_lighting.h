@@ -1,8 +1,8 @@
-// Near-field lighting of a precomputed scene (issue 5, Sun 2005 Fig. 3.1): at run
-// time, with the emitters where the lighting state puts them, sample the incident radiance,
-// reconstruct its SH vector l_p at every receiver and shade E_p = t_p · l_p with the stored
-// transfer (its interreflection: sources/nearfield/emitter_lighting.h). Three ways to choose
-// the samples, in the same code so they compare fairly:
+// Near-field lighting of a precomputed scene (Sun 2005 Fig. 3.1): at run time, with the emitters
+// where the lighting state puts them, sample the incident radiance, reconstruct its SH vector l_p
+// at every receiver and shade E_p = t_p · l_p with the stored transfer (its interreflection:
+// sources/nearfield/emitter_lighting.h). Three ways to choose the samples, in the same code so they
+// compare fairly:
 //  * adaptive — Sun 2005: the oracle-driven BVH traversal (Alg. 3.4, Eq. 3.3) and valid-domain
 //    reconstruction through the linear octree (§3.3.5, Eq. 2.13 with b = 1);
 //  * icp — the baseline it compares against (Sloan et al. 2002): `max_samples` points placed by
@@ -28,7 +28,7 @@
 #include <string>
 #include <vector>
 
-#include "sources/nearfield/emitter_placement.h"
+#include "light/emitter_placement.h"
 #include "sources/nearfield/incident_radiance.h"
 #include "sources/nearfield/incident_sample.h"
 #include "sources/nearfield/receiver_bvh.h"

@@ -10,7 +10,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
-#include "engine/material_reflectance.h"
+#include "material/material_reflectance.h"
 #include "sources/nearfield/emitter_direct.h"
 
 namespace relight {

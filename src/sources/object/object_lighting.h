@@ -1,7 +1,6 @@
-// The movable objects' run-time term (issue 12; Iwasaki et al. 2007 is the paper): furniture
-// that moves, turns, hides, casts shadows and bounces light, with no new precompute. The
-// precomputed transfer is that of the empty room; this term adds, in every output, what the
-// objects as placed change:
+// The movable objects' run-time term (Iwasaki et al. 2007 is the paper): furniture that moves,
+// turns, hides, casts shadows and bounces light, with no new precompute. The precomputed transfer
+// is that of the empty room; this term adds, in every output, what the objects as placed change:
 //
 //   E = E0 + ΔE   at room receivers (E0: every other term's light, direct included),
 //   E = E_q       at object vertices,
@@ -40,7 +39,7 @@
 #include "math/placement.h"
 #include "scene/scene.h"
 #include "sources/luminaire/luminaire_direct.h"
-#include "sources/nearfield/emitter_placement.h"
+#include "light/emitter_placement.h"
 #include "sources/object/object_mesh.h"
 #include "sources/object/object_transfer.h"
 #include "sources/portal/portal_sun.h"
@@ -97,7 +96,7 @@ class ObjectLighting {
   // moved object may; and the bounce always.
   void update(const ObjectLightInputs& inputs, bool light_changed);
   // Live material edits: the room's vertices reflect `room_albedo` (3 per vertex) and the
-  // objects' vertices their materials' (engine/material_reflectance.h; objects from files
+  // objects' vertices their materials' (material/material_reflectance.h; objects from files
   // without their vertices' materials keep theirs).
   void set_albedo(std::span<const float> room_albedo, std::span<const Material> materials);
   // The objects' glossy materials (the scene's or a state's): an object vertex of a glossy

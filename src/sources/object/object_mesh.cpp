@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "engine/material_reflectance.h"
+#include "material/material_reflectance.h"
 #include "engine/receivers.h"
 #include "scene/mesh_preparation.h"
 

@@ -1,4 +1,4 @@
-// The movable objects' meshes (issue 12): each object's triangles prepared as the room's are
+// The movable objects' meshes: each object's triangles prepared as the room's are
 // (welded, split to the scene's max_edge, crease-aware normals: scene/mesh_preparation.h), so
 // that its vertices receive and reflect light the way the room's vertices do, and placed where a
 // lighting state puts them (math/placement.h). Hidden objects keep their vertices (indices stay
@@ -27,7 +27,7 @@ struct ObjectMesh {
   std::vector<Vec3> positions, normals;  // per vertex; normals unit
   std::vector<Vec3> ray_points;          // where rays leave each vertex (receivers.h)
   std::vector<Triangle> triangles;
-  std::vector<float> albedo;  // 3 per vertex: what it bounces (engine/material_reflectance.h)
+  std::vector<float> albedo;  // 3 per vertex: what it bounces (material/material_reflectance.h)
   // Per vertex, its material (index into the scene's); empty for files from before OMAT.
   std::vector<std::uint32_t> vertex_material;
   // 3 per vertex: its base colour texture's value (scene/surface_texture.h); empty: none.

@@ -8,7 +8,7 @@
 
 #include "math/cubemap.h"
 #include "math/sh.h"
-#include "sources/portal/shell_environment.h"
+#include "light/environment_irradiance.h"
 
 namespace relight {
 

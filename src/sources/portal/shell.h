@@ -10,9 +10,9 @@
 //
 // Pipeline, in this order:
 //  1. Base: light/environment.h environment_cubemap of the environment's continuous part
-//     (sources/portal/shell_environment.h environment_without_sun); the sun disc's ∫ L dω deposited
+//     (light/environment_irradiance.h environment_without_sun); the sun disc's ∫ L dω deposited
 //     into the texel containing it (so with nothing else this is exactly environment_cubemap).
-//  2. Exterior (sources/portal/shell_exterior.h), when exterior objects are given: ray-cast from
+//  2. Exterior (light/exterior_objects.h), when exterior objects are given: ray-cast from
 //  the
 //     centre, k×k sub-rays per texel, shaded Lambertian under sun + R&H sky irradiance; the sun
 //     disc is deposited only when the ray from the centre toward it escapes the objects.
@@ -34,7 +34,7 @@
 #include "light/environment.h"
 #include "math/cubemap.h"
 #include "math/rgb.h"
-#include "sources/portal/shell_exterior.h"
+#include "light/exterior_objects.h"
 #include "sources/portal/shell_frost.h"
 
 namespace relight {

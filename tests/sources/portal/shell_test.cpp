@@ -14,7 +14,7 @@
 #include "light/sky_model.h"
 #include "math/cubemap.h"
 #include "math/sh.h"
-#include "sources/portal/shell_environment.h"
+#include "light/environment_irradiance.h"
 #include "sources/portal/shell_frost.h"
 
 namespace relight {
@@ -107,7 +107,7 @@ TEST(Shell, BaseShellIsTheEnvironmentCubemapWithTheSunDeposited) {
             1e-12);
 }
 
-// Without the sun disc (the run time traces the sun itself behind clear glass, issue 21) the
+// Without the sun disc (the run time traces the sun itself behind clear glass) the
 // shell is exactly the environment's continuous part: its cubemap and its SH hold no sun.
 TEST(Shell, WithoutTheSunDiscTheShellIsTheSkyAlone) {
   const Environment env = clear_sky(horizontal(100, 35));
