@@ -8,9 +8,9 @@
 #include <cstdint>
 #include <vector>
 
+#include "light/emitter_state.h"
 #include "math/rgb.h"
 #include "scene/scene.h"
-#include "light/emitter_state.h"
 
 namespace relight {
 

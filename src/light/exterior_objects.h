@@ -26,11 +26,11 @@
 #include <span>
 #include <vector>
 
+#include "light/environment_irradiance.h"
 #include "light/sky_model.h"
 #include "math/rgb.h"
 #include "math/vec3.h"
 #include "scene/triangle_soup.h"
-#include "light/environment_irradiance.h"
 #include "trace/ray_tracer.h"
 
 namespace relight {

@@ -13,10 +13,10 @@
 #include <cstdint>
 #include <vector>
 
+#include "light/emitter_placement.h"
 #include "math/rgb.h"
 #include "math/sampling.h"
 #include "reference/reference_weight.h"
-#include "light/emitter_placement.h"
 #include "trace/ray_tracer.h"
 
 namespace relight {

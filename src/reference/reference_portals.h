@@ -34,12 +34,12 @@
 #include <vector>
 
 #include "light/environment.h"
+#include "light/exterior_objects.h"
 #include "math/rgb.h"
 #include "math/sampling.h"
 #include "reference/reference_weight.h"
 #include "scene/mesh_preparation.h"
 #include "scene/scene.h"
-#include "light/exterior_objects.h"
 #include "trace/ray_tracer.h"
 #include "trace/traced_scene.h"
 

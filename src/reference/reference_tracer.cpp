@@ -11,8 +11,8 @@
 #include <tbb/parallel_for.h>
 
 #include "common/progress.h"
-#include "material/material_reflectance.h"
 #include "material/lambert.h"
+#include "material/material_reflectance.h"
 #include "math/frame.h"
 #include "math/sampling.h"
 #include "reference/reference_mirror.h"

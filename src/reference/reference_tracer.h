@@ -41,15 +41,15 @@
 #include <optional>
 #include <vector>
 
-#include "material/mirror_planes.h"
 #include "image/image.h"
 #include "light/environment_sampling.h"
 #include "light/luminaire_frame.h"
 #include "material/metallic_roughness.h"
+#include "material/mirror_planes.h"
 #include "math/rgb.h"
-#include "scene/camera.h"
 #include "reference/reference_emitters.h"
 #include "reference/reference_portals.h"
+#include "scene/camera.h"
 #include "scene/mesh_preparation.h"
 #include "scene/scene.h"
 #include "trace/traced_scene.h"

@@ -11,9 +11,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "light/emitter_state.h"
 #include "scene/scene.h"
 #include "sources/luminaire/luminaire_state.h"
-#include "light/emitter_state.h"
 #include "sources/portal/portal_state.h"
 
 namespace relight {

@@ -8,8 +8,8 @@
 #include <tbb/parallel_for.h>
 
 #include "common/input_error.h"
-#include "material/material_reflectance.h"
 #include "engine/transfer_blocks.h"
+#include "material/material_reflectance.h"
 
 namespace relight {
 

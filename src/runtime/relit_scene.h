@@ -76,9 +76,7 @@ class RelitScene {
   // (converged; Relighter::set_material_bounces).
   void set_material_bounces(int bounces) { relighter_->set_material_bounces(bounces); }
   // How many luminaire distributions the relighter has projected incrementally.
-  std::size_t incremental_curve_updates() const {
-    return relighter_->incremental_curve_updates();
-  }
+  std::size_t incremental_curve_updates() const { return relighter_->incremental_curve_updates(); }
 
   // Ray tracers over the stored mesh, built on first use: the opaque triangles (ids: the
   // triangle's index in the mesh), the portals' glass (ids: the portal's index), and every

@@ -67,8 +67,8 @@ std::vector<Stage> read_stages(const fs::path& cmake_lists) {
     stages.push_back(std::move(s));
   }
   const std::regex never(R"(\nrelight_stage_never_includes\(([^)]*)\))");
-  for (auto it = std::sregex_iterator(text.begin(), text.end(), never); it != std::sregex_iterator();
-       ++it) {
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), never);
+       it != std::sregex_iterator(); ++it) {
     std::istringstream words((*it)[1].str());
     std::string folder, other;
     words >> folder;
@@ -145,8 +145,9 @@ std::vector<std::string> layering_violations(const fs::path& root) {
       const std::string& their_folder = stages[static_cast<std::size_t>(theirs)].folder;
       for (const std::string& banned : stages[static_cast<std::size_t>(own)].never_includes) {
         if (their_folder == banned || their_folder.rfind(banned + "/", 0) == 0) {
-          out.push_back(where + "includes \"" + header + "\" of stage " + their_folder + ", which " +
-                        stages[static_cast<std::size_t>(own)].folder + " never includes");
+          out.push_back(where + "includes \"" + header + "\" of stage " + their_folder +
+                        ", which " + stages[static_cast<std::size_t>(own)].folder +
+                        " never includes");
         }
       }
     }

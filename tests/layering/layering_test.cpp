@@ -115,8 +115,8 @@ TEST(Layering, TheReferenceTracerIncludingTransferCodeIsCaught) {
 // The studio's back end reaches the lit scene through runtime/ only, never the transfer's
 // stages, although they come before it.
 TEST(Layering, TheStudioServerIncludingTransferCodeIsCaught) {
-  for (const std::string header : {"engine/receivers.h", "sources/portal/shell.h",
-                                   "sources/transfer_file.h"}) {
+  for (const std::string header :
+       {"engine/receivers.h", "sources/portal/shell.h", "sources/transfer_file.h"}) {
     const TreeCopy tree;
     tree.append("src/serve/studio_frames.cpp", "#include \"" + header + "\"\n");
     const std::vector<std::string> v = layering_violations(tree.dir.path());
@@ -133,8 +133,10 @@ TEST(Layering, TheStudioServerIncludingTransferCodeIsCaught) {
 
 TEST(Layering, ALinkToAStageThatIsNotIncludedIsCaught) {
   const TreeCopy tree;
-  tree.replace("CMakeLists.txt", "relight_stage(material relight_common relight_math relight_scene TBB::tbb)",
-               "relight_stage(material relight_common relight_math relight_scene TBB::tbb relight_image)");
+  tree.replace(
+      "CMakeLists.txt",
+      "relight_stage(material relight_common relight_math relight_scene TBB::tbb)",
+      "relight_stage(material relight_common relight_math relight_scene TBB::tbb relight_image)");
   const std::vector<std::string> v = layering_violations(tree.dir.path());
   ASSERT_EQ(v.size(), 1u) << joined(v);
   EXPECT_NE(v[0].find("material links image but includes nothing of it"), std::string::npos)
@@ -143,8 +145,10 @@ TEST(Layering, ALinkToAStageThatIsNotIncludedIsCaught) {
 
 TEST(Layering, ALinkToALaterStageIsCaught) {
   const TreeCopy tree;
-  tree.replace("CMakeLists.txt", "relight_stage(material relight_common relight_math relight_scene TBB::tbb)",
-               "relight_stage(material relight_common relight_math relight_scene TBB::tbb relight_trace)");
+  tree.replace(
+      "CMakeLists.txt",
+      "relight_stage(material relight_common relight_math relight_scene TBB::tbb)",
+      "relight_stage(material relight_common relight_math relight_scene TBB::tbb relight_trace)");
   const std::vector<std::string> v = layering_violations(tree.dir.path());
   ASSERT_EQ(v.size(), 1u) << joined(v);
   EXPECT_NE(v[0].find("material links relight_trace, no earlier stage"), std::string::npos) << v[0];
@@ -152,7 +156,8 @@ TEST(Layering, ALinkToALaterStageIsCaught) {
 
 TEST(Layering, AnIncludedStageThatIsNotLinkedIsCaught) {
   const TreeCopy tree;
-  tree.replace("CMakeLists.txt", "relight_stage(material relight_common relight_math relight_scene TBB::tbb)",
+  tree.replace("CMakeLists.txt",
+               "relight_stage(material relight_common relight_math relight_scene TBB::tbb)",
                "relight_stage(material relight_common relight_math TBB::tbb)");
   const std::vector<std::string> v = layering_violations(tree.dir.path());
   ASSERT_EQ(v.size(), 1u) << joined(v);
