@@ -19,6 +19,7 @@
 #include <cstddef>
 #include <span>
 
+#include "light/seen_light.h"
 #include "light/sky_model.h"
 #include "math/rgb.h"
 #include "math/vec3.h"
@@ -48,6 +49,27 @@ Rgb disc_irradiance(std::span<const Source> sources, Vec3 n, const Fraction& fra
     if (f > 0) e += s.illuminance * (f * c);
   }
   return e;
+}
+
+// One disc source (a sun, an environment's compact source) as a surface of unit normal n sees
+// it (light/seen_light.h): E_n · f · max(0, n · s), in view when that is not 0, and with
+// `with_luminance` the disc's luminance (the tint's Y: L · Y(E) / E_n) times f, the mean over
+// the whole disc's solid angle.
+template <typename Source, typename Fraction>
+SeenLight disc_seen_from(const Source& s, Vec3 n, bool with_luminance, const Fraction& fraction) {
+  SeenLight out;
+  out.direction = s.disc.direction;
+  const double c = dot(n, s.disc.direction);
+  if (c <= 0) return out;
+  const double f = fraction(s);
+  if (!(f > 0)) return out;
+  out.irradiance = s.illuminance * (f * c);
+  out.in_view = true;
+  if (with_luminance && s.disc.normal_illuminance > 0) {
+    out.luminance = luminance(s.illuminance) * s.disc.luminance / s.disc.normal_illuminance * f;
+    out.solid_angle = s.disc.solid_angle;
+  }
+  return out;
 }
 
 // Whether some direction within the disc's cone from `origin` comes within the sphere (centre,

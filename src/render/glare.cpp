@@ -5,10 +5,8 @@
 #include <stdexcept>
 
 #include "math/rgb.h"
-#include "render/pixel_direct.h"
 #include "render/relit_scene_image.h"
-#include "sources/luminaire/luminaire_direct.h"
-#include "sources/portal/portal_sun.h"
+#include "runtime/direct_light.h"
 #include "trace/ray_tracer.h"
 
 namespace relight {
@@ -16,22 +14,6 @@ namespace relight {
 namespace {
 
 constexpr double kGlareFactor = 5;  // sources: brighter than 5 × the view's mean luminance
-
-// A luminous opening projected toward the unit photometric-frame direction u (x along C0,
-// the length; y along C90, the width; z along the aim), m².
-double projected_area(const LuminousOpening& o, Vec3 u) {
-  const double w = o.width_m, l = o.length_m, h = o.height_m;
-  const double side = std::sqrt(u.x * u.x + u.y * u.y);
-  switch (o.shape) {
-    case OpeningShape::kPoint:
-      return 0;
-    case OpeningShape::kRectangular:
-    case OpeningShape::kRectangularWithLuminousSides:
-      return w * l * std::abs(u.z) + h * (w * std::abs(u.x) + l * std::abs(u.y));
-    default:  // round shapes: an ellipse of axes l × w, a cylinder of height h about it
-      return kPi / 4 * w * l * std::abs(u.z) + 0.5 * (w + l) * h * side;
-  }
-}
 
 }  // namespace
 
@@ -53,8 +35,6 @@ GlareResult evaluate_glare(RelitScene& scene, Vec3 eye, Vec3 view_direction, int
   const Vec3 world_up = std::abs(view.y) > 0.999 ? Vec3{0, 0, -1} : Vec3{0, 1, 0};
   const Vec3 up = normalize(world_up - view * dot(world_up, view));
   const Vec3 right = cross(view, up);
-  const Relighter& lit = scene.relighter();
-  const Scene& s = scene.scene();
   GlareResult out;
 
   // The view hemisphere, 2n² directions of equal solid angle.
@@ -75,59 +55,37 @@ GlareResult evaluate_glare(RelitScene& scene, Vec3 eye, Vec3 view_direction, int
     e_view += luminance(seen[k]) * dot(rays[k].direction, view) * omega;
   }
 
-  // The luminaires' direct light, exactly, and each luminaire in view as a source.
-  const std::vector<LuminaireLight> lights = pixel_lights(s, lit);
-  const Occluders occluders =
-      lit.objects() != nullptr ? lit.objects()->occluders() : Occluders(scene.opaque_tracer());
-  out.luminaire_direct_ev = luminance(luminaire_direct_irradiance(occluders, lights, eye, view));
-  std::vector<GlareSource> luminaires;
+  // Every light's direct light at the eye, exactly (runtime/direct_light.h), and each light
+  // in view a source of its own luminance and solid angle.
+  const DirectLight direct(scene);
+  double direct_ev = 0;
+  std::vector<GlareSource> lights;
   double ugr_sum = 0;
   bool any_luminaire = false;
-  for (std::size_t j = 0; j < lights.size(); ++j) {
-    const LuminaireLight& light = lights[j];
-    if (max_component(light.rgb) <= 0) continue;
-    const Vec3 to = light.position - eye;
-    const double r = length(to);
-    const Vec3 d = to / r;
-    if (dot(d, view) <= 0 || r <= kLightMargin) continue;
-    if (occluders.occluded(Ray{eye, d, 0, r - kLightMargin})) continue;
-    const Vec3 u = light.frame.to_photometric(d * -1.0);
-    const double intensity = luminance(light.rgb) * light.distribution->intensity(u);
-    if (intensity <= 0) continue;
-    const double area =
-        projected_area(luminaire_opening(s.luminaires[j], light.distribution->opening()), u);
-    if (!(area > 0)) {
-      out.unrated.push_back(s.luminaires[j].name);
-      continue;
-    }
-    const double p = guth_position_index(view, up, d);
-    GlareSource src{"luminaire", s.luminaires[j].name, d, intensity / area, area / (r * r), p};
-    if (dot(d, up) > 0) {  // UGR: above the line of sight
-      ugr_sum += src.luminance * src.luminance * src.solid_angle / (p * p);
-      any_luminaire = true;
-    }
-    luminaires.push_back(src);
-  }
-
-  // The suns, exactly.
-  double sun_ev = 0;
-  std::vector<GlareSource> suns;
-  if (!lit.suns().empty()) {
-    SunGeometry geometry = lit.sun_geometry();
-    geometry.occluders = occluders;
-    for (const PortalSun& sun : lit.suns()) {
-      const double e = luminance(sun_irradiance(geometry, std::span(&sun, 1), eye, view));
-      if (e <= 0) continue;
-      sun_ev += e;
-      const double l =
-          luminance(sun.illuminance) * sun.disc.luminance / sun.disc.normal_illuminance;
-      suns.push_back({"sun", s.portals.at(sun.portal).name, sun.disc.direction,
-                      l * sun_disc_fraction(geometry, sun, eye), sun.disc.solid_angle,
-                      guth_position_index(view, up, sun.disc.direction)});
-    }
-  }
-
-  out.ev = e_view + out.luminaire_direct_ev + sun_ev;
+  direct.for_each_at(
+      eye, view, true, [&](LightKind kind, std::string_view name, const SeenLight& light) {
+        const double e = luminance(light.irradiance);
+        direct_ev += e;
+        if (kind == LightKind::kLuminaire) out.luminaire_direct_ev += e;
+        if (!light.in_view) return;
+        if (!(light.luminance > 0 && light.solid_angle > 0)) {  // a point source in view
+          if (kind == LightKind::kLuminaire) out.unrated.emplace_back(name);
+          return;
+        }
+        GlareSource src{std::string(light_kind_name(kind)),
+                        std::string(name),
+                        light.direction,
+                        light.luminance,
+                        light.solid_angle,
+                        guth_position_index(view, up, light.direction)};
+        if (kind == LightKind::kLuminaire && dot(light.direction, up) > 0) {  // UGR: above the
+          ugr_sum += src.luminance * src.luminance * src.solid_angle /        // line of sight
+                     (src.position_index * src.position_index);
+          any_luminaire = true;
+        }
+        lights.push_back(std::move(src));
+      });
+  out.ev = e_view + direct_ev;
   out.background_luminance = (out.ev - out.luminaire_direct_ev) / kPi;
   if (any_luminaire && out.background_luminance > 0) {
     out.ugr = 8 * std::log10(0.25 / out.background_luminance * ugr_sum);
@@ -160,8 +118,7 @@ GlareResult evaluate_glare(RelitScene& scene, Vec3 eye, Vec3 view_direction, int
     bright.position_index = guth_position_index(view, up, bright.direction);
     out.sources.push_back(bright);
   }
-  for (const GlareSource& src : luminaires) add(src);
-  for (const GlareSource& src : suns) add(src);
+  for (const GlareSource& src : lights) add(src);
   out.dgp = 5.87e-5 * out.ev + 9.18e-2 * std::log10(1 + dgp_sum) + 0.16;
   return out;
 }

@@ -22,10 +22,15 @@
 //  * The view: 2·n² directions of equal solid angle over the hemisphere in front of the eye
 //    (stratified in cos θ and azimuth about the view direction, n = 96: ω = 2π/18432 each),
 //    each shaded as `relight render` shades vertices (render/relit_scene_image.h: the room's
-//    light interpolated, windows showing their shells). The direct light of luminaires and
-//    suns is not sampled but exact: the luminaires' (sources/luminaire/luminaire_direct.h)
-//    and the suns' (sources/portal/portal_sun.h) vertical illuminance at the eye, and each
-//    visible luminaire and sun disc a glare source of its own luminance and solid angle.
+//    light interpolated, windows showing their shells). The direct light of every kind of
+//    light is not sampled but exact (runtime/direct_light.h): luminaires, suns behind clear
+//    glass, near-field emitters and a top-level environment's compact sources (its sun) add
+//    their vertical illuminance at the eye, and each one in view is a glare source of its own
+//    luminance and solid angle (a luminaire: I/A_p and A_p/r² as for UGR; a sun or compact
+//    source: its disc's luminance times the fraction of it seen, over the disc; an emitter: its
+//    luminance over the solid angle of its visible part). The view's directions do not show
+//    what is counted exactly: windows show their shells without the suns, and directions
+//    within a compact source's disc show nothing (emitters are not part of the traced mesh).
 //  * Guth position index (Luckiesh & Guth 1949, in the form of Einhorn used by CIE 117 and
 //    Wienold & Christoffersen):
 //      ln p = (35.2 − 0.31889·τ − 1.22·e^(−2τ/9))·10⁻³·σ + (21 + 0.26667·τ − 0.002963·τ²)·10⁻⁵·σ²
@@ -49,11 +54,11 @@
 namespace relight {
 
 struct GlareSource {
-  // "luminaire", "sun" or "view": the view's directions above the threshold (windows, bright
-  // surfaces) together — their solid angle, mean luminance and mean direction (the DGP sums
-  // them one by one).
+  // "luminaire", "sun", "emitter", "environment" (a top-level environment's compact source)
+  // or "view": the view's directions above the threshold (windows, bright surfaces) together —
+  // their solid angle, mean luminance and mean direction (the DGP sums them one by one).
   std::string kind;
-  std::string name;        // the luminaire's or the portal's, "" for the view
+  std::string name;        // the luminaire's, the portal's, the emitter's; "" for the others
   Vec3 direction;          // unit, from the eye
   double luminance = 0;    // cd/m²
   double solid_angle = 0;  // sr

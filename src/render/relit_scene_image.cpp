@@ -6,12 +6,10 @@
 #include <algorithm>
 #include <optional>
 
-#include "material/material_reflectance.h"
 #include "material/lambert.h"
+#include "material/material_reflectance.h"
 #include "render/glossy_pixels.h"
-#include "render/pixel_direct.h"
-#include "sources/cuts/compact_light.h"
-#include "sources/nearfield/emitter_direct.h"
+#include "runtime/direct_light.h"
 
 namespace relight {
 
@@ -60,11 +58,17 @@ Rgb window_luminance(const Relighter& lit, const RayTracer& windows, Vec3 origin
                      bool with_suns) {
   const RayHit hit = windows.intersect({origin, dir});
   if (!hit.hit()) {
-    // Past the scene: the top-level environment, if any (its sun disc included).
+    // Past the scene: the top-level environment, if any (its sun disc included; without
+    // `with_suns` its compact sources' discs show nothing, their light being counted exactly).
     const EnvironmentLighting* env = lit.environment();
-    return env != nullptr && env->environment() != nullptr
-               ? env->environment()->radiance(normalize(dir))
-               : Rgb{};
+    if (env == nullptr || env->environment() == nullptr) return {};
+    const Vec3 w = normalize(dir);
+    if (!with_suns) {
+      for (const CompactSource& source : env->compact_sources()) {
+        if (dot(w, source.disc.direction) >= source.disc.cos_angular_radius) return {};
+      }
+    }
+    return env->environment()->radiance(w);
   }
   Rgb l = lit.shell(hit.triangle).radiance(dir);
   if (!with_suns) return l;
@@ -135,9 +139,7 @@ class GlossyShading {
         view_environment_(scene.relighter().environment()),
         windows_(scene.portal_tracer()),
         objects_(shown != nullptr ? lit_.objects() : nullptr),
-        occluders_(lit_.objects() != nullptr ? lit_.objects()->occluders()
-                                             : Occluders(scene.opaque_tracer())),
-        lights_(pixel_lights(t_.scene, lit_)),
+        direct_(scene),
         glossy_(glossy_materials(lit_.state().materials)),
         texture_(t_.view.scene.vertex_texture),
         pixels_{shown != nullptr ? *shown->tracer : scene.opaque_tracer(),
@@ -148,15 +150,6 @@ class GlossyShading {
                 [this](const MetallicRoughness& m, Vec3 p, Vec3 n, Vec3 v) {
                   return direct(m, p, n, v);
                 }} {
-    // A scene without windows has no suns and no sun geometry; with objects, they shadow the
-    // sun.
-    if (!lit_.suns().empty()) {
-      sun_geometry_.emplace(lit_.sun_geometry());
-      sun_geometry_->occluders = occluders_;
-    }
-    if (const EnvironmentLighting* env = lit_.environment(); env != nullptr) {
-      compact_ = env->compact_sources();
-    }
     if (glossy_.empty()) return;
     if (view_environment_ != nullptr) {
       view_environment_->prepare_view_cache(objects_ != nullptr ? objects_->placed().vertex_count()
@@ -187,18 +180,9 @@ class GlossyShading {
 
   bool empty() const { return glossy_.empty(); }
 
-  // The direct irradiance at p (unit normal n) — luminaires, suns behind clear glass,
-  // emitters, the top-level environment's compact sources, shadowed by the room and the placed
-  // objects — as `--direct pixel` takes it.
-  Rgb direct_irradiance(Vec3 p, Vec3 n) const {
-    Rgb e = luminaire_direct_irradiance(occluders_, lights_, p, n);
-    if (sun_geometry_) e += sun_irradiance(*sun_geometry_, lit_.suns(), p, n);
-    e += compact_irradiance(occluders_, compact_, offset_from_surface(p, n), n);
-    if (const EmitterLighting* emitters = lit_.emitters(); emitters != nullptr) {
-      e += emitter_direct_irradiance(emitters->placed(), &occluders_, p, n);
-    }
-    return e;
-  }
+  // The direct irradiance at p (unit normal n) of every light (runtime/direct_light.h), as
+  // `--direct pixel` takes it.
+  Rgb direct_irradiance(Vec3 p, Vec3 n) const { return direct_.irradiance_at(p, n); }
 
   // The luminance toward v (unit) at a hit p (normal n) on `triangle` (the shown scene's: the
   // room's, then the objects') at barycentrics `bary`; none for a Lambertian triangle.
@@ -349,29 +333,15 @@ class GlossyShading {
     return hit.hit() ? lit_.shell(hit.triangle).radiance(dir) : Rgb{};
   }
 
+  // Every light's direct light reflected toward v: the BRDF toward each light's direction; an
+  // emitter (an area light) as the diffuse surface of the same hemispherical albedo.
   Rgb direct(const MetallicRoughness& m, Vec3 p, Vec3 n, Vec3 v) const {
     Rgb l;
-    for (const LuminaireLight& light : lights_) {
-      const Rgb e = luminaire_direct_irradiance(occluders_, std::span(&light, 1), p, n);
-      if (max_component(e) > 0) {
-        l += metallic_roughness_brdf(m, n, normalize(light.position - p), v) * e;
-      }
-    }
-    if (sun_geometry_) {
-      for (const PortalSun& sun : lit_.suns()) {
-        const Rgb e = sun_irradiance(*sun_geometry_, std::span(&sun, 1), p, n);
-        if (max_component(e) > 0) l += metallic_roughness_brdf(m, n, sun.disc.direction, v) * e;
-      }
-    }
-    for (const CompactSource& source : compact_) {
-      const Rgb e =
-          compact_irradiance(occluders_, std::span(&source, 1), offset_from_surface(p, n), n);
-      if (max_component(e) > 0) l += metallic_roughness_brdf(m, n, source.disc.direction, v) * e;
-    }
-    if (const EmitterLighting* emitters = lit_.emitters(); emitters != nullptr) {
-      l += lambertian_radiance(hemispherical_albedo(m),
-                               emitter_direct_irradiance(emitters->placed(), &occluders_, p, n));
-    }
+    direct_.for_each_at(p, n, false, [&](LightKind, std::string_view, const SeenLight& light) {
+      if (max_component(light.irradiance) <= 0) return;
+      l += light.area ? lambertian_radiance(hemispherical_albedo(m), light.irradiance)
+                      : metallic_roughness_brdf(m, n, light.direction, v) * light.irradiance;
+    });
     return l;
   }
 
@@ -382,10 +352,7 @@ class GlossyShading {
   EnvironmentLighting* view_environment_;
   const RayTracer& windows_;
   const ObjectLighting* objects_;  // the objects shown (null: none)
-  const Occluders occluders_;
-  const std::vector<LuminaireLight> lights_;
-  std::optional<SunGeometry> sun_geometry_;
-  std::span<const CompactSource> compact_;  // the top-level environment's (none without one)
+  const DirectLight direct_;
   const GlossyMaterials glossy_;
   const std::span<const float> texture_;
   std::vector<float> vertex_radiance_;

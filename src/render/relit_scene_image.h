@@ -1,7 +1,7 @@
 // An image of a relit scene through a camera: per-vertex radiance interpolated over the
-// triangles (Gouraud-equivalent), or with `pixel_direct` the direct light evaluated exactly
-// at each pixel's surface point (render/pixel_direct.h; near-field emitters as area lights,
-// sources/nearfield/emitter_direct.h) and only the interreflected light interpolated. Windows show
+// triangles (Gouraud-equivalent), or with `pixel_direct` the direct light of every kind
+// evaluated exactly at each pixel's surface point (runtime/direct_light.h; near-field emitters
+// as area lights) and only the interreflected light interpolated. Windows show
 // the current shell of their portal.
 #pragma once
 
@@ -9,9 +9,9 @@
 #include <span>
 #include <vector>
 
-#include "scene/camera.h"
 #include "render/vertex_shading.h"
 #include "runtime/relit_scene.h"
+#include "scene/camera.h"
 
 namespace relight {
 
@@ -19,8 +19,9 @@ ShadedImages render_relit_scene(RelitScene& scene, const Camera& camera, int wid
                                 bool pixel_direct = false);
 
 // The luminance (cd/m², RGB) seen along each ray, shaded as render_relit_scene without
-// pixel_direct (vertex light interpolated; a window shows its shell, and the suns' discs only
-// `with_suns`); 0 where nothing is seen. For views that are no pinhole camera (render/glare.h).
+// pixel_direct (vertex light interpolated; a window shows its shell, and the suns' discs and a
+// top-level environment's compact sources only `with_suns`); 0 where nothing is seen. For views
+// that are no pinhole camera (render/glare.h).
 std::vector<Rgb> relit_scene_luminance(RelitScene& scene, std::span<const Ray> rays,
                                        bool with_suns);
 

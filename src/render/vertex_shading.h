@@ -28,7 +28,7 @@ struct VertexShadingInput {
   std::span<const float> vertex_albedo;  // 3 per vertex
   std::span<const float> irradiance;     // 3 per vertex (lux), at least 3·vertices
   // When set, irradiance holds interreflected light only and this gives the direct
-  // irradiance at each hit point and its geometric normal (render/pixel_direct.h).
+  // irradiance at each hit point and its geometric normal (runtime/direct_light.h).
   std::function<Rgb(Vec3 point, Vec3 normal)> direct_at_hit;
   // When set, a ray that meets no surface shows this luminance (the view out of a window:
   // the portal's shell); its illuminance stays NaN.

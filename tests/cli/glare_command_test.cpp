@@ -84,6 +84,74 @@ TEST(GlareCommand, DgpOfAWindowViewMatchesTheFormulaByHand) {
   EXPECT_NEAR(g["sources"][0]["luminance"].get<double>(), l, 0.02 * l);
 }
 
+// A black open floor under a clear CIE sky whose sun stands 30° high in the south (+z), and a
+// 0.5 × 0.5 m panel emitter of 10⁵ cd/m² (a bare LED board) 2 m north of the eye at (0, 1.2, 0),
+// 0.55–1.05 m to its side, facing it. Each is a glare source of its own luminance, exactly as
+// its kind's direct light gives it (runtime/direct_light.h): looking north, the panel its
+// 10⁵ cd/m² over the solid angle it subtends; looking at the sun, the sun E_n / (π sin² r) over
+// its disc 2π(1 − cos r), r its angular radius. E_v takes the panel's direct light: with it
+// switched off, E_v falls by ∫ L cos θ dω over the panel, by hand over a fine grid.
+TEST(GlareCommand, AnEmitterAndAnEnvironmentSunInViewAreSourcesOfTheirOwnLuminance) {
+  const TempDir dir;
+  const double sun_e = 60000, panel_l = 1e5;
+  const nlohmann::json scene = nlohmann::json::parse(R"({
+    "materials": {"floor": {"albedo": [0, 0, 0]}},
+    "geometry": [{"type": "quad", "corner": [-4, 0, -4], "u": [0, 0, 8], "v": [8, 0, 0],
+                  "material": "floor"}],
+    "environment": {"type": "cie_sky", "sky_type": 12, "horizontal_illuminance": 15000,
+                    "sun": {"azimuth_deg": 180, "altitude_deg": 30}, "sun_illuminance": 60000},
+    "emitters": [{"name": "panel", "geometry": {"type": "quad", "corner": [0.55, 0.95, -2],
+                  "u": [0.5, 0, 0], "v": [0, 0.5, 0]}, "luminance": 100000}],
+    "precompute": {"max_edge": 0.5, "gather_rays": 64, "cuts": {"directions": 1024}}
+  })");
+  const fs::path rlt = precompute(dir, scene, "open");
+  const auto source = [](const nlohmann::json& g, const std::string& kind) -> nlohmann::json {
+    for (const nlohmann::json& s : g["sources"]) {
+      if (s["kind"] == kind) return s;
+    }
+    ADD_FAILURE() << "no " << kind << " source in " << g.dump();
+    return nlohmann::json::object();
+  };
+
+  // Looking north at the panel; by hand its solid angle and ∫ L cos θ dω on the view plane.
+  const std::string north = "--observer 0,1.2,0 --view 0,0,-1";
+  const nlohmann::json lit = glare(rlt, north);
+  const nlohmann::json panel = source(lit, "emitter");
+  double omega = 0, e_panel = 0;
+  const int n = 400;
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) {
+      const double x = 0.55 + 0.5 * (i + 0.5) / n, y = 0.95 + 0.5 * (j + 0.5) / n - 1.2, z = 2;
+      const double r2 = x * x + y * y + z * z, r = std::sqrt(r2);
+      const double d_omega = (0.5 / n) * (0.5 / n) * (z / r) / r2;
+      omega += d_omega;
+      e_panel += panel_l * (z / r) * d_omega;
+    }
+  }
+  EXPECT_EQ(panel.value("name", ""), "panel");
+  EXPECT_NEAR(panel.value("luminance", 0.0), panel_l, 1e-9 * panel_l);
+  EXPECT_NEAR(panel.value("solid_angle", 0.0), omega, 1e-3 * omega);
+  const fs::path off = dir.write("off.json", R"({"emitters": {"panel": {"on": false}}})");
+  const nlohmann::json dark = glare(rlt, north + " --state '" + off.string() + "'");
+  const double panel_ev = lit["ev"].get<double>() - dark["ev"].get<double>();
+  EXPECT_NEAR(panel_ev, e_panel, 0.01 * e_panel);
+
+  // Looking at the sun: its disc's angular radius from the solid angle reported, L by hand.
+  const nlohmann::json g = glare(rlt, "--observer 0,1.2,0 --view 0,0.5,0.8660254");
+  const nlohmann::json sun = source(g, "environment");
+  const double sun_omega = sun.value("solid_angle", 0.0);
+  const double radius = std::acos(1 - sun_omega / (2 * kPi));
+  const double sun_l = sun_e / (kPi * std::sin(radius) * std::sin(radius));
+  EXPECT_NEAR(radius * 180 / kPi, 0.265, 0.01);
+  EXPECT_NEAR(sun.value("luminance", 0.0), sun_l, 1e-3 * sun_l);
+  EXPECT_GT(g["ev"].get<double>(), sun_e);  // the sun, seen head on, and the sky
+  std::printf(
+      "[ measured ] panel %.0f cd/m² over %.6f sr (by hand %.6f), E %.2f lx (by hand "
+      "%.2f); sun %.4g cd/m² (by hand %.4g), E_v %.0f lx\n",
+      panel.value("luminance", 0.0), panel.value("solid_angle", 0.0), omega, panel_ev, e_panel,
+      sun.value("luminance", 0.0), sun_l, g["ev"].get<double>());
+}
+
 // One 0.6 × 0.6 m isotropic 1000 cd luminaire at (2, 2.9, 3) aimed down, in a grey room; the
 // eye at (2, 1.2, 1) looks along +z: r = 2.6249 m, cos γ = 1.7/r, A_p = 0.36·cos γ,
 // L = 1000/A_p, ω = A_p/r², σ = acos(2/r) = 40.36°, τ = 0; L_b = (E_v − E_direct)/π from

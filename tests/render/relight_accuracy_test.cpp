@@ -7,7 +7,6 @@
 #include <gtest/gtest.h>
 
 #include "light/luminaire_frame.h"
-#include "render/pixel_direct.h"
 #include "reference/reference_tracer.h"
 #include "render/vertex_shading.h"
 #include "runtime/relighter.h"
@@ -323,10 +322,17 @@ TEST(RelightAccuracy, FurnishedRoomImageMatchesReference) {
     ids.push_back(t);
   }
   const RayTracer tracer(r.precomputed.mesh.positions, opaque, ids);
-  const ShadedImages shaded = shade_vertices(
-      camera,
-      {tracer, r.precomputed.mesh.positions, r.precomputed.mesh.triangles, albedo, e, {}, {}, {}, {}},
-      4);
+  const ShadedImages shaded = shade_vertices(camera,
+                                             {tracer,
+                                              r.precomputed.mesh.positions,
+                                              r.precomputed.mesh.triangles,
+                                              albedo,
+                                              e,
+                                              {},
+                                              {},
+                                              {},
+                                              {}},
+                                             4);
 
   const std::vector<PlacedLuminaire> luminaires = place_luminaires(r.scene);
   const PreparedMesh mesh = prepare_mesh(r.scene.geometry, PreparationSettings{});
@@ -389,7 +395,7 @@ TEST(RelightAccuracy, FurnishedRoomImageMatchesReference) {
   // pixel): shadows and beam edges are sharp, so every block must agree.
   std::vector<float> indirect(3 * relighter.receivers());
   relighter.relight(indirect, false);
-  const std::vector<LuminaireLight> lights = pixel_lights(r.scene, relighter);
+  const std::vector<LuminaireLight> lights = relighter.luminaires().lights(r.scene.luminaires, 16);
   const ShadedImages pixel = shade_vertices(
       camera,
       {tracer,

@@ -19,4 +19,11 @@ Rgb compact_irradiance(const Occluders& occluders, std::span<const CompactSource
   });
 }
 
+SeenLight compact_seen_from(const Occluders& occluders, const CompactSource& source, Vec3 origin,
+                            Vec3 n, bool with_luminance) {
+  return disc_seen_from(source, n, with_luminance, [&](const CompactSource& s) {
+    return compact_fraction(occluders, s, origin);
+  });
+}
+
 }  // namespace relight

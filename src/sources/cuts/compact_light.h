@@ -13,6 +13,7 @@
 #include <span>
 
 #include "light/compact_sources.h"
+#include "light/seen_light.h"
 #include "math/rgb.h"
 #include "math/vec3.h"
 #include "trace/ray_tracer.h"
@@ -27,5 +28,11 @@ double compact_fraction(const Occluders& occluders, const CompactSource& source,
 // unit normal n).
 Rgb compact_irradiance(const Occluders& occluders, std::span<const CompactSource> sources,
                        Vec3 origin, Vec3 n, bool penumbra = true);
+
+// `source` as seen from `origin` (already off its surface of unit normal n): its E_s,n · f_s ·
+// max(0, n · s), and with `with_luminance` its disc's luminance times f_s
+// (light/disc_visibility.h disc_seen_from).
+SeenLight compact_seen_from(const Occluders& occluders, const CompactSource& source, Vec3 origin,
+                            Vec3 n, bool with_luminance);
 
 }  // namespace relight

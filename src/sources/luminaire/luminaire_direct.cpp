@@ -149,6 +149,42 @@ Rgb luminaire_direct_irradiance(const Occluders& occluders, std::span<const Lumi
   return e;
 }
 
+double projected_opening_area(const LuminousOpening& o, Vec3 u) {
+  const double w = o.width_m, l = o.length_m, h = o.height_m;
+  const double side = std::sqrt(u.x * u.x + u.y * u.y);
+  switch (o.shape) {
+    case OpeningShape::kPoint:
+      return 0;
+    case OpeningShape::kRectangular:
+    case OpeningShape::kRectangularWithLuminousSides:
+      return w * l * std::abs(u.z) + h * (w * std::abs(u.x) + l * std::abs(u.y));
+    default:  // round shapes: an ellipse of axes l × w, a cylinder of height h about it
+      return kPi / 4 * w * l * std::abs(u.z) + 0.5 * (w + l) * h * side;
+  }
+}
+
+SeenLight luminaire_seen_from(const Occluders& occluders, const LuminaireLight& light,
+                              const LuminousOpening& opening, Vec3 p, Vec3 n, bool with_luminance) {
+  SeenLight out;
+  out.irradiance = luminaire_direct_irradiance(occluders, std::span(&light, 1), p, n);
+  const Vec3 to = light.position - p;
+  const double r = length(to);
+  if (!(r > kLightMargin)) return out;
+  out.direction = to / r;
+  if (!with_luminance || max_component(light.rgb) <= 0 || dot(out.direction, n) <= 0) return out;
+  if (occluders.occluded(Ray{p, out.direction, 0, r - kLightMargin})) return out;
+  const Vec3 u = light.frame.to_photometric(out.direction * -1.0);
+  const double intensity = luminance(light.rgb) * light.distribution->intensity(u);
+  if (!(intensity > 0)) return out;
+  out.in_view = true;
+  const double area = projected_opening_area(opening, u);
+  if (area > 0) {
+    out.luminance = intensity / area;
+    out.solid_angle = area / (r * r);
+  }
+  return out;
+}
+
 DirectGeometry compute_direct_geometry(const Receivers& receivers,
                                        const std::vector<Vec3>& ray_points,
                                        const TracedScene& traced, Vec3 luminaire_position,

@@ -17,6 +17,7 @@
 #include "light/distribution.h"
 #include "light/luminaire_frame.h"
 #include "light/photometric_web.h"
+#include "light/seen_light.h"
 #include "trace/traced_scene.h"
 
 namespace relight {
@@ -89,6 +90,19 @@ inline Rgb luminaire_irradiance(const LuminaireLight& l, Vec3 direction, double 
 // Direct irradiance (lux per channel) at p with unit normal n from `lights`.
 Rgb luminaire_direct_irradiance(const Occluders& occluders, std::span<const LuminaireLight> lights,
                                 Vec3 p, Vec3 n);
+
+// A luminous opening projected toward the unit photometric-frame direction u (x along C0, the
+// length; y along C90, the width; z along the aim), m²: the bottom face w·l·|cos γ| plus the
+// luminous sides h·(w·|sin γ sin C| + l·|sin γ cos C|); round openings π·w·l/4·|cos γ| plus
+// a cylinder's (w + l)/2·h·sin γ; 0 for a point.
+double projected_opening_area(const LuminousOpening& opening, Vec3 u);
+
+// Luminaire `light` as seen from p (unit normal n): its exact direct irradiance there
+// (luminaire_direct_irradiance), and, with `with_luminance`, whether its photometric centre is
+// in view (in front of n's plane, unoccluded, shining toward p) with its luminance I/A_p and
+// solid angle A_p/r², A_p `opening` (luminaire_opening) projected toward p.
+SeenLight luminaire_seen_from(const Occluders& occluders, const LuminaireLight& light,
+                              const LuminousOpening& opening, Vec3 p, Vec3 n, bool with_luminance);
 
 // `ray_points` are receiver_ray_points(receivers, mesh): the shadow rays start there. With
 // several `ranks` (engine/ranks.h; collective), this process traces its share's rows and keeps

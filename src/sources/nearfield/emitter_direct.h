@@ -12,9 +12,10 @@
 // tests/sources/nearfield/emitter_direct_test.cpp (the disc-like closed forms and I/d²).
 #pragma once
 
+#include "light/emitter_placement.h"
+#include "light/seen_light.h"
 #include "math/rgb.h"
 #include "math/vec3.h"
-#include "light/emitter_placement.h"
 #include "trace/ray_tracer.h"
 
 namespace relight {
@@ -28,5 +29,14 @@ double triangle_irradiance_factor(Vec3 p, Vec3 n, Vec3 a, Vec3 b, Vec3 c);
 // a square, at least 1).
 Rgb emitter_direct_irradiance(const PlacedEmitters& emitters, const Occluders* occluders, Vec3 p,
                               Vec3 n, int visibility_samples = 16);
+
+// Emitter k (PlacedEmitters::radiance order) as seen from p (unit normal n): its exact direct
+// irradiance there, as emitter_direct_irradiance takes it for its triangles; in view when some
+// of it lights p; with `with_luminance` its luminance (the Y of its radiance: an emitter is
+// uniform) and the solid angle of its triangles that light p, each times its visible fraction;
+// `direction` their solid-angle-weighted mean.
+SeenLight emitter_seen_from(const PlacedEmitters& emitters, std::size_t k,
+                            const Occluders* occluders, Vec3 p, Vec3 n, bool with_luminance,
+                            int visibility_samples = 16);
 
 }  // namespace relight

@@ -72,6 +72,13 @@ Rgb sun_irradiance(const SunGeometry& g, std::span<const PortalSun> suns, Vec3 p
       suns, n, [&](const PortalSun& sun) { return sun_disc_fraction(g, sun, origin, penumbra); });
 }
 
+SeenLight sun_seen_from(const SunGeometry& g, const PortalSun& sun, Vec3 p, Vec3 n,
+                        bool with_luminance) {
+  const Vec3 origin = offset_from_surface(p, n);
+  return disc_seen_from(sun, n, with_luminance,
+                        [&](const PortalSun& s) { return sun_disc_fraction(g, s, origin); });
+}
+
 bool sun_may_light_triangle(const SunGeometry& g, std::span<const PortalSun> suns, Vec3 a, Vec3 b,
                             Vec3 c, Vec3 n) {
   // The bounding sphere only for a triangle that faces some sun (every hour of `relight

@@ -23,6 +23,7 @@
 
 #include "engine/runtime_scene.h"
 #include "light/disc_visibility.h"
+#include "light/seen_light.h"
 #include "light/sky_model.h"
 #include "math/rgb.h"
 #include "math/vec3.h"
@@ -58,6 +59,12 @@ double sun_disc_fraction(const SunGeometry& geometry, const PortalSun& sun, Vec3
 // Σ over `suns` of E_sun,n · f · max(0, n · s) at the surface point p of unit normal n.
 Rgb sun_irradiance(const SunGeometry& geometry, std::span<const PortalSun> suns, Vec3 p, Vec3 n,
                    bool penumbra = true);
+
+// `sun` as seen from p (unit normal n): its exact irradiance there (sun_irradiance), and, with
+// `with_luminance`, in view when it lights p, its disc's luminance (the tint's Y included)
+// times the fraction of the disc seen from p, over the whole disc's solid angle.
+SeenLight sun_seen_from(const SunGeometry& geometry, const PortalSun& sun, Vec3 p, Vec3 n,
+                        bool with_luminance);
 
 // Whether any of `suns` may light a point of the triangle (a, b, c) of unit normal n: it
 // faces the sun, and the sun's cone from some point of it may reach its portal's bounding
