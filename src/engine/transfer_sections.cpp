@@ -39,47 +39,52 @@ void gather_blocks(const RankShares& ranks, std::span<const std::byte> mine,
       sink != nullptr ? &to_sink : nullptr);
 }
 
-void add_transfer_section(RltWriter& w, std::uint32_t type, const std::string& name,
-                          BlockedTransfer t, const RankShares& ranks, std::size_t block_bytes) {
+void SectionSink::gathered(std::uint32_t type, const std::string& name, RltElement element,
+                           Gather gather, std::uint32_t flags) {
+  if (writer_ == nullptr) {
+    gather(nullptr);
+    return;
+  }
+  writer_->add_produced_section(
+      type, name, [gather = std::move(gather)](const RltWriter::Sink& sink) { gather(&sink); },
+      element, flags);
+}
+
+void SectionSink::transfer(std::uint32_t type, const std::string& name, BlockedTransfer t,
+                           std::size_t block_bytes) {
   const bool half = t.half();
   const auto flags =
       half ? static_cast<std::uint32_t>(std::ilogb(t.scale) + kExponentBias) : std::uint32_t{0};
   const RltElement element = half ? RltElement::f16 : RltElement::f32;
-  if (ranks.alone()) {
-    w.add_section(type, name, t.bytes(), element, flags);
+  if (alone()) {
+    writer_->add_section(type, name, t.bytes(), element, flags);
     return;
   }
-  w.add_produced_section(
-      type, name,
-      [t, ranks, block_bytes](const RltWriter::Sink& sink) {
-        gather_blocks(ranks, t.bytes(), block_bytes, &sink);
+  gathered(
+      type, name, element,
+      [t, ranks = ranks_, block_bytes](const RltWriter::Sink* sink) {
+        gather_blocks(ranks, t.bytes(), block_bytes, sink);
       },
-      element, flags);
+      flags);
 }
 
-void send_transfer_section(BlockedTransfer t, const RankShares& ranks, std::size_t block_bytes) {
-  gather_blocks(ranks, t.bytes(), block_bytes, nullptr);
-}
-
-void add_row_section(RltWriter& w, std::uint32_t type, const std::string& name,
-                     std::span<const float> rows, std::size_t stride, const RankShares& ranks) {
-  if (ranks.alone()) {
-    w.add_f32(type, name, rows);
+void SectionSink::rows(std::uint32_t type, const std::string& name, std::span<const float> rows,
+                       std::size_t stride) {
+  if (alone()) {
+    writer_->add_f32(type, name, rows);
     return;
   }
-  w.add_produced_section(
-      type, name,
-      [rows, stride, ranks](const RltWriter::Sink& sink) {
-        const RecordSink to_sink = [&sink](std::span<const std::uint8_t> block) {
-          sink(std::as_bytes(block));
-        };
-        gather_rows(ranks, stride, rows, &to_sink);
-      },
-      RltElement::f32);
-}
-
-void send_row_section(std::span<const float> rows, std::size_t stride, const RankShares& ranks) {
-  gather_rows(ranks, stride, rows, nullptr);
+  gathered(type, name, RltElement::f32,
+           [rows, stride, ranks = ranks_](const RltWriter::Sink* sink) {
+             if (sink == nullptr) {
+               gather_rows(ranks, stride, rows, nullptr);
+               return;
+             }
+             const RecordSink to_sink = [sink](std::span<const std::uint8_t> block) {
+               (*sink)(std::as_bytes(block));
+             };
+             gather_rows(ranks, stride, rows, &to_sink);
+           });
 }
 
 BlockedTransfer transfer_section(const RltFile& file, std::uint32_t type) {

@@ -23,28 +23,49 @@ namespace relight {
 void add_transfer_section(RltWriter& w, std::uint32_t type, const std::string& name,
                           const PackedTransfer& t);
 
-// Several ranks (collective): `t` views this rank's blocks of the section (RankShares local order,
-// engine/column_registry.h pack_indirect_blocks), `block_bytes` the bytes of one block. Rank 0 adds
-// the section, its blocks gathered from every rank in file order while w.write() runs
-// (gather_blocks); the other ranks call send_transfer_section for the same sections in the same
-// order.
-void add_transfer_section(RltWriter& w, std::uint32_t type, const std::string& name,
-                          BlockedTransfer t, const RankShares& ranks, std::size_t block_bytes);
-void send_transfer_section(BlockedTransfer t, const RankShares& ranks, std::size_t block_bytes);
-
 // Collective: each rank's blocks of a section (`mine`, its blocks of `block_bytes` in local
 // order) to rank 0, which hands every block in file order to `sink` (the others pass none). In
 // rounds of at most kGatherRoundBytes received: rank 0 holds one round, never the section.
 void gather_blocks(const RankShares& ranks, std::span<const std::byte> mine,
                    std::size_t block_bytes, const RltWriter::Sink* sink);
 
-// Several ranks (collective): a section of `stride` floats per receiver, `rows` holding every
-// receiver's place and this rank's own blocks filled in; rank 0 adds it, gathered from every rank
-// as it is written (gather_rows), the others call send_row_section in the same order. One process
-// adds `rows` as it is.
-void add_row_section(RltWriter& w, std::uint32_t type, const std::string& name,
-                     std::span<const float> rows, std::size_t stride, const RankShares& ranks);
-void send_row_section(std::span<const float> rows, std::size_t stride, const RankShares& ranks);
+// Where a source kind writes its .rlt sections, whichever rank this process is: the process that
+// writes the file (rank 0, or a process alone) adds them to its writer — on several ranks as
+// sections gathered from every rank while the file is written — and every other rank sends its
+// share of the same sections to it. A kind writes its sections once, through a sink, so the
+// ranks' collectives come in the same order on every rank by construction.
+class SectionSink {
+ public:
+  // This process writes the file with `writer`.
+  SectionSink(RltWriter& writer, const RankShares& ranks) : writer_(&writer), ranks_(ranks) {}
+  // Another rank: sends its share of each section to the one that writes.
+  explicit SectionSink(const RankShares& ranks) : ranks_(ranks) {}
+
+  // The writer when this process writes the file, else null: for what only it holds (text,
+  // metadata) and for a section a process alone adds whole.
+  RltWriter* writer() const { return writer_; }
+  const RankShares& ranks() const { return ranks_; }
+  bool alone() const { return ranks_.alone(); }
+
+  // A section of `stride` floats per receiver, `rows` holding every receiver's place and this
+  // rank's own blocks filled in (alone: all of them).
+  void rows(std::uint32_t type, const std::string& name, std::span<const float> rows,
+            std::size_t stride);
+  // A blocked SH transfer: `t` views this rank's blocks (RankShares local order,
+  // engine/column_registry.h pack_indirect_blocks; alone: all), `block_bytes` the bytes of one.
+  void transfer(std::uint32_t type, const std::string& name, BlockedTransfer t,
+                std::size_t block_bytes);
+  // On several ranks, a section gathered by `gather`, a collective every rank runs: the writing
+  // rank while the file is written, handing the section's bytes to the file's sink; the others
+  // at once, with none.
+  using Gather = std::function<void(const RltWriter::Sink* sink)>;
+  void gathered(std::uint32_t type, const std::string& name, RltElement element, Gather gather,
+                std::uint32_t flags = 0);
+
+ private:
+  RltWriter* writer_ = nullptr;
+  RankShares ranks_;
+};
 
 // Several ranks: an offsets section (records gathered block by block, engine/ranks.h) from its
 // records' sizes. `gather_sizes` runs the gather of blocks of uint32 sizes, in file order, into

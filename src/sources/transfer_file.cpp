@@ -85,47 +85,46 @@ void gather_operator_section(const GatherMatrix& g, const RankShares& ranks, Gat
 
 // The gather operator kept for the run-time bounce (engine/runtime_scene.h), in compressed rows,
 // also when it has no entry (an open floor under a top-level environment: nothing to bounce, but
-// the run time's objects and edits need to know so); none only without rows. On several ranks, each
-// section gathered as it is written (gather_operator_section); the other ranks send theirs in the
-// same order (send_gather_sections).
-void write_gather_sections(RltWriter& w, const GatherMatrix& g, const RankShares& ranks) {
+// the run time's objects and edits need to know so); none only without rows. On several ranks,
+// each section gathered from every rank (gather_operator_section) through `sink`.
+void write_gather_sections(SectionSink& sink, const GatherMatrix& g) {
   if (g.rows() == 0) return;
   if (!g.isCompressed()) throw std::invalid_argument("gather operator not compressed");
-  if (ranks.alone()) {
+  if (sink.alone()) {
+    RltWriter& w = *sink.writer();
     w.add_u32(kGatherRows, "gather rows", indices(g.outerIndexPtr(), g.rows() + 1));
     w.add_u32(kGatherColumns, "gather columns", indices(g.innerIndexPtr(), g.nonZeros()));
     w.add_f32(kGatherValues, "gather values",
               std::span(g.valuePtr(), static_cast<std::size_t>(g.nonZeros())));
     return;
   }
+  const RankShares ranks = sink.ranks();
   // The rows' offsets from their counts, running over the blocks in file order.
-  w.add_produced_section(
-      kGatherRows, "gather rows",
-      [&g, ranks](const RltWriter::Sink& sink) {
-        write_running_offsets<std::uint32_t>(sink, [&](const RecordSink& counts) {
-          gather_operator_section(g, ranks, GatherSection::rows, &counts);
-        });
-      },
-      RltElement::u32);
+  sink.gathered(kGatherRows, "gather rows", RltElement::u32,
+                [&g, ranks](const RltWriter::Sink* to) {
+                  if (to == nullptr) {
+                    gather_operator_section(g, ranks, GatherSection::rows, nullptr);
+                    return;
+                  }
+                  write_running_offsets<std::uint32_t>(*to, [&](const RecordSink& counts) {
+                    gather_operator_section(g, ranks, GatherSection::rows, &counts);
+                  });
+                });
   for (const GatherSection section : {GatherSection::columns, GatherSection::values}) {
     const bool columns = section == GatherSection::columns;
-    w.add_produced_section(
-        columns ? kGatherColumns : kGatherValues, columns ? "gather columns" : "gather values",
-        [&g, ranks, section](const RltWriter::Sink& sink) {
-          const RecordSink to_sink = [&sink](std::span<const std::uint8_t> block) {
-            sink(std::as_bytes(block));
-          };
-          gather_operator_section(g, ranks, section, &to_sink);
-        },
-        columns ? RltElement::u32 : RltElement::f32);
-  }
-}
-
-void send_gather_sections(const GatherMatrix& g, const RankShares& ranks) {
-  if (g.rows() == 0) return;
-  for (const GatherSection s :
-       {GatherSection::rows, GatherSection::columns, GatherSection::values}) {
-    gather_operator_section(g, ranks, s, nullptr);
+    sink.gathered(columns ? kGatherColumns : kGatherValues,
+                  columns ? "gather columns" : "gather values",
+                  columns ? RltElement::u32 : RltElement::f32,
+                  [&g, ranks, section](const RltWriter::Sink* to) {
+                    if (to == nullptr) {
+                      gather_operator_section(g, ranks, section, nullptr);
+                      return;
+                    }
+                    const RecordSink to_sink = [to](std::span<const std::uint8_t> block) {
+                      (*to)(std::as_bytes(block));
+                    };
+                    gather_operator_section(g, ranks, section, &to_sink);
+                  });
   }
 }
 
@@ -215,15 +214,23 @@ BlockedSections blocked_sections(const Precomputed& p, const Scene& scene, RankE
   return out;
 }
 
+// The sections that every rank holds a share of, each kind's through `sink`: the one path of the
+// writing rank and of the others.
+void write_shared_sections(SectionSink& sink, const Precomputed& p,
+                           std::span<const std::string> photometry,
+                           const BlockedSections& blocked) {
+  write_luminaire_sections(sink, p.luminaires, photometry, blocked.luminaire);
+  write_portal_sections(sink, p.portals, blocked.portal_indirect);
+  write_nearfield_sections(sink, p.nearfield);
+  write_gather_sections(sink, p.gather);
+}
+
 }  // namespace
 
 void send_transfer_file_sections(const Precomputed& p, const Scene& scene, RankExchange& ranks) {
   const BlockedSections blocked = blocked_sections(p, scene, &ranks);
-  // In the order write_transfer_file adds them.
-  send_luminaire_sections(p.luminaires, blocked.ranks, blocked.luminaire);
-  send_portal_sections(p.portals, blocked.ranks, blocked.portal_indirect);
-  send_nearfield_sections(p.nearfield, blocked.ranks);
-  send_gather_sections(p.gather, blocked.ranks);
+  SectionSink sink(blocked.ranks);
+  write_shared_sections(sink, p, {}, blocked);
 }
 
 void write_transfer_file(const fs::path& file, const Precomputed& p, const Scene& source,
@@ -304,10 +311,8 @@ void write_transfer_file(const fs::path& file, const Precomputed& p, const Scene
   w.add_u32(kTriangles, "triangles", triangles);
   w.add_u32(kPortalTriangles, "portal triangles", p.triangle_portal);
   w.add_u32(kTriangleMaterials, "triangle materials", p.mesh.triangle_material);
-  write_luminaire_sections(w, p.luminaires, photometry, blocked.ranks, blocked.luminaire);
-  write_portal_sections(w, p.portals, blocked.ranks, blocked.portal_indirect);
-  write_nearfield_sections(w, p.nearfield, blocked.ranks);
-  write_gather_sections(w, p.gather, blocked.ranks);
+  SectionSink sink(w, blocked.ranks);
+  write_shared_sections(sink, p, photometry, blocked);
   ObjectSectionData objects;
   write_object_sections(w, p.objects, objects);
   CutsSectionData cuts;

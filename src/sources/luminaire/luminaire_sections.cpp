@@ -8,41 +8,23 @@
 
 namespace relight {
 
-void write_luminaire_sections(RltWriter& w, std::span<const LuminaireTransfer> luminaires,
-                              std::span<const std::string> photometry, const RankShares& ranks,
+void write_luminaire_sections(SectionSink& sink, std::span<const LuminaireTransfer> luminaires,
+                              std::span<const std::string> photometry,
                               const LuminaireBlockBytes& block) {
   for (std::size_t j = 0; j < luminaires.size(); ++j) {
     const LuminaireTransfer& l = luminaires[j];
-    add_row_section(w, rlt_indexed('D', 'X', j), rlt_indexed_name("direct dir x", j),
-                    l.direct.dir_x, 1, ranks);
-    add_row_section(w, rlt_indexed('D', 'Y', j), rlt_indexed_name("direct dir y", j),
-                    l.direct.dir_y, 1, ranks);
-    add_row_section(w, rlt_indexed('D', 'Z', j), rlt_indexed_name("direct dir z", j),
-                    l.direct.dir_z, 1, ranks);
-    add_row_section(w, rlt_indexed('D', 'F', j), rlt_indexed_name("direct factor", j),
-                    l.direct.factor, 1, ranks);
-    add_transfer_section(w, rlt_indexed('T', 'I', j), rlt_indexed_name("indirect sh", j),
-                         l.indirect.view(), ranks, block.indirect);
-    if (!photometry[j].empty()) {
-      w.add_text(rlt_indexed('P', 'H', j), rlt_indexed_name("photometry", j), photometry[j]);
+    sink.rows(rlt_indexed('D', 'X', j), rlt_indexed_name("direct dir x", j), l.direct.dir_x, 1);
+    sink.rows(rlt_indexed('D', 'Y', j), rlt_indexed_name("direct dir y", j), l.direct.dir_y, 1);
+    sink.rows(rlt_indexed('D', 'Z', j), rlt_indexed_name("direct dir z", j), l.direct.dir_z, 1);
+    sink.rows(rlt_indexed('D', 'F', j), rlt_indexed_name("direct factor", j), l.direct.factor, 1);
+    sink.transfer(rlt_indexed('T', 'I', j), rlt_indexed_name("indirect sh", j), l.indirect.view(),
+                  block.indirect);
+    if (RltWriter* w = sink.writer(); w != nullptr && !photometry[j].empty()) {
+      w->add_text(rlt_indexed('P', 'H', j), rlt_indexed_name("photometry", j), photometry[j]);
     }
-    if (ranks.alone() ? !l.direct_sh_blocks.empty() : block.direct_sh > 0) {
-      add_transfer_section(w, rlt_indexed('T', 'D', j), rlt_indexed_name("direct sh", j),
-                           BlockedTransfer{l.direct_sh_blocks, {}}, ranks, block.direct_sh);
-    }
-  }
-}
-
-void send_luminaire_sections(std::span<const LuminaireTransfer> luminaires, const RankShares& ranks,
-                             const LuminaireBlockBytes& block) {
-  for (const LuminaireTransfer& l : luminaires) {
-    for (const std::vector<float>* v :
-         {&l.direct.dir_x, &l.direct.dir_y, &l.direct.dir_z, &l.direct.factor}) {
-      send_row_section(*v, 1, ranks);
-    }
-    send_transfer_section(l.indirect.view(), ranks, block.indirect);
-    if (block.direct_sh > 0) {
-      send_transfer_section(BlockedTransfer{l.direct_sh_blocks, {}}, ranks, block.direct_sh);
+    if (sink.alone() ? !l.direct_sh_blocks.empty() : block.direct_sh > 0) {
+      sink.transfer(rlt_indexed('T', 'D', j), rlt_indexed_name("direct sh", j),
+                    BlockedTransfer{l.direct_sh_blocks, {}}, block.direct_sh);
     }
   }
 }

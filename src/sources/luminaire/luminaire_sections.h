@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-#include "engine/ranks.h"
+#include "engine/transfer_sections.h"
 #include "scene/scene.h"
 #include "sources/luminaire/luminaire_precompute.h"
 #include "sources/luminaire/luminaire_transfer_view.h"
@@ -24,15 +24,12 @@ struct LuminaireBlockBytes {
   std::size_t indirect = 0, direct_sh = 0;
 };
 
-// `photometry[j]`: the file text of luminaire j, empty when it has none. The writer keeps spans
-// into both until it writes. On one of several ranks (collective), rank 0's writer gathers the
-// blocked sections from every rank as it writes them, and the others call send_luminaire_sections
-// in the same order (engine/transfer_sections.h).
-void write_luminaire_sections(RltWriter& writer, std::span<const LuminaireTransfer> luminaires,
-                              std::span<const std::string> photometry, const RankShares& ranks,
+// Through `sink` (engine/transfer_sections.h: the writing rank adds, the others send their
+// share). `photometry[j]`: the file text of luminaire j, empty when it has none (read by the
+// writing rank only). The writer keeps spans into both until it writes.
+void write_luminaire_sections(SectionSink& sink, std::span<const LuminaireTransfer> luminaires,
+                              std::span<const std::string> photometry,
                               const LuminaireBlockBytes& block);
-void send_luminaire_sections(std::span<const LuminaireTransfer> luminaires, const RankShares& ranks,
-                             const LuminaireBlockBytes& block);
 
 // The stored photometry text of luminaire j.
 std::string_view luminaire_photometry(const RltFile& file, std::size_t j);

@@ -15,17 +15,10 @@ constexpr std::uint32_t kTransfer = rlt_fourcc("NFTR");
 
 }  // namespace
 
-void write_nearfield_sections(RltWriter& w, const NearfieldTransfer& nearfield,
-                              const RankShares& ranks) {
+void write_nearfield_sections(SectionSink& sink, const NearfieldTransfer& nearfield) {
   if (nearfield.transfer.empty()) return;
-  add_row_section(w, kTransfer, "near-field transfer", nearfield.transfer,
-                  static_cast<std::size_t>(sh_count(nearfield.sh_order)), ranks);
-}
-
-void send_nearfield_sections(const NearfieldTransfer& nearfield, const RankShares& ranks) {
-  if (nearfield.transfer.empty()) return;
-  send_row_section(nearfield.transfer, static_cast<std::size_t>(sh_count(nearfield.sh_order)),
-                   ranks);
+  sink.rows(kTransfer, "near-field transfer", nearfield.transfer,
+            static_cast<std::size_t>(sh_count(nearfield.sh_order)));
 }
 
 void read_nearfield_sections(const RltFile& file, std::size_t receivers, NearfieldTransferView& nf,

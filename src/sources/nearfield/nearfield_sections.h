@@ -7,7 +7,7 @@
 #include <cstddef>
 #include <string>
 
-#include "engine/ranks.h"
+#include "engine/transfer_sections.h"
 #include "sources/nearfield/nearfield_precompute.h"
 #include "sources/nearfield/nearfield_transfer_view.h"
 #include "store/rlt_file.h"
@@ -15,12 +15,9 @@
 
 namespace relight {
 
-// The writer keeps spans into `nearfield` until it writes. On several ranks (collective) rank 0
-// gathers the transfer's rows as it writes, and the others call send_nearfield_sections in the same
-// order.
-void write_nearfield_sections(RltWriter& writer, const NearfieldTransfer& nearfield,
-                              const RankShares& ranks);
-void send_nearfield_sections(const NearfieldTransfer& nearfield, const RankShares& ranks);
+// Through `sink` (engine/transfer_sections.h: the writing rank adds, the others send their
+// rows). The writer keeps spans into `nearfield` until it writes.
+void write_nearfield_sections(SectionSink& sink, const NearfieldTransfer& nearfield);
 
 // Fills the transfer span of `view` (its sh_order set) from `file`; InputError
 // naming `where` when they are missing or their sizes disagree.

@@ -70,54 +70,46 @@ void gather_cubemap_records(const PortalDirect& direct, const RankShares& ranks,
       kBlocksPerRound, sink);
 }
 
-void add_gathered_records(RltWriter& w, const PortalDirect& direct, std::size_t q,
-                          const RankShares& ranks) {
-  w.add_produced_section(
-      rlt_indexed('C', 'R', q), rlt_indexed_name("portal direct cubemaps", q),
-      [&direct, ranks](const RltWriter::Sink& sink) {
-        const RecordSink to_sink = [&sink](std::span<const std::uint8_t> block) {
-          sink(std::as_bytes(block));
-        };
-        gather_cubemap_records(direct, ranks, RecordPart::records, &to_sink);
-      },
-      RltElement::bytes);
-  // The offsets from the records' sizes, running over the blocks in file order.
-  w.add_produced_section(
-      rlt_indexed('C', 'O', q), rlt_indexed_name("portal direct offsets", q),
-      [&direct, ranks](const RltWriter::Sink& sink) {
-        write_running_offsets<std::uint64_t>(sink, [&](const RecordSink& sizes) {
-          gather_cubemap_records(direct, ranks, RecordPart::sizes, &sizes);
-        });
-      },
-      RltElement::u64);
-}
-
 }  // namespace
 
-void write_portal_sections(RltWriter& w, std::span<const PortalTransfer> portals,
-                           const RankShares& ranks, std::size_t indirect_block_bytes) {
+void write_portal_sections(SectionSink& sink, std::span<const PortalTransfer> portals,
+                           std::size_t indirect_block_bytes) {
   for (std::size_t q = 0; q < portals.size(); ++q) {
     const PortalTransfer& t = portals[q];
-    if (ranks.alone()) {
-      w.add_section(rlt_indexed('C', 'R', q), rlt_indexed_name("portal direct cubemaps", q),
-                    std::as_bytes(std::span(t.direct.records)));
-      w.add_u64(rlt_indexed('C', 'O', q), rlt_indexed_name("portal direct offsets", q),
-                t.direct.offsets);
+    const std::uint32_t records = rlt_indexed('C', 'R', q), offsets = rlt_indexed('C', 'O', q);
+    const std::string records_name = rlt_indexed_name("portal direct cubemaps", q);
+    const std::string offsets_name = rlt_indexed_name("portal direct offsets", q);
+    if (sink.alone()) {
+      sink.writer()->add_section(records, records_name, std::as_bytes(std::span(t.direct.records)));
+      sink.writer()->add_u64(offsets, offsets_name, t.direct.offsets);
     } else {
-      add_gathered_records(w, t.direct, q, ranks);
+      const PortalDirect& direct = t.direct;
+      const RankShares ranks = sink.ranks();
+      sink.gathered(records, records_name, RltElement::bytes,
+                    [&direct, ranks](const RltWriter::Sink* to) {
+                      if (to == nullptr) {
+                        gather_cubemap_records(direct, ranks, RecordPart::records, nullptr);
+                        return;
+                      }
+                      const RecordSink to_sink = [to](std::span<const std::uint8_t> block) {
+                        (*to)(std::as_bytes(block));
+                      };
+                      gather_cubemap_records(direct, ranks, RecordPart::records, &to_sink);
+                    });
+      // The offsets from the records' sizes, running over the blocks in file order.
+      sink.gathered(offsets, offsets_name, RltElement::u64,
+                    [&direct, ranks](const RltWriter::Sink* to) {
+                      if (to == nullptr) {
+                        gather_cubemap_records(direct, ranks, RecordPart::sizes, nullptr);
+                        return;
+                      }
+                      write_running_offsets<std::uint64_t>(*to, [&](const RecordSink& sizes) {
+                        gather_cubemap_records(direct, ranks, RecordPart::sizes, &sizes);
+                      });
+                    });
     }
-    add_transfer_section(w, rlt_indexed('P', 'I', q), rlt_indexed_name("portal indirect sh", q),
-                         t.indirect.view(), ranks, indirect_block_bytes);
-  }
-}
-
-void send_portal_sections(std::span<const PortalTransfer> portals, const RankShares& ranks,
-                          std::size_t indirect_block_bytes) {
-  for (const PortalTransfer& t : portals) {
-    for (const RecordPart part : {RecordPart::records, RecordPart::sizes}) {
-      gather_cubemap_records(t.direct, ranks, part, nullptr);
-    }
-    send_transfer_section(t.indirect.view(), ranks, indirect_block_bytes);
+    sink.transfer(rlt_indexed('P', 'I', q), rlt_indexed_name("portal indirect sh", q),
+                  t.indirect.view(), indirect_block_bytes);
   }
 }
 

@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "engine/transfer_sections.h"
 #include "scene/scene.h"
 #include "sources/portal/portal_precompute.h"
 #include "sources/portal/portal_transfer_view.h"
@@ -20,13 +21,11 @@
 
 namespace relight {
 
-// The writer keeps spans into `portals` until it writes. On one of several ranks (collective), the
-// indirect transfer ("PI", blocks of `indirect_block_bytes`) is gathered from every rank as rank 0
-// writes it; the others call send_portal_sections in the same order.
-void write_portal_sections(RltWriter& writer, std::span<const PortalTransfer> portals,
-                           const RankShares& ranks, std::size_t indirect_block_bytes);
-void send_portal_sections(std::span<const PortalTransfer> portals, const RankShares& ranks,
-                          std::size_t indirect_block_bytes);
+// Through `sink` (engine/transfer_sections.h: the writing rank adds, the others send their
+// share of the direct records and of the indirect transfer, "PI" in blocks of
+// `indirect_block_bytes`). The writer keeps spans into `portals` until it writes.
+void write_portal_sections(SectionSink& sink, std::span<const PortalTransfer> portals,
+                           std::size_t indirect_block_bytes);
 // `indirect_bytes`: the size of each portal's "PI" section (on several ranks, rank 0 holds only
 // its own blocks of it).
 nlohmann::json portal_metadata(std::span<const PortalTransfer> portals, std::size_t indirect_bytes);
