@@ -85,19 +85,18 @@ nlohmann::json bench_optimize(const BenchOptions& args) {
   OptimizeResult result;
   const double optimize_ms = median(time_ms(
       args.frames, [&](int) { result = optimize_lighting(relit, StartState{}, targets, {}); }));
-  const nlohmann::json line = {{"mode", "optimize"},
-                               {"receivers", relit.relighter().receivers()},
-                               {"luminaires", relit.scene().luminaires.size()},
-                               {"sensors", relit.scene().sensor_count()},
-                               {"frames", args.frames},
-                               {"median_ms", optimize_ms},
-                               {"relight_ms", relight_ms},
-                               {"ratio_to_relight", optimize_ms / relight_ms},
-                               {"feasible", result.feasible},
-                               {"objective", result.objective_value},
-                               {"iterations", result.iterations},
-                               {"aim_trials", result.aim_trials}};
-  return line;
+  return {{"mode", "optimize"},
+          {"receivers", relit.relighter().receivers()},
+          {"luminaires", relit.scene().luminaires.size()},
+          {"sensors", relit.scene().sensor_count()},
+          {"frames", args.frames},
+          {"median_ms", optimize_ms},
+          {"relight_ms", relight_ms},
+          {"ratio_to_relight", optimize_ms / relight_ms},
+          {"feasible", result.feasible},
+          {"objective", result.objective_value},
+          {"iterations", result.iterations},
+          {"aim_trials", result.aim_trials}};
 }
 
 }  // namespace
