@@ -102,7 +102,7 @@ TEST(Layering, AnIncludeBetweenSourceKindsOutOfOrderIsCaught) {
 // every stage of transfer code, so that sharing any of it is an upward include.
 TEST(Layering, TheReferenceTracerIncludingTransferCodeIsCaught) {
   for (const std::string header : {"engine/receivers.h", "sources/luminaire/luminaire_direct.h",
-                                   "runtime/relighter.h", "render/pixel_direct.h"}) {
+                                   "runtime/relighter.h", "render/glare.h"}) {
     const TreeCopy tree;
     tree.append("src/reference/reference_tracer.cpp", "#include \"" + header + "\"\n");
     const std::vector<std::string> v = layering_violations(tree.dir.path());

@@ -70,7 +70,7 @@ OpeningMask all_opening_points(std::size_t count);
 int opening_point_count(const OpeningMask& mask);
 
 // A luminaire as a lighting state sets it, for its exact direct light at any point: at each
-// pixel of an image (render/pixel_direct.h) and at the vertices of movable objects
+// pixel of an image (runtime/direct_light.h) and at the vertices of movable objects
 // (sources/object/object_lighting.h).
 struct LuminaireLight {
   Vec3 position;
