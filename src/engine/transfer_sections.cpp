@@ -30,13 +30,11 @@ void gather_blocks(const RankShares& ranks, std::span<const std::byte> mine,
   }
   const std::span<const std::uint8_t> bytes(reinterpret_cast<const std::uint8_t*>(mine.data()),
                                             mine.size());
-  const RecordSink to_sink = [sink](std::span<const std::uint8_t> block) {
-    (*sink)(std::as_bytes(block));
-  };
-  gather_block_records(
-      ranks, [&](std::size_t i) { return bytes.subspan(i * block_bytes, block_bytes); },
-      kGatherRoundBytes / (static_cast<std::size_t>(ranks.size()) * block_bytes),
-      sink != nullptr ? &to_sink : nullptr);
+  gather_into(sink, [&](const RecordSink* records) {
+    gather_block_records(
+        ranks, [&](std::size_t i) { return bytes.subspan(i * block_bytes, block_bytes); },
+        kGatherRoundBytes / (static_cast<std::size_t>(ranks.size()) * block_bytes), records);
+  });
 }
 
 void SectionSink::gathered(std::uint32_t type, const std::string& name, RltElement element,
@@ -74,17 +72,11 @@ void SectionSink::rows(std::uint32_t type, const std::string& name, std::span<co
     writer_->add_f32(type, name, rows);
     return;
   }
-  gathered(type, name, RltElement::f32,
-           [rows, stride, ranks = ranks_](const RltWriter::Sink* sink) {
-             if (sink == nullptr) {
-               gather_rows(ranks, stride, rows, nullptr);
-               return;
-             }
-             const RecordSink to_sink = [sink](std::span<const std::uint8_t> block) {
-               (*sink)(std::as_bytes(block));
-             };
-             gather_rows(ranks, stride, rows, &to_sink);
-           });
+  gathered(
+      type, name, RltElement::f32, [rows, stride, ranks = ranks_](const RltWriter::Sink* sink) {
+        gather_into(sink,
+                    [&](const RecordSink* records) { gather_rows(ranks, stride, rows, records); });
+      });
 }
 
 BlockedTransfer transfer_section(const RltFile& file, std::uint32_t type) {

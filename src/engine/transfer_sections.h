@@ -29,6 +29,20 @@ void add_transfer_section(RltWriter& w, std::uint32_t type, const std::string& n
 void gather_blocks(const RankShares& ranks, std::span<const std::byte> mine,
                    std::size_t block_bytes, const RltWriter::Sink* sink);
 
+// Runs `gather` (a collective over records, engine/ranks.h) with the file's `sink` as a
+// RecordSink, or with none where `sink` is null (the ranks that only send).
+template <typename Gather>
+void gather_into(const RltWriter::Sink* sink, const Gather& gather) {
+  if (sink == nullptr) {
+    gather(nullptr);
+    return;
+  }
+  const RecordSink records = [sink](std::span<const std::uint8_t> block) {
+    (*sink)(std::as_bytes(block));
+  };
+  gather(&records);
+}
+
 // Where a source kind writes its .rlt sections, whichever rank this process is: the process that
 // writes the file (rank 0, or a process alone) adds them to its writer — on several ranks as
 // sections gathered from every rank while the file is written — and every other rank sends its

@@ -12,7 +12,8 @@ namespace relight {
 
 struct SeenLight {
   Rgb irradiance;        // lx per channel on the plane of the normal, shadowed
-  Vec3 direction;        // unit, toward the light (an area light: its visible part's mean)
+  Vec3 direction;        // unit, toward the light (an area light: its visible part's mean, set
+                         // only with the luminance)
   bool area = false;     // an area light: a BRDF sees it as a diffuse surface would
   bool in_view = false;  // some of it is visible in front of the normal's plane
   // Photometric Y seen, averaged over `solid_angle` (cd/m²), and the solid angle its visible

@@ -43,9 +43,6 @@ class DirectLight {
   template <typename Visit>
   void for_each_at(Vec3 p, Vec3 n, bool with_luminance, const Visit& visit) const;
 
-  const Occluders& occluders() const { return occluders_; }
-  std::span<const LuminaireLight> luminaires() const { return lights_; }
-
  private:
   const Scene& scene_;
   const Relighter& lit_;

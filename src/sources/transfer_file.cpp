@@ -116,14 +116,9 @@ void write_gather_sections(SectionSink& sink, const GatherMatrix& g) {
                   columns ? "gather columns" : "gather values",
                   columns ? RltElement::u32 : RltElement::f32,
                   [&g, ranks, section](const RltWriter::Sink* to) {
-                    if (to == nullptr) {
-                      gather_operator_section(g, ranks, section, nullptr);
-                      return;
-                    }
-                    const RecordSink to_sink = [to](std::span<const std::uint8_t> block) {
-                      (*to)(std::as_bytes(block));
-                    };
-                    gather_operator_section(g, ranks, section, &to_sink);
+                    gather_into(to, [&](const RecordSink* records) {
+                      gather_operator_section(g, ranks, section, records);
+                    });
                   });
   }
 }

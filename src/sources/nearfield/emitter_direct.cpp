@@ -133,6 +133,7 @@ SeenLight emitter_seen_from(const PlacedEmitters& emitters, std::size_t k,
     if (!(seen.factor > 0) || !(seen.visible > 0)) continue;
     out.irradiance += radiance * (seen.factor * seen.visible);
     out.in_view = true;
+    if (!with_luminance) continue;
     const Triangle& tri = emitters.triangles[t];
     const Vec3 a = emitters.positions[tri[0]] - p, b = emitters.positions[tri[1]] - p,
                c = emitters.positions[tri[2]] - p;
@@ -142,13 +143,9 @@ SeenLight emitter_seen_from(const PlacedEmitters& emitters, std::size_t k,
     out.solid_angle += omega;
     toward += normalize(a + b + c) * omega;
   }
-  if (out.in_view) {
+  if (out.in_view && with_luminance) {
     out.direction = length(toward) > 0 ? normalize(toward) : Vec3{};
-    if (with_luminance && k < emitters.radiance.size()) {
-      out.luminance = luminance(emitters.radiance[k]);
-    } else {
-      out.solid_angle = 0;
-    }
+    out.luminance = luminance(emitters.radiance.at(k));
   }
   return out;
 }

@@ -33,8 +33,9 @@ Rgb emitter_direct_irradiance(const PlacedEmitters& emitters, const Occluders* o
 // Emitter k (PlacedEmitters::radiance order) as seen from p (unit normal n): its exact direct
 // irradiance there, as emitter_direct_irradiance takes it for its triangles; in view when some
 // of it lights p; with `with_luminance` its luminance (the Y of its radiance: an emitter is
-// uniform) and the solid angle of its triangles that light p, each times its visible fraction;
-// `direction` their solid-angle-weighted mean.
+// uniform), the solid angle of its triangles that light p, each times its visible fraction,
+// and `direction`, their solid-angle-weighted mean (a BRDF sees an emitter as diffuse: the
+// per-pixel renderers ask for neither).
 SeenLight emitter_seen_from(const PlacedEmitters& emitters, std::size_t k,
                             const Occluders* occluders, Vec3 p, Vec3 n, bool with_luminance,
                             int visibility_samples = 16);

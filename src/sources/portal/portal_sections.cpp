@@ -87,14 +87,9 @@ void write_portal_sections(SectionSink& sink, std::span<const PortalTransfer> po
       const RankShares ranks = sink.ranks();
       sink.gathered(records, records_name, RltElement::bytes,
                     [&direct, ranks](const RltWriter::Sink* to) {
-                      if (to == nullptr) {
-                        gather_cubemap_records(direct, ranks, RecordPart::records, nullptr);
-                        return;
-                      }
-                      const RecordSink to_sink = [to](std::span<const std::uint8_t> block) {
-                        (*to)(std::as_bytes(block));
-                      };
-                      gather_cubemap_records(direct, ranks, RecordPart::records, &to_sink);
+                      gather_into(to, [&](const RecordSink* records) {
+                        gather_cubemap_records(direct, ranks, RecordPart::records, records);
+                      });
                     });
       // The offsets from the records' sizes, running over the blocks in file order.
       sink.gathered(offsets, offsets_name, RltElement::u64,
