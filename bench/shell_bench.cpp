@@ -1,5 +1,5 @@
-// Portal shell benchmarks (sources/portal/shell.h), at the transfer's default N = 32, SH l < 6, per
-// state change: a CIE clear sky alone (the environment cubemap + SH projection dominate), with
+// Portal shell benchmarks (sources/portals/shell.h), at the transfer's default N = 32, SH l < 6,
+// per state change: a CIE clear sky alone (the environment cubemap + SH projection dominate), with
 // frosted glass of several widths (the frost plan reused between frames, as a run time keeps
 // it while the glass does not change; the plan alone is timed too), and with moving exterior
 // buildings (BVH rebuilt and 3×3 sub-rays per texel every frame).
@@ -11,8 +11,8 @@
 #include "light/environment.h"
 #include "light/sky_model.h"
 #include "math/cubemap.h"
-#include "sources/portal/shell.h"
-#include "sources/portal/shell_frost.h"
+#include "sources/portals/shell.h"
+#include "sources/portals/shell_frost.h"
 
 namespace relight {
 namespace {

@@ -322,7 +322,7 @@ nlohmann::json run_bench(const BenchOptions& args) {
     line["sum_ms"] = median(sum_ms);
     line["sum_ratio"] = bytes / (median(sum_ms) * 1e-3) / 1e9 / streaming;
     line["shell_ms"] = median(shell_ms);
-    // The suns traced exactly behind clear glass (sources/portal/portal_sun.h): the direct
+    // The suns traced exactly behind clear glass (sources/portals/portal_sun.h): the direct
     // sun at every receiver and its bounce, of which the bounce.
     line["suns"] = relighter.suns().size();
     line["sun_ms"] = median(sun_ms);
@@ -330,7 +330,7 @@ nlohmann::json run_bench(const BenchOptions& args) {
   }
   if (args.environment) {
     // Clustering and the cuts' sums, the bounce, and the objects' part (their shadows and
-    // light through the cuts, sources/cuts/environment_objects.h).
+    // light through the cuts, sources/environment/environment_objects.h).
     line["environment_ms"] = median(environment_ms);
     line["bounce_ms"] = median(environment_bounce_ms);
     line["objects_ms"] = median(environment_objects_ms);
@@ -360,7 +360,7 @@ nlohmann::json run_bench(const BenchOptions& args) {
     line["bounce_ms"] = median(bounce_ms);
   }
   if (args.objects) {
-    // The objects' term (sources/object/object_lighting.h): their direct light and shadows,
+    // The objects' term (sources/objects/object_lighting.h): their direct light and shadows,
     // their transfer traced again (the paper's basis irradiance), and the bounce.
     const ObjectLighting& o = *relighter.objects();
     line["objects"] = state.objects.size();

@@ -1,7 +1,7 @@
 // `relight analyze SCENE.rlt --sh-energy [-o FILE.csv]`: analyses of a precomputed file.
 // --sh-energy (the only one so far): per portal and colour channel, how much each SH order
 // of the stored indirect transfer can carry (Yue et al. 2009's Eq. 4–5 and
-// Figure 8; sources/portal/sh_energy.h), as a table on stdout and optionally a CSV
+// Figure 8; sources/portals/sh_energy.h), as a table on stdout and optionally a CSV
 // `portal,l,channel,energy,share,cumulative,shell_energy` (with the energy per order of the
 // shell the relighter projects for the scene's state).
 #include <array>
@@ -17,8 +17,8 @@
 #include "cli/commands.h"
 #include "common/atomic_file.h"
 #include "common/input_error.h"
-#include "sources/portal/portal_lighting.h"
-#include "sources/portal/sh_energy.h"
+#include "sources/portals/portal_lighting.h"
+#include "sources/portals/sh_energy.h"
 #include "sources/transfer_file.h"
 
 namespace relight {

@@ -9,7 +9,7 @@
 #include "cli/commands.h"
 #include "light/luminaire_frame.h"
 #include "scene/scene_loader.h"
-#include "sources/portal/portal_geometry.h"
+#include "sources/portals/portal_geometry.h"
 #include "trace/traced_scene.h"
 
 namespace relight {

@@ -1,7 +1,7 @@
 // `relight nearfield SCENE.rlt [--state STATE.json] --epsilon E [--max-samples N]
 //   [--method adaptive|icp|truth] [--face-size K] [--scene-occlusion] [-o IMAGE] [view options]`
 // Lights a precomputed scene's receivers by its near-field emitters as the lighting state places
-// them (Sun 2005; sources/nearfield/nearfield_lighting.h), with the chosen sampling method, and
+// them (Sun 2005; sources/emitters/nearfield_lighting.h), with the chosen sampling method, and
 // compares with the truth (a sample at every receiver), on the direct light the sampling decides
 // (interreflection, when on, is the same for both). Prints one JSON line: method, epsilon,
 // max_samples, receivers, samples, evaluations, placement_s, sampling_s, reconstruction_s, truth_s,
@@ -18,10 +18,10 @@
 #include "cli/view_args.h"
 #include "common/input_error.h"
 #include "math/sh.h"
-#include "scene/camera.h"
 #include "render/vertex_shading.h"
 #include "runtime/relit_scene.h"
-#include "sources/nearfield/nearfield_lighting.h"
+#include "scene/camera.h"
+#include "sources/emitters/nearfield_lighting.h"
 #include "sources/transfer_file.h"
 
 namespace relight {
@@ -84,9 +84,15 @@ int run_nearfield(const NearfieldArgs& args) {
         args.view.camera.empty() ? std::nullopt : std::optional<std::string>(args.view.camera),
         t.bounds());
     const PinholeCamera pinhole = make_pinhole_camera(camera, args.view.width, args.view.height);
-    const ShadedImages images = shade_vertices(
-        pinhole,
-        {relit.opaque_tracer(), t.positions, t.triangles, t.vertex_albedo, irradiance, {}, {}, {}, {}});
+    const ShadedImages images = shade_vertices(pinhole, {relit.opaque_tracer(),
+                                                         t.positions,
+                                                         t.triangles,
+                                                         t.vertex_albedo,
+                                                         irradiance,
+                                                         {},
+                                                         {},
+                                                         {},
+                                                         {}});
     const DisplayOptions display = display_options(args.view);
     const bool lux = display.false_color && display.false_color->quantity == Quantity::kIlluminance;
     write_image(args.view.output, lux ? images.illuminance : images.luminance, display);

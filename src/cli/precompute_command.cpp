@@ -20,14 +20,14 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.h"
-#include "engine/mpi_ranks.h"
 #include "cli/precompute_run.h"
 #include "common/input_error.h"
 #include "common/memory.h"
+#include "engine/mpi_ranks.h"
 #include "engine/transfer_blocks.h"
 #include "math/sh.h"
 #include "scene/scene_loader.h"
-#include "sources/object/object_sections.h"
+#include "sources/objects/object_sections.h"
 #include "sources/precompute.h"
 #include "sources/transfer_file.h"
 

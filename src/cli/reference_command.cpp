@@ -14,14 +14,14 @@
 #include "cli/reference_run.h"
 #include "cli/view_args.h"
 #include "common/input_error.h"
+#include "light/emitter_placement.h"
 #include "light/environment_map_io.h"
 #include "light/luminaire_frame.h"
 #include "reference/reference_tracer.h"
 #include "render/sensor_report.h"
 #include "runtime/lighting_state.h"
 #include "scene/scene_loader.h"
-#include "light/emitter_placement.h"
-#include "sources/portal/portal_lighting.h"
+#include "sources/portals/portal_lighting.h"
 #include "trace/traced_scene.h"
 
 namespace relight {

@@ -1,5 +1,5 @@
 // What this processor can run, checked once, for the hot loops that have an AVX2 clone beside
-// their portable one (engine/transfer_blocks.h's binary16 sum, sources/portal's pulse sum). The
+// their portable one (engine/transfer_blocks.h's binary16 sum, sources/portals's pulse sum). The
 // product never requires these: each loop falls back to its portable form.
 #pragma once
 

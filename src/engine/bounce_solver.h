@@ -73,7 +73,7 @@ int solve_bounces_rgb(const GatherOperator& gather, const Receivers& receivers,
                       const BounceSettings& settings);
 
 // A gather operator given row by row, for light the run time bounces through more than the
-// stored G (the room's rows extended by movable objects', sources/object/object_transfer.h):
+// stored G (the room's rows extended by movable objects', sources/objects/object_transfer.h):
 // rows [0, reflecting) reflect with `albedo` (3 per row) and are solved for; rows
 // [reflecting, rows) (sensors) are gathered once from the converged light. gather_row(i,
 // reflected, sum) sets sum to Σ_j A_ij · reflected[3j … 3j+2] (RGB), j < reflecting; it is

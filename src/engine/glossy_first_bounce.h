@@ -1,8 +1,8 @@
 // The first reflection of a point light's (or the sun's) direct light off glossy surfaces: what a
 // polished floor throws onto the ceiling from a downlight or a sun patch — exactly in direction, at
 // run time, through the stored gather operator G. Used by the luminaires' term (per luminaire,
-// sources/luminaire/luminaire_lighting.h) and the suns traced behind clear glass
-// (sources/portal/portal_lighting.h).
+// sources/luminaires/luminaire_lighting.h) and the suns traced behind clear glass
+// (sources/portals/portal_lighting.h).
 //
 // The diffuse transfer bounces a glossy vertex j's light as a Lambertian surface of its
 // hemispherical albedo ρh_j (material/material_reflectance.h): receiver r gathers G_rj ρh_j E_j.

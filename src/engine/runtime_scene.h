@@ -74,7 +74,7 @@ struct BoundingSphere {
 // through the sphere's centre with the normal of the glass's largest triangle, the extent of
 // the glass vertices along two axes of that plane and their largest distance from it
 // (`depth`; 0 for flat glass). Rays of the sun that cannot cross the rectangle grown by the
-// slab cannot pass the glass (sources/portal/portal_sun.cpp culls the room's triangles so).
+// slab cannot pass the glass (sources/portals/portal_sun.cpp culls the room's triangles so).
 struct GlassBounds {
   BoundingSphere sphere;
   Vec3 normal{0, 1, 0}, u{1, 0, 0}, v{0, 0, 1};       // unit; u, v in the plane

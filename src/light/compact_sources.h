@@ -3,8 +3,8 @@
 // lamp lands in one or two leaves, so its shadow's edge could move by half a leaf and its penumbra
 // would be a step between receivers. Such a source is taken out of the environment's moments
 // (light/environment_clusters.h) and its disc traced from every point that needs it
-// (sources/cuts/compact_light.h; pixels in `render --direct pixel`), as the window's sun is
-// (sources/portal/portal_sun.h); the rest of the environment stays in the cuts.
+// (sources/environment/compact_light.h; pixels in `render --direct pixel`), as the window's sun is
+// (sources/portals/portal_sun.h); the rest of the environment stays in the cuts.
 //
 //  * sky: its sun disc (light/sky_model.h), when above the horizon.
 //  * map: every 8-connected region (wrapping in azimuth) of texels at least kCompactContrast

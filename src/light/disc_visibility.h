@@ -1,6 +1,6 @@
-// The fraction of a disc source seen from a point: the window's sun (sources/portal/portal_sun.h)
-// and the compact sources of a top-level environment (sources/cuts/compact_light.h), each with
-// its own test of one direction (`seen`). Two steps: 9 directions — the disc's centre and 8
+// The fraction of a disc source seen from a point: the window's sun (sources/portals/portal_sun.h)
+// and the compact sources of a top-level environment (sources/environment/compact_light.h), each
+// with its own test of one direction (`seen`). Two steps: 9 directions — the disc's centre and 8
 // points on its rim — and when they disagree (the point is in a penumbra) 80 directions: 40
 // spread evenly over the disc's area (a Vogel spiral, as light/sky_model.h sun_disc_spiral) and
 // their reflections through its centre. The pairs put a straight edge's 50 % point exactly where
@@ -11,7 +11,7 @@
 // straight edge that cuts off less than the segment between two neighbouring rim points (1.2 % of
 // the disc) goes unseen. Unoccluded, the mean of n·ω over the disc is n·s exactly (∫_disc ω dω =
 // s·π sin²r), so E = E_n · f · max(0, n · s) with f = 1 is the closed form.
-// Pinned by tests/sources/portal/portal_sun_test.cpp (f at and across a window's edge against the
+// Pinned by tests/sources/portals/portal_sun_test.cpp (f at and across a window's edge against the
 // closed form).
 #pragma once
 

@@ -4,7 +4,7 @@
 //     M_k = ∫_{cell(k)} L(ω) ω dω   (per linear Rec.709 channel; cd/m² · sr),
 // where a leaf's cell is its Voronoi cell on the sphere (the directions nearer to it than to
 // any other leaf: math/point_grid.h nearest) and an inner node's the union of its leaves'.
-// With a binary visibility cut at a point of normal n (sources/cuts/self_visibility.h),
+// With a binary visibility cut at a point of normal n (sources/environment/self_visibility.h),
 //     E = Σ_{k visible} n · M_k
 // is the irradiance there, exact on every node whose leaves' visibility agrees and whose
 // directions lie above the surface: the cosine is integrated with the light, not sampled at

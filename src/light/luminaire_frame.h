@@ -3,7 +3,7 @@
 // (RGB) toward this world direction". Frame convention (docs/scene-format.md): γ = 0 along
 // aim, C0 along c0, C90 = cross(c0, aim), so C angles run counter-clockwise seen from above for a
 // downlight, as in IES LM-63 type C — a left-handed frame (docs/decisions.md, "The photometric
-// frame is left-handed"; pinned by tests/sources/luminaire/luminaire_sh_test.cpp).
+// frame is left-handed"; pinned by tests/sources/luminaires/luminaire_sh_test.cpp).
 #pragma once
 
 #include <vector>

@@ -5,10 +5,31 @@
 // and `solid_angle` as a glare source (runtime/direct_light.h gathers every kind).
 #pragma once
 
+#include <string_view>
+
 #include "math/rgb.h"
 #include "math/vec3.h"
 
 namespace relight {
+
+// Which kind of light a point sees: a luminaire, a sun behind a window's clear glass, a
+// near-field emitter, a top-level environment's compact source (its sun).
+enum class LightKind { kLuminaire, kSun, kEmitter, kEnvironment };
+
+// "luminaire", "sun", "emitter", "environment": the words of the scene format.
+constexpr std::string_view light_kind_name(LightKind kind) {
+  switch (kind) {
+    case LightKind::kLuminaire:
+      return "luminaire";
+    case LightKind::kSun:
+      return "sun";
+    case LightKind::kEmitter:
+      return "emitter";
+    case LightKind::kEnvironment:
+      return "environment";
+  }
+  return "";
+}
 
 struct SeenLight {
   Rgb irradiance;        // lx per channel on the plane of the normal, shadowed

@@ -115,7 +115,7 @@ double sun_disc_luminance(const SunDisc& disc, Vec3 dir);
 Vec3 sun_disc_direction(const SunDisc& disc, double x, double y);
 // `count` directions spread evenly over the disc's area (a Vogel spiral): point i at radius
 // √((i + ½)/count) and angle i times the golden angle. The exact sun traces them for a
-// penumbra (sources/portal/portal_sun.h); the visibility cuts spread the disc's light over
+// penumbra (sources/portals/portal_sun.h); the visibility cuts spread the disc's light over
 // them (light/environment_clusters.h).
 std::vector<Vec3> sun_disc_spiral(const SunDisc& disc, int count);
 

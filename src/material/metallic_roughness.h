@@ -57,7 +57,7 @@ class MetallicRoughnessToward {
   // that do not depend on v: Σ_j e_j diffuse(l_j) = diffuse_of_sums(Σ e_j, Σ e_j A_j, Σ e_j B_j)
   // with (A_j, B_j) = specular_albedo_split(n·l_j, the BRDF's roughness), as the layer's factor
   // 1 − E_s(l) = 1 − F0·A − B is linear in them (so a view can keep the sums while the light
-  // stays, sources/cuts/environment_lighting.h).
+  // stays, sources/environment/environment_lighting.h).
   Rgb diffuse_of_sums(const Rgb& e, const Rgb& a, const Rgb& b) const;
 
  private:

@@ -9,7 +9,7 @@
 // planes of floats: MomentLightPlanes). The sum is
 //     Σ_k w_k · e_k · F(v·h) D(n·h) V(n·l, n·v)   over lights with n·l_k > 0 and some e_c > 0,
 // exactly which lights and which terms MetallicRoughnessToward::specular sums one at a time
-// (sources/cuts/environment_lighting.h for_each_light), rearranged for float:
+// (sources/environment/environment_lighting.h for_each_light), rearranged for float:
 //     v·h = √((1 + v·l) / 2),  |l + v|² = 2 (1 + v·l),
 //     D V = α² / (2π) · |l + v|⁴ / (S² · (n·l Λ_v + n·v Λ_l)),
 //     S = |n × (l + v)|² + (n·(l + v))² α²,  Λ_x = √(α² + (1 − α²)(n·x)²),

@@ -1,5 +1,5 @@
 // The texels of a cubemap (math/cubemap.h) that a convex polygon covers, seen from the cube's
-// centre: the cells a window covers seen from a receiver (sources/portal/portal_direct.h),
+// centre: the cells a window covers seen from a receiver (sources/portals/portal_direct.h),
 // found without sampling the window. The polygon — its vertices relative to the centre, in
 // order around it, planar and convex, its plane not through the centre — is clipped to the
 // half-space d · front > 0 and to each face's pyramid (Sutherland & Hodgman 1974), projected

@@ -39,7 +39,8 @@ struct ValueCut {
 
 // Appends the node of height h starting at leaf `first_leaf` (the end of `out`) with value v,
 // merging it with its left sibling while they are of equal height and value.
-// Inline: called once a leaf where cuts are made leaf by leaf (sources/cuts/environment_objects.h).
+// Inline: called once a leaf where cuts are made leaf by leaf
+// (sources/environment/environment_objects.h).
 inline void push_cut_node(ValueCut& out, std::uint64_t first_leaf, int h, float v) {
   while (!out.height.empty() && out.height.back() == h && out.value.back() == v &&
          (first_leaf & ((std::uint64_t{2} << h) - 1)) == (std::uint64_t{1} << h)) {

@@ -4,7 +4,7 @@
 // placed it), counter-clockwise seen from above (the right-handed turn about +y), then moved
 // by `translate` (m, from where the scene put it). Pinned by the lighting-state tests of
 // exterior objects and emitters (tests/runtime/lighting_state_portals_test.cpp,
-// tests/sources/nearfield/nearfield_lighting_test.cpp); VerticalTurn by
+// tests/sources/emitters/nearfield_lighting_test.cpp); VerticalTurn by
 // tests/math/vertical_turn_test.cpp.
 #pragma once
 

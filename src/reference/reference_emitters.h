@@ -5,7 +5,7 @@
 //     E ≈ L_i · cosθ_x · cosθ_y / |y − x|² · V(x, y) · A_i / P_i,
 // V by a shadow ray against the static scene. Emitters are neither occluders nor reflectors
 // (docs/scene-format.md, "Emitters"), so continuation rays pass through them and no light is
-// counted twice. Independent of the fast path's exact direct (sources/nearfield/emitter_direct.h)
+// counted twice. Independent of the fast path's exact direct (sources/emitters/emitter_direct.h)
 // and of its sampling; tests/reference/reference_emitters_test.cpp checks it against the closed
 // form of a rectangle.
 #pragma once

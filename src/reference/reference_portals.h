@@ -58,7 +58,7 @@ struct ReferenceExterior {
 };
 
 // Frosted glass as the reference sees it: the shell's flux-preserving von Mises–Fisher
-// scattering (sources/portal/shell_frost.h) taken continuously. Light arriving from ω in front
+// scattering (sources/portals/shell_frost.h) taken continuously. Light arriving from ω in front
 // of the window (c(ω) = ω·outward > 0) leaves toward ω' with weight K(ω, ω')·c(ω')/Z(ω),
 // K = exp((ω·ω' − 1)/σ²), σ = frost_deg, Z(ω) = ∫_{c>0} K(ω, ω'')·c(ω'') dω'', so that
 //     L'(ω') = ∫_{c>0} L(ω)·c(ω)·K(ω, ω')/Z(ω) dω.

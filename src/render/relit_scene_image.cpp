@@ -297,7 +297,7 @@ class GlossyShading {
 
  private:
   // The top-level environment's light that room vertex v reflects toward v_out (unit) by
-  // `brdf`, through its self-visibility cut (sources/cuts/environment_lighting.h); 0 without
+  // `brdf`, through its self-visibility cut (sources/environment/environment_lighting.h); 0 without
   // an environment; its compact sources are traced per pixel in direct(). The BRDF samples of
   // glossy_pixel_radiance see no environment past the scene (outside()), so it is counted once.
   Rgb environment_reflection(std::size_t v, const MetallicRoughness& brdf, Vec3 v_out) const {

@@ -10,13 +10,14 @@
 #include <algorithm>
 #include <chrono>
 #include <mutex>
+#include <memory>
 #include <numeric>
 #include <optional>
 
 #include "light/environment.h"
 #include "math/rgb.h"
 #include "scene/json_node.h"
-#include "sources/portal/portal_sun.h"
+#include "engine/light_term.h"
 
 namespace relight {
 
@@ -119,6 +120,9 @@ LightingState daylight_alone(LightingState state) {
 
 namespace {
 
+// Points on a luminous area for its visibility: the suns, the only lights here, have none.
+constexpr int kOpeningSamples = 16;
+
 // A stream's thread time: all its hours, and their shells.
 struct StreamSeconds {
   double hours = 0, shells = 0;
@@ -141,13 +145,14 @@ StreamSeconds sweep_hours(RelitScene& relit, LightingState state, std::span<cons
     }
     const std::vector<Rgb> e = relit.sensor_irradiance();
     // ASE's direct sunlight: the suns traced past the room and the movable objects as placed —
-    // as the relight traced them at the sensors when there are no objects, else again here.
-    std::optional<SunGeometry> geometry;
+    // as the relight traced them at the sensors when there are no objects, else again here,
+    // through the portals' exact direct light (engine/light_term.h).
+    const ObjectLighting* objects = relighter.objects();
     const std::vector<Rgb> traced =
-        relighter.objects() == nullptr ? relit.sensor_sun_irradiance() : std::vector<Rgb>{};
-    if (!relighter.suns().empty() && traced.empty()) {
-      geometry.emplace(relighter.sun_geometry());
-      if (relighter.objects() != nullptr) geometry->occluders = relighter.objects()->occluders();
+        objects == nullptr ? relit.sensor_sun_irradiance() : std::vector<Rgb>{};
+    std::unique_ptr<const DirectLights> suns;
+    if (objects != nullptr) {
+      suns = relighter.portals().direct_lights(objects->occluders(), kOpeningSamples);
     }
     float* const lux = out.lux.data() + h * sensors.size();
     float* const sun_lux = out.direct_sun_lux.data() + h * sensors.size();
@@ -156,8 +161,8 @@ StreamSeconds sweep_hours(RelitScene& relit, LightingState state, std::span<cons
       Rgb sun;
       if (!traced.empty()) {
         sun = traced[sensors[c]];
-      } else if (geometry) {
-        sun = sun_irradiance(*geometry, relighter.suns(), points[c], normals[c]);
+      } else if (suns) {
+        sun = suns->irradiance_at(points[c], normals[c]);
       }
       sun_lux[c] = static_cast<float>(luminance(sun));
     }

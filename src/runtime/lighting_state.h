@@ -1,37 +1,16 @@
-// The run-time lighting state (docs/lighting-state.md): what a designer changes without
-// a new precompute, one part per source kind (each kind's state is its module's: luminaires,
-// portals, near-field emitters), and how a state document is read into it. Applied on top of the
-// scene's own values, so a state file names only what it changes. A luminaire's position is fixed
-// by the precompute: moving it is refused.
+// Reading a lighting state document (docs/lighting-state.md) into the run-time lighting state
+// (light/lighting_state.h), applied on top of the scene's own values, so a state file names only
+// what it changes; and what follows from a state (maintained, the scene it lights). A
+// luminaire's position is fixed by the precompute: moving it is refused.
 #pragma once
 
 #include <filesystem>
-#include <optional>
-#include <vector>
-
 #include <nlohmann/json.hpp>
 
-#include "light/emitter_state.h"
+#include "light/lighting_state.h"
 #include "scene/scene.h"
-#include "sources/luminaire/luminaire_state.h"
-#include "sources/portal/portal_state.h"
 
 namespace relight {
-
-struct LightingState {
-  std::vector<LuminaireState> luminaires;  // scene order
-  std::vector<PortalState> portals;        // scene order
-  std::vector<EmitterState> emitters;      // scene order
-  std::vector<MovablePlacement> objects;   // movable objects, scene order
-  // The scene's materials with the state's edits (albedo, metallic, roughness), scene order. Window
-  // glass is not edited here (its look is its portal's tint and frost).
-  std::vector<Material> materials;
-  // The top-level environment: swapped, rotated or its sky changed; present exactly when the scene
-  // has one.
-  std::optional<EnvironmentSpec> environment;
-};
-
-LightingState default_lighting_state(const Scene& scene);
 
 // Applies a state document to `state`. `where` names it in messages (a file or
 // "message"); relative distribution files resolve against `base_dir`.

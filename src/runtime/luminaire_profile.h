@@ -1,10 +1,10 @@
 // A luminaire's distribution as the studio draws it: its intensity along the C-planes and
-// the SH approximation the transfer lights with (sources/luminaire/distribution_profile.h),
+// the SH approximation the transfer lights with (sources/luminaires/distribution_profile.h),
 // loaded from the distribution a lighting state names.
 #pragma once
 
 #include "scene/distribution_spec.h"
-#include "sources/luminaire/distribution_profile.h"
+#include "sources/luminaires/distribution_profile.h"
 
 namespace relight {
 

@@ -48,45 +48,29 @@ SunBounce sun_bounce(const RelighterSettings& settings, bool sensors_only) {
   return settings.warm_sun_bounce ? SunBounce::kWarm : SunBounce::kCold;
 }
 
+LightTermSettings light_term_settings(const RelighterSettings& settings, SunBounce sun_bounce) {
+  return {settings.window, settings.emitters, sun_bounce, settings.environment_bounce};
+}
+
 }  // namespace
 
 Relighter::Relighter(TransferView transfer, const Scene& scene, const RelighterSettings& settings)
     : transfer_(std::move(transfer)),
-      luminaire_specs_(scene.luminaires),
       runtime_(make_runtime_scene(transfer_, scene,
                                   settings.sensors_only && can_read_sensors_only(transfer_, scene),
                                   settings.sensor_importance)),
-      luminaires_(
-          {transfer_.luminaires, transfer_.receivers, transfer_.sh_order, transfer_.direct_sh_mode},
-          scene, settings.window),
-      portals_({transfer_.portals, transfer_.receivers, transfer_.portal_sh_order},
-               runtime_ ? &*runtime_ : nullptr, scene,
-               sun_bounce(settings, runtime_ && runtime_->has_sensor_importance())),
+      lights_(transfer_, runtime_ ? &*runtime_ : nullptr, scene,
+              light_term_settings(
+                  settings, sun_bounce(settings, runtime_ && runtime_->has_sensor_importance()))),
       state_(default_lighting_state(scene)),
       bounce_(bounce_settings(scene)),
       vertex_albedo_(transfer_.scene.vertex_albedo),
       warm_sun_bounce_(settings.warm_sun_bounce),
       sensors_only_(settings.sensors_only && can_read_sensors_only(transfer_, scene)) {
   make_glossy_bounce(scene.materials, transfer_.scene.vertex_albedo);
-  terms_.push_back({&luminaires_, {}});
-  terms_.push_back({&portals_, {}});
-  if (!scene.emitters.empty()) {
-    emitters_.emplace(transfer_.nearfield, *runtime_, scene, settings.emitters);
-    terms_.push_back({&*emitters_, {}});
-  }
-  if (scene.environment) {
-    if (transfer_.cuts.directions.empty()) {
-      throw std::invalid_argument(
-          "Relighter: a scene with a top-level environment needs visibility cuts in its "
-          "transfer (run relight precompute again)");
-    }
-    environment_.emplace(transfer_.cuts, *runtime_, transfer_.objects);
-    environment_->set_bounce(settings.environment_bounce);
-    environment_->set_environment(state_.environment);
-    terms_.push_back({&*environment_, {}});
-  }
-  for (Term& term : terms_) {
-    for (PartialSum& sum : term.sums) sum.values.assign(3 * transfer_.receivers, 0.0f);
+  for (LightTerm* light : lights_.all()) {
+    terms_.push_back({light, {}});
+    for (PartialSum& sum : terms_.back().sums) sum.values.assign(3 * transfer_.receivers, 0.0f);
   }
   if (!scene.objects.empty()) {
     if (!runtime_->can_bounce()) {
@@ -104,14 +88,23 @@ Relighter::Relighter(TransferView transfer, const Scene& scene, const RelighterS
   }
 }
 
+void Relighter::set_glossy(const GlossyFirstBounce* glossy) {
+  for (LightTerm* light : lights_.all()) light->set_glossy(glossy);
+}
+
+void Relighter::invalidate(const LightTerm* source) {
+  for (Term& term : terms_) {
+    if (term.source == source) term.sums[0].valid = term.sums[1].valid = false;
+  }
+}
+
 void Relighter::make_glossy_bounce(std::span<const Material> materials,
                                    std::span<const float> albedo) {
   glossy_stale_ = false;
   const std::vector<std::uint32_t>& material_of = transfer_.scene.vertex_material;
   GlossyMaterials glossy = glossy_materials(materials);
   if (glossy.empty() || !runtime_ || !runtime_->can_bounce() || material_of.empty()) {
-    luminaires_.set_glossy(nullptr);
-    portals_.set_glossy(nullptr);
+    set_glossy(nullptr);
     glossy_bounce_.reset();
     mirrors_.reset();
     return;
@@ -139,30 +132,19 @@ void Relighter::make_glossy_bounce(std::span<const Material> materials,
                            std::move(glossy_of), std::move(glossy.brdf), albedo, bounce_,
                            &*mirrors_);
   } catch (...) {
-    luminaires_.set_glossy(nullptr);
-    portals_.set_glossy(nullptr);
+    set_glossy(nullptr);
     throw;
   }
-  luminaires_.set_glossy(&*glossy_bounce_);
-  portals_.set_glossy(&*glossy_bounce_);
+  set_glossy(&*glossy_bounce_);
 }
 
 void Relighter::add_glossy(std::span<float> out) const {
-  luminaires_.add_glossy(out);
-  portals_.add_glossy(out);
+  for (const LightTerm* light : lights_.all()) light->add_glossy(out);
 }
 
 void Relighter::set_state(const LightingState& state) {
-  const auto invalidate = [this](const SourceTerm* source) {
-    for (Term& term : terms_) {
-      if (term.source == source) term.sums[0].valid = term.sums[1].valid = false;
-    }
-  };
-  if (luminaires_.set_state(state.luminaires)) invalidate(&luminaires_);
-  if (portals_.set_state(state.portals)) invalidate(&portals_);
-  if (emitters_ && emitters_->set_state(state.emitters)) invalidate(&*emitters_);
-  if (environment_ && environment_->set_environment(state.environment)) {
-    invalidate(&*environment_);
+  for (LightTerm* light : lights_.all()) {
+    if (light->set_state(state)) invalidate(light);
   }
   if (objects_ && objects_->set_state(state.objects)) objects_dirty_ = true;
   // A state made without materials (LightingState{} filled by hand) keeps the scene's.
@@ -174,11 +156,10 @@ void Relighter::set_state(const LightingState& state) {
 }
 
 void Relighter::set_environment_bounce(bool bounce) {
-  if (!environment_) return;
-  environment_->set_bounce(bounce);
-  for (Term& term : terms_) {
-    if (term.source == &*environment_) term.sums[0].valid = term.sums[1].valid = false;
-  }
+  EnvironmentLighting* environment = lights_.environment();
+  if (environment == nullptr) return;
+  environment->set_bounce(bounce);
+  invalidate(environment);
 }
 
 void Relighter::set_materials(const std::vector<Material>& materials) {
@@ -189,7 +170,7 @@ void Relighter::set_materials(const std::vector<Material>& materials) {
   // An edit lights the sensors through the whole room's light: every row from now on.
   if (sensors_only_) {
     sensors_only_ = false;
-    portals_.set_sun_bounce(warm_sun_bounce_ ? SunBounce::kWarm : SunBounce::kCold);
+    lights_.portals().set_sun_bounce(warm_sun_bounce_ ? SunBounce::kWarm : SunBounce::kCold);
     for (Term& term : terms_) term.sums[0].valid = term.sums[1].valid = false;
   }
   const std::vector<std::uint32_t>& material_of = transfer_.scene.vertex_material;
@@ -268,25 +249,28 @@ void Relighter::update_objects() {
   add_glossy(room_light_);
   glossy_dirty_ = false;
   if (!light_changed && !objects_dirty_) return;
-  const std::vector<LuminaireLight> lights = luminaires_.lights(luminaire_specs_);
+  const PortalSetLighting& portals = lights_.portals();
+  const std::vector<LuminaireLight> lights = lights_.luminaires().lights();
   const std::vector<LuminaireLight> sensor_lights =
-      luminaires_.lights(luminaire_specs_, kSensorOpeningSamples);
+      lights_.luminaires().lights(kSensorOpeningSamples);
   ObjectLightInputs in{
-      room_light_, lights, sensor_lights, portals_.suns(), std::nullopt, nullptr, {}, {}, {},
+      room_light_, lights, sensor_lights, portals.suns(), std::nullopt, nullptr, {}, {}, {},
       {},          {}};
-  if (!portals_.suns().empty()) in.sun_geometry.emplace(portals_.sun_geometry());
-  if (environment_) {
+  if (!portals.suns().empty()) in.sun_geometry.emplace(portals.sun_geometry());
+  if (EnvironmentLighting* environment = lights_.environment(); environment != nullptr) {
     // The environment's light on and around the objects as placed, through the cuts.
-    environment_->update_objects(objects_->placed(), state_.objects);
-    in.extra_room = environment_->object_room_delta();
-    in.extra_objects = environment_->object_direct();
-    in.traced_room = environment_->object_room_compact();
-    in.traced_objects = environment_->object_compact();
+    environment->update_objects(objects_->placed(), state_.objects);
+    in.extra_room = environment->object_room_delta();
+    in.extra_objects = environment->object_direct();
+    in.traced_room = environment->object_room_compact();
+    in.traced_objects = environment->object_compact();
   }
-  if (emitters_) in.emitters = &emitters_->placed();
-  if (portals_.size() > 0) {
-    in.glass = [this](std::uint32_t p, Vec3 direction) {
-      return portals_.portal(p).shell.radiance(direction);
+  if (const EmitterLighting* emitters = lights_.emitters(); emitters != nullptr) {
+    in.emitters = &emitters->placed();
+  }
+  if (portals.size() > 0) {
+    in.glass = [&portals](std::uint32_t p, Vec3 direction) {
+      return portals.portal(p).shell.radiance(direction);
     };
   }
   objects_->update(in, light_changed);
@@ -302,7 +286,7 @@ void Relighter::relight(std::span<float> out, bool include_direct) {
     make_glossy_bounce(state_.materials, vertex_albedo_);
     glossy_dirty_ = true;
   }
-  if (emitters_) emitters_->update();  // its sampling and bounce, if its state changed
+  for (LightTerm* light : lights_.all()) light->update();  // a sampling or bounce left for now
   if (!objects_) {
     if (!albedo_edit_) {
       sum_terms(include_direct ? 1 : 0, out);

@@ -1,11 +1,11 @@
-// The run-time half of precomputed transfer: lighting state → small
-// weight vectors → one weighted sum over the stored transfer → irradiance per receiver. Each
-// source kind is one term (engine/source_term.h) owned by its module: the luminaires
-// (sources/luminaire/luminaire_lighting.h), the portals (sources/portal/portal_lighting.h) and
-// the near-field emitters (sources/nearfield/emitter_lighting.h).
-// The Relighter hands each kind its part of the state, keeps a partial sum per kind, and
-// sums a kind again only after its state changed; relight() allocates nothing and uses every
-// core.
+// The run-time half of precomputed transfer: lighting state → small weight vectors → one weighted
+// sum over the stored transfer → irradiance per receiver. The Relighter is the list of the kinds
+// of light (sources/light_terms.h), each known only through the contract of engine/light_term.h
+// (its part of the state, its sum over a block, its glossy first reflection), plus the
+// corrections above them: the live material edit (engine/albedo_edit.h), the glossy surfaces'
+// first bounce (engine/glossy_first_bounce.h) and the movable objects
+// (sources/objects/object_lighting.h). It keeps a partial sum per kind and sums a kind again only
+// after its state changed; relight() allocates nothing and uses every core.
 #pragma once
 
 #include <array>
@@ -20,11 +20,8 @@
 #include "math/sh_window.h"
 #include "runtime/lighting_state.h"
 #include "scene/scene.h"
-#include "sources/cuts/environment_lighting.h"
-#include "sources/luminaire/luminaire_lighting.h"
-#include "sources/nearfield/emitter_lighting.h"
-#include "sources/object/object_lighting.h"
-#include "sources/portal/portal_lighting.h"
+#include "sources/light_terms.h"
+#include "sources/objects/object_lighting.h"
 #include "sources/transfer_view.h"
 
 namespace relight {
@@ -43,7 +40,7 @@ struct RelighterSettings {
   // glossy materials, whose light at the sensors depends on the whole room's, and from the
   // first state that edits materials on.
   bool sensors_only = false;
-  // The top-level environment's interreflection added (sources/cuts/environment_lighting.h);
+  // The top-level environment's interreflection added (sources/environment/environment_lighting.h);
   // false: its direct light alone, and the movable objects' change to it alone, nothing
   // bounced (`--max-bounces 1`).
   bool environment_bounce = true;
@@ -67,18 +64,19 @@ class Relighter {
   // state's material edits (engine/albedo_edit.h), the interreflected light of the edited
   // room: converged, or after set_material_bounces(n ≥ 0), n bounces of the edit's light (a
   // first, approximate frame; material_edit_final() says which the last relight() gave). Without
-  // direct light, what renderers that evaluate direct light per pixel still need: the
-  // interreflected light and the portals' direct skylight, but not the luminaires' direct
-  // light, the portals' exact suns (see suns()) nor the emitters' direct light (see
-  // emitters()).
-  // Each kind of source keeps its partial sum between calls, and only the kinds whose state
-  // changed since are summed again.
+  // direct light, what renderers that evaluate direct light per pixel still need: every kind's
+  // sum without what its direct_lights() gives at a point (engine/light_term.h), which such a
+  // renderer traces itself (runtime/direct_light.h).
+  // Each kind keeps its partial sum between calls, and only the kinds whose state changed since
+  // are summed again.
   void relight(std::span<float> out, bool include_direct = true);
   // The suns traced exactly (behind clear glass) and what they are traced against, for
-  // per-pixel tracing (sources/portal/portal_sun.h).
-  std::span<const PortalSun> suns() const { return portals_.suns(); }
-  SunGeometry sun_geometry() const { return portals_.sun_geometry(); }
-  const PortalSetLighting& portals() const { return portals_; }
+  // per-pixel tracing (sources/portals/portal_sun.h).
+  std::span<const PortalSun> suns() const { return lights_.portals().suns(); }
+  SunGeometry sun_geometry() const { return lights_.portals().sun_geometry(); }
+  const PortalSetLighting& portals() const { return lights_.portals(); }
+  // Every kind of light of the scene, in the order their sums are added (engine/light_term.h).
+  std::span<LightTerm* const> lights() const { return lights_.all(); }
   // The light a material edit bounces: −1 converged (the default), n ≥ 0 that many bounces.
   void set_material_bounces(int bounces) { material_bounces_ = bounces; }
   // Whether relight() computes only the sensor rows (RelighterSettings::sensors_only, where
@@ -97,9 +95,9 @@ class Relighter {
     return runtime_ ? runtime_->sensor_importance() : nullptr;
   }
   // The current shell of portal p (for renderers showing the view out of a window).
-  const Shell& shell(std::size_t p) const { return portals_.portal(p).shell; }
+  const Shell& shell(std::size_t p) const { return lights_.portals().portal(p).shell; }
   // Wall time of the last shell update of portal p, seconds.
-  double shell_seconds(std::size_t p) const { return portals_.portal(p).seconds; }
+  double shell_seconds(std::size_t p) const { return lights_.portals().portal(p).seconds; }
 
   // The movable objects' term, when the scene has objects (their placed meshes, their
   // vertices' light, the occluders with them in place, the last frame's timings).
@@ -110,27 +108,30 @@ class Relighter {
   }
 
   // The top-level environment's term, when the scene has one (its cuts, clusters and the
-  // glossy reflection toward an eye: sources/cuts/environment_lighting.h).
-  const EnvironmentLighting* environment() const { return environment_ ? &*environment_ : nullptr; }
+  // glossy reflection toward an eye: sources/environment/environment_lighting.h).
+  const EnvironmentLighting* environment() const { return lights_.environment(); }
   // The same, for the glossy view's kept diffuse-layer sums (EnvironmentLighting::diffuse_layer).
-  EnvironmentLighting* environment() { return environment_ ? &*environment_ : nullptr; }
+  EnvironmentLighting* environment() { return lights_.environment(); }
   // Whether the environment's interreflection is added (the default) or its direct light
   // alone, as `relight reference --max-bounces 1` traces it.
   void set_environment_bounce(bool bounce);
 
-  // The near-field emitters' term, when the scene has emitters (their placement for exact
-  // direct light per pixel, the last sampling).
-  const EmitterLighting* emitters() const { return emitters_ ? &*emitters_ : nullptr; }
+  // The near-field emitters' term, when the scene has emitters (their last sampling).
+  const EmitterLighting* emitters() const { return lights_.emitters(); }
 
   // The current photometry of luminaire j (as loaded for its state).
-  const Distribution& distribution(std::size_t j) const { return luminaires_.distribution(j); }
-  // The luminaires' term (their exact direct light at any point: lights()).
-  const LuminaireLighting& luminaires() const { return luminaires_; }
+  const Distribution& distribution(std::size_t j) const {
+    return lights_.luminaires().distribution(j);
+  }
+  // The luminaires' term.
+  const LuminaireLighting& luminaires() const { return lights_.luminaires(); }
 
   std::size_t receivers() const { return transfer_.receivers; }
   // How many distribution changes were one moved curve control point, updated
   // incrementally (Dobashi et al. 1995's Eq. 21) instead of projected anew.
-  std::size_t incremental_curve_updates() const { return luminaires_.incremental_curve_updates(); }
+  std::size_t incremental_curve_updates() const {
+    return lights_.luminaires().incremental_curve_updates();
+  }
   // Bytes of stored transfer a relight() of every source reads.
   std::size_t transfer_bytes() const;
   // Bytes the last relight() read and wrote: the transfer of the sources it summed again,
@@ -144,7 +145,7 @@ class Relighter {
     bool valid = false;
   };
   struct Term {
-    const SourceTerm* source;
+    LightTerm* source;
     PartialSum sums[2];  // [include_direct]
   };
 
@@ -158,25 +159,24 @@ class Relighter {
   // it changed since the last call.
   bool sum_edited(std::span<float> total);
   void set_materials(const std::vector<Material>& materials);
-  // The glossy first bounce of the luminaires' light for `materials` (the scene's or as edited),
-  // bounced with `albedo` (3 per vertex); none when no material is glossy.
+  // The glossy first bounce of the kinds' direct light for `materials` (the scene's or as
+  // edited), bounced with `albedo` (3 per vertex); none when no material is glossy.
   void make_glossy_bounce(std::span<const Material> materials, std::span<const float> albedo);
-  // out += the glossy first bounce of the luminaires and the suns.
+  // Hands every kind the glossy first bounce (null: none).
+  void set_glossy(const GlossyFirstBounce* glossy);
+  // out += every kind's glossy first bounce.
   void add_glossy(std::span<float> out) const;
+  // Marks term `source`'s partial sums stale.
+  void invalidate(const LightTerm* source);
   void update_objects();
 
   TransferView transfer_;
-  std::vector<Luminaire> luminaire_specs_;   // the scene's (positions, openings)
   std::optional<RuntimeScene> runtime_;      // with portals, emitters, objects or glossy surfaces
   std::optional<MirrorReflection> mirrors_;  // the near-mirror planes of glossy_bounce_
-  std::optional<GlossyFirstBounce> glossy_bounce_;  // with glossy surfaces (luminaires' term)
-  LuminaireLighting luminaires_;
-  PortalSetLighting portals_;
+  std::optional<GlossyFirstBounce> glossy_bounce_;  // with glossy surfaces
+  LightTerms lights_;
   LightingState state_;
-  std::optional<EmitterLighting> emitters_;
-  std::optional<EnvironmentLighting> environment_;
-  // luminaires, portals, emitters (when any), the top-level environment (when any)
-  std::vector<Term> terms_;
+  std::vector<Term> terms_;  // one per kind, as lights_.all()
   std::optional<ObjectLighting> objects_;
   std::vector<float> room_light_;  // with objects: every term's light, direct included (E0)
   // Material edits: the bounce settings, the vertices' albedo under the state's materials,

@@ -7,7 +7,7 @@
 
 #include "math/rgb.h"
 #include "math/vec3.h"
-#include "sources/portal/shell.h"
+#include "sources/portals/shell.h"
 
 namespace relight {
 

@@ -116,7 +116,7 @@ struct Emitter {
 // A movable object of the room (Iwasaki et al. 2007): furniture that a lighting state moves
 // (translate, turn about the vertical axis through `pivot`) or hides. At its scene placement it is
 // part of the room — it occludes, reflects and receives like any surface — but it is not part of
-// the precomputed transfer: the run time adds what it changes (sources/object/object_lighting.h).
+// the precomputed transfer: the run time adds what it changes (sources/objects/object_lighting.h).
 struct MovableObject {
   std::string name;
   TriangleSoup geometry;  // as the scene places it, each triangle with its material
@@ -194,8 +194,8 @@ struct Scene {
   std::vector<Camera> cameras;
   std::vector<Portal> portals;
   // A top-level environment: lights the scene from infinity wherever its geometry does not block it
-  // (a showroom under a sky or a captured map): through the visibility cuts (src/sources/cuts/) at
-  // run time, exactly in `relight reference`.
+  // (a showroom under a sky or a captured map): through the visibility cuts
+  // (src/sources/environment/) at run time, exactly in `relight reference`.
   std::optional<EnvironmentSpec> environment;
   std::vector<ExteriorGeometry> exterior;
   std::vector<Emitter> emitters;

@@ -6,7 +6,7 @@
 #include "common/input_error.h"
 #include "engine/gather_operator.h"
 #include "engine/transfer_blocks.h"
-#include "sources/object/object_mesh.h"
+#include "sources/objects/object_mesh.h"
 #include "sources/precompute_memory.h"
 #include "trace/traced_scene.h"
 

@@ -1,7 +1,7 @@
 // `relight precompute`: everything a static scene needs so that every later change of a source's
 // state is a weighted sum (light transport is linear). The engine prepares the mesh, the receivers
-// and the gather operator; each source module (sources/luminaire, sources/portal,
-// sources/nearfield) computes its direct transfer and registers the columns it bounces; all bounce
+// and the gather operator; each source module (sources/luminaires, sources/portals,
+// sources/emitters) computes its direct transfer and registers the columns it bounces; all bounce
 // together through one gather operator (rays traced once for every basis and bounce).
 #pragma once
 
@@ -17,11 +17,11 @@
 #include "engine/source_precompute.h"
 #include "scene/mesh_preparation.h"
 #include "scene/scene.h"
-#include "sources/cuts/cuts_precompute.h"
-#include "sources/luminaire/luminaire_precompute.h"
-#include "sources/nearfield/nearfield_precompute.h"
-#include "sources/object/object_mesh.h"
-#include "sources/portal/portal_precompute.h"
+#include "sources/emitters/nearfield_precompute.h"
+#include "sources/environment/cuts_precompute.h"
+#include "sources/luminaires/luminaire_precompute.h"
+#include "sources/objects/object_mesh.h"
+#include "sources/portals/portal_precompute.h"
 
 namespace relight {
 
@@ -60,10 +60,10 @@ struct Precomputed {
   // "nearfield_interreflection", and movable objects. Empty for a scene with none of these.
   Eigen::SparseMatrix<float, Eigen::RowMajor> gather;
   // The movable objects' prepared meshes (scene order) and the seconds each took; all the rest
-  // of an object's light is traced at run time (sources/object/object_lighting.h).
+  // of an object's light is traced at run time (sources/objects/object_lighting.h).
   std::vector<ObjectMesh> objects;
   std::vector<double> object_seconds;
-  // The top-level environment's visibility cuts (sources/cuts/cuts_precompute.h); empty
+  // The top-level environment's visibility cuts (sources/environment/cuts_precompute.h); empty
   // without one.
   CutsTransfer cuts;
   std::vector<PhaseTiming> phases;

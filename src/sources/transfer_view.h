@@ -7,11 +7,11 @@
 #include <vector>
 
 #include "engine/runtime_scene.h"
-#include "sources/cuts/cuts_sections.h"
-#include "sources/luminaire/luminaire_transfer_view.h"
-#include "sources/nearfield/nearfield_transfer_view.h"
-#include "sources/object/object_mesh.h"
-#include "sources/portal/portal_transfer_view.h"
+#include "sources/emitters/nearfield_transfer_view.h"
+#include "sources/environment/cuts_sections.h"
+#include "sources/luminaires/luminaire_transfer_view.h"
+#include "sources/objects/object_mesh.h"
+#include "sources/portals/portal_transfer_view.h"
 
 namespace relight {
 

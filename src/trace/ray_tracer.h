@@ -69,7 +69,7 @@ class RayTracer {
 };
 
 // The tracers that block light together: the static room, and the movable objects as a
-// lighting state places them (sources/object/placed_objects.h), when any. Converts from one
+// lighting state places them (sources/objects/placed_objects.h), when any. Converts from one
 // tracer, so code that traces the room alone reads the same.
 class Occluders {
  public:

@@ -185,7 +185,7 @@ TEST(EnvironmentCuts,
   }
 }
 
-// Every bounce with the crate in place and moved: the objects' term (sources/object/
+// Every bounce with the crate in place and moved: the objects' term (sources/objects/
 // object_lighting.h) bounces the environment's light on and around them. Sensors on the floor
 // and on the crate's sides; the field at 16 × 6 · 32² (at 12 × 6 · 16² the floor 0.9 m from
 // the crate's centre and 0.13 m inside its shadow's edge reads 22 % high: the samples 8.6 cm

@@ -152,7 +152,7 @@ TEST_F(GlossyRoom, RenderedBlocksWithinFivePercentOfTheReferenceImageOnAverage) 
 
 // The same room with its south wall opened by a window, a CIE clear sky and a 60,000 lx sun at
 // 35° whose patch lies on the polished floor, no luminaires: the exact sun's first glossy
-// bounce (sources/portal/portal_lighting.h) lights the ceiling. Probe within 4 % mean and
+// bounce (sources/portals/portal_lighting.h) lights the ceiling. Probe within 4 % mean and
 // 12 % worst of a 524,288-sample reference (measured 3.0 %, 10.5 %; a 65,536-sample reference
 // is itself 3.4 % and 15.7 % off this one: the sun's reflection reaches a sensor only through a
 // cosine ray that lands where the floor's lobe points at the sun).

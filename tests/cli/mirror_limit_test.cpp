@@ -181,7 +181,7 @@ TEST(MirrorLimit, TheImagesLightBouncesOnFromAWhiteCeiling) {
 // on the ceiling (z 1.1–1.9 m), where E = E_⊥ cos θ F(θ) with θ = 30° on floor and ceiling
 // alike: 46,766 lx. Ceiling sensors inside the image: reference (16,384 samples; the lobe
 // about the sun's image, reference/reference_mirror.h) and probe (the sun's image traced at run
-// time, sources/portal/portal_lighting.cpp) within 3 %.
+// time, sources/portals/portal_lighting.cpp) within 3 %.
 std::string sun_room() {
   nlohmann::json scene = nlohmann::json::parse(room(0.05));
   scene["luminaires"] = nlohmann::json::array();

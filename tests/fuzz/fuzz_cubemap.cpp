@@ -1,4 +1,4 @@
-// Fuzz target: one receiver's direct portal cubemap record (sources/portal/cubemap_encoding.h:
+// Fuzz target: one receiver's direct portal cubemap record (sources/portals/cubemap_encoding.h:
 // empty, pulse, Haar, pulse runs, face rectangles) as the run time reads it from a `.rlt` — parsed,
 // decoded, summed alone and summed in a block (the AVX2 loops that read eight levels and eight
 // cells at a time). The `rlt` target cannot reach these: a changed record fails its section's
@@ -14,7 +14,7 @@
 
 #include "common/input_error.h"
 #include "math/rgb.h"
-#include "sources/portal/cubemap_encoding.h"
+#include "sources/portals/cubemap_encoding.h"
 
 namespace {
 

@@ -11,10 +11,10 @@
 namespace relight::layering {
 
 struct Stage {
-  std::string folder;              // under src/, e.g. "sources/portal"
+  std::string folder;              // under src/, e.g. "sources/portals"
   std::vector<std::string> links;  // folders of the stages its library links
   // Earlier stage folders it must not include all the same (relight_stage_never_includes),
-  // each with the stages under it: "sources" covers "sources/portal".
+  // each with the stages under it: "sources" covers "sources/portals".
   std::vector<std::string> never_includes;
 };
 

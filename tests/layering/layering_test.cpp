@@ -89,11 +89,11 @@ TEST(Layering, APlantedUpwardIncludeIsCaughtWithItsFileAndLine) {
 
 TEST(Layering, AnIncludeBetweenSourceKindsOutOfOrderIsCaught) {
   const TreeCopy tree;
-  tree.append("src/sources/luminaire/luminaire_state.h",
-              "#include \"sources/portal/portal_state.h\"\n");
+  tree.append("src/sources/luminaires/luminaire_transfer_view.h",
+              "#include \"sources/portals/portal_transfer_view.h\"\n");
   const std::vector<std::string> v = layering_violations(tree.dir.path());
   ASSERT_EQ(v.size(), 1u) << joined(v);
-  EXPECT_NE(v[0].find("of stage sources/portal, which comes after sources/luminaire"),
+  EXPECT_NE(v[0].find("of stage sources/portals, which comes after sources/luminaires"),
             std::string::npos)
       << v[0];
 }
@@ -101,7 +101,7 @@ TEST(Layering, AnIncludeBetweenSourceKindsOutOfOrderIsCaught) {
 // The reference tracer is the oracle the transfer is tested against: its stage comes before
 // every stage of transfer code, so that sharing any of it is an upward include.
 TEST(Layering, TheReferenceTracerIncludingTransferCodeIsCaught) {
-  for (const std::string header : {"engine/receivers.h", "sources/luminaire/luminaire_direct.h",
+  for (const std::string header : {"engine/receivers.h", "sources/luminaires/luminaire_direct.h",
                                    "runtime/relighter.h", "render/glare.h"}) {
     const TreeCopy tree;
     tree.append("src/reference/reference_tracer.cpp", "#include \"" + header + "\"\n");
@@ -116,7 +116,7 @@ TEST(Layering, TheReferenceTracerIncludingTransferCodeIsCaught) {
 // stages, although they come before it.
 TEST(Layering, TheStudioServerIncludingTransferCodeIsCaught) {
   for (const std::string header :
-       {"engine/receivers.h", "sources/portal/shell.h", "sources/transfer_file.h"}) {
+       {"engine/receivers.h", "sources/portals/shell.h", "sources/transfer_file.h"}) {
     const TreeCopy tree;
     tree.append("src/serve/studio_frames.cpp", "#include \"" + header + "\"\n");
     const std::vector<std::string> v = layering_violations(tree.dir.path());

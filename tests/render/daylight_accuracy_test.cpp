@@ -335,7 +335,7 @@ FluxRoom flux(const json& state) {
   return f;
 }
 
-// Behind clear glass the sun is traced exactly at every receiver (sources/portal/portal_sun.h),
+// Behind clear glass the sun is traced exactly at every receiver (sources/portals/portal_sun.h),
 // so the flux through the window is the closed form A·(πL/2 + E_sun·cos θ) with the sun's own
 // direction, within 0.5 %. The sky part comes through the shell's cubemap. A sun put into the one
 // 32² cubemap cell holding it would arrive from the cell's direction (1.85° off here: +1.5 % of
@@ -408,7 +408,7 @@ TEST(DaylightAccuracy, FrostKeepsTheFluxAndSoftensTheSunPatch) {
 TEST(DaylightAccuracy, ClearWindowSunPatchIsUniformInside) {
   // Inside the sun patch of the black room (0.3 m or more from its edges) the sun adds
   // E_sun·sin(altitude) = 30 000 lx everywhere; the sky part is L·π·F. The sun is traced at
-  // each receiver (sources/portal/portal_sun.h) and the sky comes through the direct portal
+  // each receiver (sources/portals/portal_sun.h) and the sky comes through the direct portal
   // transfer's cubemap cells (Monte Carlo points on the window, about
   // portal_samples_per_cell = 4 per covered cell by default): within 1 % at every sensor.
   const std::vector<Rgb> e = flux_transfer().sensors();

@@ -1,10 +1,10 @@
-// The glossy view's kept diffuse-layer sums (sources/cuts/environment_lighting.h diffuse_layer,
-// material/metallic_roughness.h diffuse_of_sums): at every glossy vertex of a lacquered floor
-// and a lacquered movable box under a sky with a sun, the specular lobe summed at each node plus
-// the diffuse layer from the kept sums equals the whole BRDF summed at each node, to 1e-9 —
-// with the sums made for the light as it was, then kept, then made again after the sun turns,
-// for another roughness, and (the box's) after the box moves and turns. And the lobe as a view
-// frame sums it, the split's nodes eight at a time in float (reflected_specular), against the
+// The glossy view's kept diffuse-layer sums (sources/environment/environment_lighting.h
+// diffuse_layer, material/metallic_roughness.h diffuse_of_sums): at every glossy vertex of a
+// lacquered floor and a lacquered movable box under a sky with a sun, the specular lobe summed at
+// each node plus the diffuse layer from the kept sums equals the whole BRDF summed at each node, to
+// 1e-9 — with the sums made for the light as it was, then kept, then made again after the sun
+// turns, for another roughness, and (the box's) after the box moves and turns. And the lobe as a
+// view frame sums it, the split's nodes eight at a time in float (reflected_specular), against the
 // lobe node by node.
 #include <gtest/gtest.h>
 
@@ -15,7 +15,7 @@
 #include "material/metallic_roughness.h"
 #include "runtime/lighting_state.h"
 #include "runtime/relit_scene.h"
-#include "sources/cuts/environment_lighting.h"
+#include "sources/environment/environment_lighting.h"
 #include "support/precomputed_file.h"
 
 namespace relight {

@@ -1,4 +1,4 @@
-// Acceptance of movable objects (sources/object/object_lighting.h): moved, turned, hidden and at
+// Acceptance of movable objects (sources/objects/object_lighting.h): moved, turned, hidden and at
 // their scene placement, against `relight reference` (reference/reference_tracer.h, the objects
 // placed into the geometry by runtime/lighting_state.h scene_with_state) at 16384 samples per
 // sensor and against a fresh precompute with the objects placed there statically; energy
@@ -24,16 +24,16 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "light/emitter_placement.h"
 #include "light/luminaire_frame.h"
-#include "scene/camera.h"
 #include "reference/reference_tracer.h"
 #include "render/relit_scene_image.h"
 #include "render/tone_map.h"
 #include "runtime/lighting_state.h"
 #include "runtime/relighter.h"
 #include "runtime/relit_scene.h"
+#include "scene/camera.h"
 #include "scene/scene_loader.h"
-#include "light/emitter_placement.h"
 #include "sources/precompute.h"
 #include "sources/transfer_file.h"
 #include "support/daylight_harness.h"

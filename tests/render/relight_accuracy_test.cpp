@@ -395,7 +395,7 @@ TEST(RelightAccuracy, FurnishedRoomImageMatchesReference) {
   // pixel): shadows and beam edges are sharp, so every block must agree.
   std::vector<float> indirect(3 * relighter.receivers());
   relighter.relight(indirect, false);
-  const std::vector<LuminaireLight> lights = relighter.luminaires().lights(r.scene.luminaires, 16);
+  const std::vector<LuminaireLight> lights = relighter.luminaires().lights(16);
   const ShadedImages pixel = shade_vertices(
       camera,
       {tracer,

@@ -1,5 +1,5 @@
 // Acceptance of the sun through a window: exact at every sensor and vertex
-// (sources/portal/portal_sun.h) with its interreflection bounced at run time through the
+// (sources/portals/portal_sun.h) with its interreflection bounced at run time through the
 // stored gather operator (engine/runtime_scene.h), against `relight reference`
 // (reference/reference_portals.h) at 16384 samples per sensor and against the closed-form
 // geometry of the patch: the window's outline projected along the sun. The room is the

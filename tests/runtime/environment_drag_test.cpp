@@ -1,4 +1,4 @@
-// A drag under a top-level environment (sources/cuts/environment_objects.h): while the same
+// A drag under a top-level environment (sources/environment/environment_objects.h): while the same
 // object moves frame after frame, every receiver keeps the product of everything else and only
 // the moving object's field is multiplied in again; another object starting to move makes
 // those products again. Whatever the history of placements, the light equals that of a scene

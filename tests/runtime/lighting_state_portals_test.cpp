@@ -4,7 +4,7 @@
 #include "common/input_error.h"
 #include "runtime/lighting_state.h"
 #include "scene/scene_loader.h"
-#include "sources/portal/portal_lighting.h"
+#include "sources/portals/portal_lighting.h"
 
 namespace relight {
 namespace {

@@ -1,4 +1,4 @@
-// The movable objects' traced transfer (sources/object/object_transfer.h) against a closed
+// The movable objects' traced transfer (sources/objects/object_transfer.h) against a closed
 // form, and a drag (retraced in part) against the same placement traced from scratch, through
 // the Relighter that owns them.
 #include <algorithm>

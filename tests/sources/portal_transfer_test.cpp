@@ -15,9 +15,9 @@
 
 #include "engine/receivers.h"
 #include "scene/scene_loader.h"
-#include "sources/portal/cubemap_encoding.h"
-#include "sources/portal/portal_direct.h"
-#include "sources/portal/portal_geometry.h"
+#include "sources/portals/cubemap_encoding.h"
+#include "sources/portals/portal_direct.h"
+#include "sources/portals/portal_geometry.h"
 #include "sources/precompute.h"
 #include "support/daylight_room.h"
 #include "trace/traced_scene.h"
@@ -187,7 +187,7 @@ TEST(PortalTransfer, BlackRoomHasNoIndirectResponse) {
 
 TEST(PortalTransfer, ThePiecesConesAndTheBvhAgreeWithAndWithoutAnotherPortal) {
   // Whether a direction passes the portal, by its convex pieces' cones or by a ray into the
-  // portals' BVH (sources/portal/portal_direct.h): the same cells and the same jitter, so the
+  // portals' BVH (sources/portals/portal_direct.h): the same cells and the same jitter, so the
   // same values — except where a cell's corner direction grazes the window's edge exactly (a
   // floor vertex in line with a jamb: the cones count it in, Embree may not), which moves that
   // cell between the coarse and the fine grid: 11 % of this room's lit receivers, within 0.6 %.

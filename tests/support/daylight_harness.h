@@ -22,7 +22,7 @@
 #include "runtime/lighting_state.h"
 #include "runtime/relighter.h"
 #include "scene/scene_loader.h"
-#include "sources/portal/portal_lighting.h"
+#include "sources/portals/portal_lighting.h"
 #include "sources/precompute.h"
 #include "sources/transfer_file.h"
 #include "trace/traced_scene.h"

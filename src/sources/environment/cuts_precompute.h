@@ -1,0 +1,52 @@
+// The precompute of the visibility cuts (Iwasaki et al., Cyberworlds, §V.A.1: the capture paper,
+// papers/003), made when the scene has a top-level environment: the direction tree of
+// `CutsSettings::directions` directions and a self-visibility cut
+// (sources/environment/self_visibility.h) at every receiver — the static scene's vertices, then its
+// sensors — traced against the static scene's opaque surfaces and its portals' glass (a window
+// shows its own exterior, not the top-level environment: reference/reference_tracer.h does the
+// same), height encoded (math/cut_encoding.h). Movable objects are not in these cuts: they shadow
+// through their visibility cut fields (sources/environment/visibility_field.h), and each object
+// vertex has its own cut of the object's self-occlusion, in the object's frame. Every rank of an
+// MPI run computes every cut (they are not dealt out). Pinned by
+// tests/cli/environment_cuts_test.cpp.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "engine/receivers.h"
+#include "math/cut_encoding.h"
+#include "math/direction_tree.h"
+#include "scene/scene.h"
+#include "sources/environment/visibility_field.h"
+#include "sources/objects/object_mesh.h"
+#include "trace/traced_scene.h"
+
+namespace relight {
+
+struct CutsTransfer {
+  std::vector<Vec3> directions;  // the tree's leaves in leaf order; empty: no cuts
+  HeightCuts self_visibility;    // one cut per receiver
+  // Per movable object (scene order): its visibility cut field's layout, and the fields' cuts
+  // back to back (object o's samples from field_first[o]; field_first has one more entry).
+  std::vector<VisibilityFieldLayout> fields;
+  std::vector<std::uint64_t> field_first;
+  HeightCuts field_cuts;
+  // One cut per object vertex (objects back to back, scene order): its object's occlusion
+  // alone, in the object's frame as the scene places it.
+  HeightCuts object_self_visibility;
+  double threshold = 0;
+  std::uint64_t rays = 0;
+  double seconds = 0;
+
+  bool empty() const { return directions.empty(); }
+};
+
+// `ray_points` per receiver (engine/receivers.h receiver_ray_points), pushed off the surface
+// here; `objects` the scene's movable objects as prepared.
+CutsTransfer precompute_cuts(const CutsSettings& settings, const Receivers& receivers,
+                             std::span<const Vec3> ray_points, const TracedScene& traced,
+                             std::span<const ObjectMesh> objects, bool progress);
+
+}  // namespace relight
