@@ -1,5 +1,7 @@
 // `relight info SCENE.json`: counts (triangles, vertices after preparation, luminaires,
 // sensors) and the bounding box, after full validation of the scene and its files.
+// `relight info FILE.ies|FILE.ldt`: the photometric file's summary as one JSON line
+// (light/photometry_summary.h).
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -8,6 +10,7 @@
 
 #include "cli/commands.h"
 #include "light/luminaire_frame.h"
+#include "light/photometry_summary.h"
 #include "scene/scene_loader.h"
 #include "sources/portals/portal_geometry.h"
 #include "trace/traced_scene.h"
@@ -16,10 +19,16 @@ namespace relight {
 
 void add_info_command(CLI::App& app, Action& action) {
   auto scene_file = std::make_shared<std::string>();
-  CLI::App* cmd = app.add_subcommand("info", "Validate a scene and print its counts and bounds");
-  cmd->add_option("scene", *scene_file, "scene JSON file")->required();
+  CLI::App* cmd = app.add_subcommand(
+      "info", "Validate a scene and print its counts and bounds, or summarize an IES/LDT file");
+  cmd->add_option("file", *scene_file, "scene JSON file, or a photometric file (.ies, .ldt)")
+      ->required();
   cmd->callback([scene_file, &action] {
     action = [scene_file] {
+      if (is_photometry_file(*scene_file)) {
+        std::cout << to_json(summarize_photometry_file(*scene_file)).dump() << "\n";
+        return 0;
+      }
       const Scene scene = load_scene(*scene_file);
       const std::vector<PlacedLuminaire> luminaires = place_luminaires(scene);  // validates files
       const PreparedMesh mesh = prepare_scene_mesh(scene);

@@ -1,5 +1,6 @@
 // The exit-code contract: bad input or arguments exit 2 with exactly one line
 // "error: FILE[:LINE|JSON-PATH]: reason" on stderr, never a crash.
+#include <algorithm>
 #include <filesystem>
 #include <vector>
 
@@ -139,6 +140,29 @@ TEST(CliBadInput, TruncatedLdt) {
   const auto scene = dir.write("s.json", room_with(R"("type": "ldt", "file": "cut.ldt")"));
   expect_input_error(run_relight("info '" + scene.string() + "'"),
                      (dir.path() / "cut.ldt").string() + ":");
+}
+
+TEST(CliBadInput, InfoOfATruncatedPhotometricFileNamesItsLine) {
+  TempDir dir;
+  const auto ies = dir.write("cut.ies", "IESNA:LM-63-2002\nTILT=NONE\n1 1000 1 5 1 1 2 0 0 0\n");
+  expect_input_error(run_relight("info '" + ies.string() + "'"), ies.string() + ":");
+  const auto ldt = dir.write("cut.LDT", "Maker\n1\n1\n1\n0\n19\n5\nreport\nname\n");
+  expect_input_error(run_relight("info '" + ldt.string() + "'"), ldt.string() + ":");
+}
+
+// `relight info FILE.ldt`: one JSON line with the summary's keys (their values are pinned by
+// tests/light/photometry_summary_test.cpp).
+TEST(CliInfo, APhotometricFileGivesOneJsonLine) {
+  const std::string file = std::string(RELIGHT_TEST_DATA) + "/photometry/small_axial.ldt";
+  const auto r = run_relight("info '" + file + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  ASSERT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["catalogue"], "RL-1");
+  EXPECT_NEAR(j["max_cd"].get<double>(), 300.0, 1e-9);
+  EXPECT_EQ(j["watts"].get<double>(), 10.0);
+  EXPECT_EQ(j["symmetry"], "axial");
+  EXPECT_TRUE(j["opening_m"].is_object());
 }
 
 TEST(CliBadInput, BrokenObj) {
