@@ -9,6 +9,8 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>
 
+#include "benchmark/bench_timing.h"
+#include "benchmark/layout_benchmark.h"
 #include "common/input_error.h"
 #include "design/optimize.h"
 #include "material/material_reflectance.h"
@@ -53,23 +55,6 @@ void advance_sky(EnvironmentSpec& e, int frame) {
   }
 }
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
-
-template <class F>
-std::vector<double> time_ms(int frames, F&& f) {
-  std::vector<double> ms;
-  for (int i = 0; i < frames; ++i) {
-    const auto start = std::chrono::steady_clock::now();
-    f(i);
-    ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-                     .count());
-  }
-  return ms;
-}
-
 // --optimize: `relight optimize` with the targets, from the scene's own state (design/
 // optimize.h), against a relight of the whole scene after every dimmer changed, both medians
 // of `frames` runs in the same process.
@@ -110,6 +95,15 @@ nlohmann::json run_bench(const BenchOptions& args) {
                  "--objects, --materials or --aim with it");
     }
     return bench_optimize(args);
+  }
+  if (args.layout) {
+    if (args.sky || args.environment || args.emitters || args.objects || args.materials ||
+        args.aim) {
+      fail_input(args.rlt,
+                 "--layout moves and adds luminaires alone: no --sky, --environment, --emitters, "
+                 "--objects, --materials or --aim with it");
+    }
+    return bench_layout(args);
   }
   RelitScene relit(args.rlt, std::nullopt);
   Relighter& relighter = relit.relighter();

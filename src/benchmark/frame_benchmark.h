@@ -19,7 +19,8 @@
 // that moves a centimetre a frame). Only the kind of source that changed is summed again
 // (runtime/relighter.h). The same run times a plain parallel streaming read of as many bytes
 // as the sum reads, so that effective_gbps / stream_gbps speaks for itself on a shared
-// machine. With `optimize` (TARGETS.json): `relight optimize` timed against a relight of the
+// machine. With `layout` the first luminaire moves and one is added (benchmark/layout_benchmark.h).
+// With `optimize` (TARGETS.json): `relight optimize` timed against a relight of the
 // whole scene (ratio_to_relight).
 #pragma once
 
@@ -41,6 +42,7 @@ struct BenchOptions {
   std::string material;    // with materials: edit this one (else the most used)
   bool roughness = false;  // with materials: edit its roughness, not its albedo
   bool aim = false;
+  bool layout = false;   // move the first luminaire and add one (benchmark/layout_benchmark.h)
   std::string optimize;  // TARGETS.json: time `relight optimize` instead
 };
 

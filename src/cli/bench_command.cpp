@@ -30,6 +30,8 @@ void add_bench_command(CLI::App& app, Action& action) {
                 "with --materials: edit the roughness (made glossy first) instead of the albedo");
   cmd->add_flag("--aim", args->aim,
                 "turn every luminaire 1 degree about its C0 axis each frame (direct, glossy)");
+  cmd->add_flag("--layout", args->layout,
+                "move the first luminaire 20 cm and add one each frame (first and converged)");
   cmd->add_option("--optimize", args->optimize,
                   "time relight optimize with these targets (TARGETS.json) against a relight");
   cmd->callback([args, &action] {

@@ -51,8 +51,9 @@ class LightTerm {
   // Takes the kind's part of `state`; returns whether its sum changed. What the change costs
   // beyond weights (a sampling, a bounce) may wait for update().
   virtual bool set_state(const LightingState& state) = 0;
-  // Makes what set_state left for later; the Relighter calls it before summing.
-  virtual void update() {}
+  // Makes what set_state left for later; the Relighter calls it before summing. Returns whether
+  // that changed the term's sum since set_state (a refinement its first sum did not have).
+  virtual bool update() { return false; }
   // acc_c[i] += the term's irradiance (lx, RGB) at receivers [block · kBlock, …). Without
   // direct light: only what renderers that evaluate direct light per pixel still need
   // (Relighter::relight).

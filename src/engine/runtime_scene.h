@@ -99,6 +99,7 @@ class RuntimeScene {
   std::size_t vertex_count() const { return vertex_count_; }
   // Where rays from receiver r start (engine/receivers.h receiver_ray_points) and its normal.
   Vec3 ray_point(std::size_t r) const { return ray_points_[r]; }
+  const std::vector<Vec3>& ray_points() const { return ray_points_; }
   Vec3 normal(std::size_t r) const { return receivers_.normals[r]; }
   // The static opaque scene (ids: the triangle's index in the mesh) and the portals' glass
   // (ids: the portal's index).

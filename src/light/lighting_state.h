@@ -18,7 +18,8 @@
 namespace relight {
 
 struct LightingState {
-  std::vector<LuminaireState> luminaires;  // scene order
+  // The scene's luminaires (scene order), then those the state adds.
+  std::vector<LuminaireState> luminaires;
   std::vector<PortalState> portals;        // scene order
   std::vector<EmitterState> emitters;      // scene order
   std::vector<MovablePlacement> objects;   // movable objects, scene order

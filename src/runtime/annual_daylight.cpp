@@ -120,9 +120,6 @@ LightingState daylight_alone(LightingState state) {
 
 namespace {
 
-// Points on a luminous area for its visibility: the suns, the only lights here, have none.
-constexpr int kOpeningSamples = 16;
-
 // A stream's thread time: all its hours, and their shells.
 struct StreamSeconds {
   double hours = 0, shells = 0;

@@ -13,23 +13,37 @@ namespace relight {
 
 namespace {
 
-std::size_t luminaire_index(const Scene& scene, const JsonNode& where, const std::string& name) {
-  for (std::size_t i = 0; i < scene.luminaires.size(); ++i) {
-    if (scene.luminaires[i].name == name) return i;
+// The state's luminaire of that name (the scene's, then those the state added), or none.
+LuminaireState* find_luminaire(LightingState& state, const std::string& name) {
+  for (LuminaireState& l : state.luminaires) {
+    if (l.name == name) return &l;
   }
-  where.fail("no luminaire named \"" + name + "\" in the precomputed scene");
+  return nullptr;
 }
 
-void apply_luminaire(LuminaireState& s, const Luminaire& scene_luminaire, const JsonNode& node,
+bool inside(const Bounds& b, Vec3 p) {
+  return p.x >= b.min.x && p.y >= b.min.y && p.z >= b.min.z && p.x <= b.max.x && p.y <= b.max.y &&
+         p.z <= b.max.z;
+}
+
+void apply_luminaire(LuminaireState& s, const Scene& scene, const JsonNode& node,
                      const std::filesystem::path& base_dir) {
-  node.expect_keys(
-      {"on", "dimmer", "color", "cct_kelvin", "aim", "target", "c0", "distribution", "position"});
+  node.expect_keys({"on", "dimmer", "color", "cct_kelvin", "aim", "target", "c0", "distribution",
+                    "position", "size"});
   if (const auto p = node.find("position")) {
-    if (length(p->vec3() - scene_luminaire.position) > 1e-9) {
-      p->fail(
-          "a luminaire's position is fixed by the precompute: move it in the scene and run "
-          "relight precompute again");
+    const Vec3 at = p->vec3();
+    // Named as docs/lighting-state.md names it: STATE:luminaires.NAME.position.
+    if (!inside(scene.bounds(), at)) {
+      fail_input(p->file() + ":luminaires." + s.name + ".position", "outside the scene");
     }
+    s.position = at;
+  }
+  if (const auto z = node.find("size")) {
+    s.size = z->vec3();
+    if (s.size.x < 0 || s.size.y < 0 || s.size.z < 0) {
+      z->fail("size [width, length, height] must not be negative");
+    }
+    s.has_size = true;
   }
   if (const auto on = node.find("on")) s.on = on->boolean();
   if (const auto d = node.find("dimmer")) s.dimmer = d->number_at_least(0);
@@ -47,7 +61,7 @@ void apply_luminaire(LuminaireState& s, const Luminaire& scene_luminaire, const 
   if (node.has("aim") && node.has("target")) node.fail("give either aim or target");
   if (const auto a = node.find("aim")) s.aim = a->direction();
   if (const auto t = node.find("target")) {
-    const Vec3 d = t->vec3() - scene_luminaire.position;
+    const Vec3 d = t->vec3() - s.position;
     if (length(d) < 1e-9) t->fail("target coincides with the luminaire");
     s.aim = normalize(d);
   }
@@ -175,8 +189,23 @@ void apply_lighting_state(LightingState& state, const Scene& scene, const nlohma
     if (!lums->is_object()) lums->fail("expected an object mapping luminaire names to states");
     for (const auto& [name, unused] : lums->value().items()) {
       const JsonNode node = lums->at(name);
-      const std::size_t i = luminaire_index(scene, node, name);
-      apply_luminaire(state.luminaires[i], scene.luminaires[i], node, base_dir);
+      LuminaireState* s = find_luminaire(state, name);
+      if (s == nullptr) {
+        // A luminaire the scene does not have: the layout adds it.
+        if (name.empty()) node.fail("a luminaire's name must not be empty");
+        for (const char* key : {"position", "distribution"}) {
+          if (node.is_object() && !node.has(key)) {
+            node.fail("no luminaire named \"" + name +
+                      "\" in the precomputed scene: a luminaire the state adds needs \"" + key +
+                      "\"");
+          }
+        }
+        LuminaireState added;
+        added.name = name;
+        state.luminaires.push_back(std::move(added));
+        s = &state.luminaires.back();
+      }
+      apply_luminaire(*s, scene, node, base_dir);
     }
   }
   // The top-level exterior first: a portal's own "exterior" overrides it for its shell.
@@ -226,19 +255,16 @@ LightingState maintained_state(LightingState state, double mf) {
 }
 
 Scene scene_with_state(const Scene& scene, const LightingState& state) {
-  if (state.luminaires.size() != scene.luminaires.size() ||
+  if (state.luminaires.size() < scene.luminaires.size() ||
       state.portals.size() != scene.portals.size()) {
     throw std::invalid_argument("scene_with_state: the state is not of this scene");
   }
   Scene out = scene;
-  for (std::size_t j = 0; j < out.luminaires.size(); ++j) {
-    Luminaire& l = out.luminaires[j];
-    const LuminaireState& s = state.luminaires[j];
-    l.aim = s.aim;
-    l.c0 = s.c0;
-    l.distribution = s.distribution;
-    l.color = s.color;
-    l.dimmer = s.on ? s.dimmer : 0;
+  // The scene's luminaires where the state moved them, then those it added.
+  out.luminaires.clear();
+  for (std::size_t j = 0; j < state.luminaires.size(); ++j) {
+    out.luminaires.push_back(scene_luminaire(state.luminaires[j]));
+    if (j < scene.luminaires.size()) out.luminaires.back().where = scene.luminaires[j].where;
   }
   if (state.objects.size() != scene.objects.size()) {
     throw std::invalid_argument("scene_with_state: the state is not of this scene");

@@ -1,7 +1,8 @@
 // Reading a lighting state document (docs/lighting-state.md) into the run-time lighting state
 // (light/lighting_state.h), applied on top of the scene's own values, so a state file names only
-// what it changes; and what follows from a state (maintained, the scene it lights). A
-// luminaire's position is fixed by the precompute: moving it is refused.
+// what it changes; and what follows from a state (maintained, the scene it lights). A luminaire
+// may move anywhere inside the scene's bounds, and a name the scene does not have adds one
+// (it needs "position" and "distribution").
 #pragma once
 
 #include <filesystem>
@@ -24,7 +25,8 @@ LightingState load_lighting_state(const Scene& scene, const std::filesystem::pat
 LightingState maintained_state(LightingState state, double mf);
 
 // The scene as `state` lights it, for code that reads a Scene (the reference tracer): each
-// luminaire's aim, C0, distribution, colour and dimmer (0 when off), each portal's environment,
+// luminaire where the state hangs it, with its aim, C0, distribution, colour and dimmer (0 when
+// off), then the luminaires the state adds; each portal's environment,
 // tint and frost, the top-level environment; the movable objects placed into `geometry` (hidden
 // ones left out, the scene's `objects` then empty). Emitters and exterior objects keep the scene's
 // geometry: their placements are the state's (place_emitters, placed_exterior); the materials as

@@ -67,6 +67,7 @@ Relighter::Relighter(TransferView transfer, const Scene& scene, const RelighterS
       vertex_albedo_(transfer_.scene.vertex_albedo),
       warm_sun_bounce_(settings.warm_sun_bounce),
       sensors_only_(settings.sensors_only && can_read_sensors_only(transfer_, scene)) {
+  if (runtime_) lights_.luminaires().set_runtime(&*runtime_);
   make_glossy_bounce(scene.materials, transfer_.scene.vertex_albedo);
   for (LightTerm* light : lights_.all()) {
     terms_.push_back({light, {}});
@@ -143,6 +144,17 @@ void Relighter::add_glossy(std::span<float> out) const {
 }
 
 void Relighter::set_state(const LightingState& state) {
+  if (lights_.luminaires().needs_runtime(state.luminaires) && !runtime_) {
+    // A moved or added luminaire is traced against the room and bounced through its stored
+    // gather operator.
+    if (transfer_.scene.gather_rows.empty()) {
+      fail_input("luminaires",
+                 "moving or adding a luminaire needs the gather operator, which this transfer "
+                 "file does not keep (\"runtime_bounce\": false): precompute again without it");
+    }
+    runtime_.emplace(transfer_.scene, bounce_);
+    lights_.luminaires().set_runtime(&*runtime_);
+  }
   for (LightTerm* light : lights_.all()) {
     if (light->set_state(state)) invalidate(light);
   }
@@ -197,7 +209,10 @@ void Relighter::set_materials(const std::vector<Material>& materials) {
                  "live material edits need the gather operator, which this transfer file does "
                  "not keep (run relight precompute again)");
     }
-    if (!runtime_) runtime_.emplace(transfer_.scene, bounce_);
+    if (!runtime_) {
+      runtime_.emplace(transfer_.scene, bounce_);
+      lights_.luminaires().set_runtime(&*runtime_);
+    }
     albedo_edit_.emplace(runtime_->gather(), stored, bounce_);
     edit_total_.assign(3 * transfer_.receivers, 0.0f);
     edit_delta_.assign(3 * transfer_.receivers, 0.0f);
@@ -286,7 +301,9 @@ void Relighter::relight(std::span<float> out, bool include_direct) {
     make_glossy_bounce(state_.materials, vertex_albedo_);
     glossy_dirty_ = true;
   }
-  for (LightTerm* light : lights_.all()) light->update();  // a sampling or bounce left for now
+  for (LightTerm* light : lights_.all()) {  // a sampling or bounce left for now
+    if (light->update()) invalidate(light);
+  }
   if (!objects_) {
     if (!albedo_edit_) {
       sum_terms(include_direct ? 1 : 0, out);

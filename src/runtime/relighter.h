@@ -79,6 +79,12 @@ class Relighter {
   std::span<LightTerm* const> lights() const { return lights_.all(); }
   // The light a material edit bounces: −1 converged (the default), n ≥ 0 that many bounces.
   void set_material_bounces(int bounces) { material_bounces_ = bounces; }
+  // Whether relight() bounces the light of moved and added luminaires (the default) or, for a
+  // first frame, lets the nearest stored luminaire's response stand in for their
+  // interreflection (sources/luminaires/luminaire_lighting.h); layout_converged() says which
+  // the last relight() gave.
+  void set_layout_bounce(bool bounce) { lights_.luminaires().set_bounce_live(bounce); }
+  bool layout_converged() const { return lights_.luminaires().converged(); }
   // Whether relight() computes only the sensor rows (RelighterSettings::sensors_only, where
   // the scene and the states so far allow it).
   bool sensors_only() const { return sensors_only_; }

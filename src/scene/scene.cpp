@@ -3,7 +3,7 @@
 namespace relight {
 
 Bounds Scene::bounds() const {
-  if (geometry.positions.empty()) return {};
+  if (geometry.positions.empty()) return mesh_bounds.value_or(Bounds{});
   Bounds b{geometry.positions.front(), geometry.positions.front()};
   for (const Vec3& p : geometry.positions) {
     b.min = min(b.min, p);

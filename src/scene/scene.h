@@ -179,6 +179,11 @@ struct PrecomputeSettings {
   double nearfield_shadow_distance = 0;
   // Built when the scene has a top-level environment.
   CutsSettings cuts;
+  // Whether the .rlt keeps the gather operator for the light the run time bounces itself (moved
+  // and added luminaires, the exact sun, emitters, movable objects, material edits). false saves
+  // its bytes in a scene that needs none of these (no portals, emitters, objects or top-level
+  // environment); the state can then not move a luminaire or edit a material.
+  bool runtime_bounce = true;
 };
 
 struct Bounds {
@@ -204,7 +209,11 @@ struct Scene {
   // CIE 97 maintenance factor of the electric lighting (0..1]; none when the scene does not
   // declare it (taken as 1 with a warning by the checks: EN 12464-1 asks for it).
   std::optional<double> maintenance_factor;
+  // The static geometry's bounds when `geometry` is not loaded (a transfer file keeps the mesh
+  // apart from its scene document): where a lighting state may hang a luminaire.
+  std::optional<Bounds> mesh_bounds;
 
+  // The geometry's bounds (mesh_bounds when the geometry is not loaded).
   Bounds bounds() const;
   std::size_t sensor_count() const;
   // Per material: the index of the portal that lists it, or −1 (opaque, or window glass that

@@ -424,7 +424,8 @@ struct Loader {
     p.expect_keys({"max_edge", "sh_order", "crease_deg", "gather_rays", "sensor_gather_rays",
                    "tolerance", "max_bounces", "direct", "portal_face_size", "portal_sh_order",
                    "portal_samples_per_cell", "nearfield_sh_order", "nearfield_directions",
-                   "nearfield_interreflection", "nearfield_shadow_distance", "storage", "cuts"});
+                   "nearfield_interreflection", "nearfield_shadow_distance", "storage", "cuts",
+                   "runtime_bounce"});
     PrecomputeSettings& s = scene.precompute;
     if (const auto n = p.find("max_edge")) s.max_edge = n->positive();
     if (const auto n = p.find("sh_order")) s.sh_order = n->integer_in(1, 32);
@@ -460,6 +461,7 @@ struct Loader {
     if (const auto n = p.find("nearfield_interreflection")) {
       s.nearfield_interreflection = n->boolean();
     }
+    if (const auto n = p.find("runtime_bounce")) s.runtime_bounce = n->boolean();
     if (const auto n = p.find("portal_face_size")) {
       s.portal_face_size = n->integer_in(1, 256);
       if ((s.portal_face_size & (s.portal_face_size - 1)) != 0) {
@@ -592,7 +594,17 @@ Scene scene_from_json(const nlohmann::json& document, const fs::path& file,
   if (const auto n = root.find("exterior")) loader.load_exterior(*n);
   if (const auto n = root.find("emitters")) loader.load_emitters(*n);
   if (const auto n = root.find("objects")) loader.load_objects(*n);
-  if (const auto n = root.find("precompute")) loader.load_precompute(*n);
+  if (const auto n = root.find("precompute")) {
+    loader.load_precompute(*n);
+    const Scene& sc = loader.scene;
+    if (!sc.precompute.runtime_bounce &&
+        (!sc.portals.empty() || !sc.emitters.empty() || !sc.objects.empty() || sc.environment)) {
+      n->at("runtime_bounce")
+          .fail(
+              "portals, emitters, movable objects and a top-level environment bounce their light "
+              "through the gather operator at run time: it cannot be left out of this scene");
+    }
+  }
   if (const auto n = root.find("maintenance_factor")) {
     const double mf = n->number_at_least(0);
     if (!(mf > 0 && mf <= 1)) n->fail("a maintenance factor lies in (0, 1]");

@@ -97,9 +97,10 @@ Precomputed precompute_transfer(const Scene& scene, const PrecomputeOptions& opt
                                out.objects, options.progress);
     out.phases.push_back({"visibility cuts", out.cuts.seconds, out.cuts.rays});
   }
-  // Kept for what the run time bounces itself: the sun, emitters, movable objects and live
-  // material edits (engine/albedo_edit.h).
-  out.gather = std::move(gather.matrix);
+  // Kept for what the run time bounces itself: moved and added luminaires, the sun, emitters,
+  // movable objects and live material edits (engine/albedo_edit.h); unless the scene leaves it
+  // out to save its bytes.
+  if (scene.precompute.runtime_bounce) out.gather = std::move(gather.matrix);
   return out;
 }
 

@@ -28,7 +28,7 @@ namespace relight {
 struct PrecomputeOptions {
   bool progress = true;
   std::uint64_t seed = 1;
-  int opening_samples = 16;  // points on a luminous opening for fractional visibility
+  int opening_samples = kOpeningSamples;  // points on a luminous opening (luminaire_direct.h)
   // The ranks of an MPI run (engine/ranks.h), each calling precompute_transfer with the same
   // scene and options: each traces its share of the receivers, and every rank returns the same
   // Precomputed (its phases' times are its own). nullptr: this process alone.

@@ -428,6 +428,7 @@ TransferFile open_transfer_file(const fs::path& file) {
   for (std::size_t v = 0; v < t.vertex_count; ++v) {
     t.positions.push_back({positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]});
   }
+  t.scene.mesh_bounds = t.bounds();
   t.triangles.reserve(triangles.size() / 3);
   for (std::size_t i = 0; i < triangles.size(); i += 3) {
     const Triangle tri{triangles[i], triangles[i + 1], triangles[i + 2]};

@@ -120,7 +120,7 @@ TEST_F(LightingStateFiles, UnknownKey) {
                      R"({ "luminaires": { "down": { "dimmer": 1, "brightness": 2 } } })",
                      ":/luminaires/down/brightness",
                      "unknown key \"brightness\" (expected one of: on, dimmer, color, cct_kelvin, "
-                     "aim, target, c0, distribution, position)");
+                     "aim, target, c0, distribution, position, size)");
   // At the top level: exit 2, one line, naming the key (the exact pointer is checked by
   // UnknownTopLevelKeyHasTheRootPointer below).
   const CommandResult top = probe("unknown-top.json", R"({ "lights": {} })");
@@ -149,16 +149,19 @@ TEST_F(LightingStateFiles, UnknownTopLevelKeyHasTheRootPointer) {
       "materials, environment)");
 }
 
-TEST_F(LightingStateFiles, MovingALuminaireIsRefused) {
-  expect_state_error("moved.json",
-                     R"({ "luminaires": { "down": { "position": [1.5, 2.4, 1.6] } } })",
-                     ":/luminaires/down/position",
-                     "a luminaire's position is fixed by the precompute: move it in the scene "
-                     "and run relight precompute again");
-  // Its own position is no move.
+TEST_F(LightingStateFiles, MovingALuminaireOutsideTheSceneIsRefused) {
+  const CommandResult r =
+      probe("moved.json", R"({ "luminaires": { "down": { "position": [1.5, 9, 1.6] } } })");
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("moved.json:luminaires.down.position: outside the scene"), std::string::npos)
+      << r.err;
+  // Its own position, and one inside the room, load.
   const CommandResult same = probe(
       "same-position.json", R"({ "luminaires": { "down": { "position": [1.5, 2.4, 1.5] } } })");
   EXPECT_EQ(same.exit_code, 0) << same.err;
+  const CommandResult inside =
+      probe("inside.json", R"({ "luminaires": { "down": { "position": [1.5, 2.4, 1.6] } } })");
+  EXPECT_EQ(inside.exit_code, 0) << inside.err;
 }
 
 TEST_F(LightingStateFiles, ColourTemperatureOutOfRange) {

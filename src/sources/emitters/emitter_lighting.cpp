@@ -79,10 +79,11 @@ std::unique_ptr<const DirectLights> EmitterLighting::direct_lights(const Occlude
                                                opening_samples);
 }
 
-void EmitterLighting::update() {
-  if (current_) return;
+bool EmitterLighting::update() {
+  if (current_) return false;
   relight();
   current_ = true;
+  return true;
 }
 
 void EmitterLighting::relight() {

@@ -51,7 +51,7 @@ class EmitterLighting : public LightTerm {
   bool set_state(const LightingState& state) override { return set_state(state.emitters); }
   // Samples and bounces the current state's light if it changed since (the Relighter calls
   // it before summing; add_block reads what it made).
-  void update() override;
+  bool update() override;
 
   void add_block(std::size_t block, bool include_direct, float (&acc)[3][kBlock]) const override;
   std::size_t transfer_bytes() const override;

@@ -187,7 +187,7 @@ SeenLight luminaire_seen_from(const Occluders& occluders, const LuminaireLight& 
 
 DirectGeometry compute_direct_geometry(const Receivers& receivers,
                                        const std::vector<Vec3>& ray_points,
-                                       const TracedScene& traced, Vec3 luminaire_position,
+                                       const RayTracer& occluders, Vec3 luminaire_position,
                                        const std::vector<Vec3>& opening_offsets, bool progress,
                                        const RankShares* ranks) {
   const std::size_t n = receivers.size();
@@ -204,7 +204,7 @@ DirectGeometry compute_direct_geometry(const Receivers& receivers,
     std::uint64_t local_rays = 0;
     for (std::size_t i = range.begin(); i != range.end(); ++i) {
       for (std::size_t r = own.first(blocks[i]); r < own.last(blocks[i]); ++r) {
-        const DirectFactor f = direct_factor(traced.opaque, ray_points[r], receivers.normals[r],
+        const DirectFactor f = direct_factor(occluders, ray_points[r], receivers.normals[r],
                                              luminaire_position, opening_offsets, local_rays);
         g.dir_x[r] = static_cast<float>(f.direction.x);
         g.dir_y[r] = static_cast<float>(f.direction.y);

@@ -29,6 +29,10 @@ struct DirectGeometry {
   std::uint64_t rays = 0;
 };
 
+// Points on a luminous opening the precompute traces toward from every receiver (and the run
+// time for a luminaire the layout moves or adds, so that both agree).
+inline constexpr int kOpeningSamples = 16;
+
 // Points on (or in) the luminous opening, relative to the photometric centre: a
 // stratified pattern of about `samples` points over the opening's extent (length along
 // C0, width along C90, height along the aim, elliptical in plan for round shapes). A
@@ -104,13 +108,15 @@ double projected_opening_area(const LuminousOpening& opening, Vec3 u);
 SeenLight luminaire_seen_from(const Occluders& occluders, const LuminaireLight& light,
                               const LuminousOpening& opening, Vec3 p, Vec3 n, bool with_luminance);
 
-// `ray_points` are receiver_ray_points(receivers, mesh): the shadow rays start there. With
+// `ray_points` are receiver_ray_points(receivers, mesh): the shadow rays start there, toward the
+// luminaire past the static opaque scene `occluders` (the precompute's, or the run time's for a
+// luminaire the layout moves or adds). With
 // several `ranks` (engine/ranks.h; collective), this process traces its share's rows and keeps
 // only those (the others zero): rank 0 gathers them as it writes the file; `rays` counts every
 // rank's.
 DirectGeometry compute_direct_geometry(const Receivers& receivers,
                                        const std::vector<Vec3>& ray_points,
-                                       const TracedScene& traced, Vec3 luminaire_position,
+                                       const RayTracer& occluders, Vec3 luminaire_position,
                                        const std::vector<Vec3>& opening_offsets, bool progress,
                                        const RankShares* ranks = nullptr);
 

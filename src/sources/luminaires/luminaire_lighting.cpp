@@ -1,6 +1,8 @@
 #include "sources/luminaires/luminaire_lighting.h"
 
 #include <algorithm>
+#include <chrono>
+#include <limits>
 #include <stdexcept>
 
 #include <tbb/blocked_range.h>
@@ -40,11 +42,12 @@ int single_moved_point(const DistributionSpec& a, const DistributionSpec& b) {
 class LuminaireDirectLights : public DirectLights {
  public:
   LuminaireDirectLights(const Occluders& occluders, std::vector<LuminaireLight> lights,
-                        std::span<const Luminaire> specs)
-      : occluders_(occluders), lights_(std::move(lights)), specs_(specs) {
+                        std::span<const LuminaireState> states)
+      : occluders_(occluders), lights_(std::move(lights)), states_(states) {
     openings_.reserve(lights_.size());
     for (std::size_t j = 0; j < lights_.size(); ++j) {
-      openings_.push_back(luminaire_opening(specs_[j], lights_[j].distribution->opening()));
+      openings_.push_back(
+          luminaire_opening(scene_luminaire(states_[j]), lights_[j].distribution->opening()));
     }
   }
   Rgb irradiance_at(Vec3 p, Vec3 n) const override {
@@ -53,7 +56,7 @@ class LuminaireDirectLights : public DirectLights {
   void for_each_at(Vec3 p, Vec3 n, bool with_luminance,
                    const SeenLightVisit& visit) const override {
     for (std::size_t j = 0; j < lights_.size(); ++j) {
-      visit(LightKind::kLuminaire, specs_[j].name,
+      visit(LightKind::kLuminaire, states_[j].name,
             luminaire_seen_from(occluders_, lights_[j], openings_[j], p, n, with_luminance));
     }
   }
@@ -61,9 +64,13 @@ class LuminaireDirectLights : public DirectLights {
  private:
   Occluders occluders_;
   std::vector<LuminaireLight> lights_;
-  std::span<const Luminaire> specs_;
+  std::span<const LuminaireState> states_;
   std::vector<LuminousOpening> openings_;  // per luminaire (luminaire_opening)
 };
+
+bool same_opening(const LuminaireState& a, const LuminaireState& b) {
+  return a.has_size == b.has_size && a.size == b.size;
+}
 
 }  // namespace
 
@@ -76,43 +83,160 @@ LuminaireLighting::LuminaireLighting(LuminaireTransferSet transfer, const Scene&
   luminaires_.resize(scene.luminaires.size());
   specs_ = scene.luminaires;
   for (const Luminaire& l : scene.luminaires) states_.push_back(luminaire_state(l));
-  for (std::size_t j = 0; j < luminaires_.size(); ++j) update(j, states_[j], true);
+  for (std::size_t j = 0; j < luminaires_.size(); ++j) {
+    luminaires_[j].stored = j;
+    apply(j, states_[j], true);
+  }
 }
 
 std::vector<LuminaireLight> LuminaireLighting::lights(int opening_samples) const {
-  const std::vector<Luminaire>& luminaires = specs_;
   std::vector<LuminaireLight> out;
   for (std::size_t j = 0; j < luminaires_.size(); ++j) {
     const LuminaireState& s = states_[j];
     const Distribution& d = luminaires_[j].distribution;
-    LuminaireLight l{luminaires[j].position,
-                     photometric_frame(s.aim, s.c0),
-                     s.on ? s.color * s.dimmer : Rgb{},
-                     &d,
-                     {}};
-    l.opening = opening_sample_offsets(luminaire_opening(luminaires[j], d.opening()), l.frame,
+    LuminaireLight l{
+        s.position, photometric_frame(s.aim, s.c0), s.on ? s.color * s.dimmer : Rgb{}, &d, {}};
+    l.opening = opening_sample_offsets(luminaire_opening(scene_luminaire(s), d.opening()), l.frame,
                                        opening_samples);
     out.push_back(std::move(l));
   }
   return out;
 }
 
-bool LuminaireLighting::set_state(std::span<const LuminaireState> states) {
-  if (states.size() != luminaires_.size()) {
-    throw std::invalid_argument("LuminaireLighting: one state per luminaire");
+bool LuminaireLighting::is_moved(std::size_t j, const LuminaireState& s) const {
+  return j >= specs_.size() || length(s.position - specs_[j].position) > 1e-9 ||
+         s.has_size != specs_[j].has_size || (s.has_size && !(s.size == specs_[j].size));
+}
+
+bool LuminaireLighting::needs_runtime(std::span<const LuminaireState> states) const {
+  for (std::size_t j = 0; j < states.size(); ++j) {
+    if (is_moved(j, states[j])) return true;
   }
-  bool changed = false;
-  for (std::size_t j = 0; j < luminaires_.size(); ++j) {
+  return false;
+}
+
+LuminaireLighting::Geometry LuminaireLighting::geometry(std::size_t j) const {
+  const Lit& l = luminaires_[j];
+  if (l.live) {
+    return {l.geometry.dir_x, l.geometry.dir_y, l.geometry.dir_z, l.geometry.factor};
+  }
+  const LuminaireTransferView& v = transfer_.luminaires[j];
+  return {v.dir_x, v.dir_y, v.dir_z, v.factor};
+}
+
+// A moved or added luminaire's geometry, traced from every receiver as the precompute traces a
+// stored one's; its interreflection stands in from the nearest stored luminaire until bounced.
+void LuminaireLighting::trace_live(std::size_t j, const LuminaireState& s) {
+  if (runtime_ == nullptr || !runtime_->can_bounce()) {
+    // The Relighter refuses such a state first, naming the file (runtime/relighter.h).
+    throw std::logic_error(
+        "LuminaireLighting: a moved luminaire needs a run-time scene that bounces");
+  }
+  const auto start = std::chrono::steady_clock::now();
+  Lit& l = luminaires_[j];
+  const Distribution distribution = load_distribution(s.distribution);
+  const std::vector<Vec3> offsets =
+      opening_sample_offsets(luminaire_opening(scene_luminaire(s), distribution.opening()),
+                             photometric_frame(s.aim, s.c0), kOpeningSamples);
+  l.geometry = compute_direct_geometry(runtime_->receiver_set(), runtime_->ray_points(),
+                                       runtime_->occluders(), s.position, offsets, false);
+  l.live = true;
+  l.bounced = false;
+  l.mirror_traced = false;
+  l.stored.reset();
+  double nearest = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < specs_.size(); ++i) {
+    const double d = length(specs_[i].position - s.position);
+    if (d < nearest) {
+      nearest = d;
+      l.stored = i;
+    }
+  }
+  trace_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+bool LuminaireLighting::set_state(std::span<const LuminaireState> states) {
+  if (states.size() < specs_.size()) {
+    throw std::invalid_argument("LuminaireLighting: one state per luminaire of the scene");
+  }
+  trace_seconds_ = 0;
+  const bool added = states.size() > luminaires_.size();
+  if (added) {
+    luminaires_.resize(states.size());
+    states_.resize(states.size());
+    for (std::size_t j = specs_.size(); j < states.size(); ++j) {
+      states_[j] = states[j];
+      trace_live(j, states[j]);
+      apply(j, states[j], true);
+    }
+  }
+  bool changed = added;
+  for (std::size_t j = 0; j < states.size(); ++j) {
     const LuminaireState& now = states_[j];
     const LuminaireState& next = states[j];
-    const bool geometry_changed = !(now.aim == next.aim) || !(now.c0 == next.c0) ||
-                                  !same_distribution(now.distribution, next.distribution);
-    update(j, next, geometry_changed);
+    const bool moved = !(now.position == next.position) || !same_opening(now, next);
+    bool geometry_changed = moved || !(now.aim == next.aim) || !(now.c0 == next.c0) ||
+                            !same_distribution(now.distribution, next.distribution);
+    if (moved) {
+      if (is_moved(j, next)) {
+        trace_live(j, next);
+      } else {  // back where the precompute hung it: its stored transfer again
+        luminaires_[j].live = false;
+        luminaires_[j].geometry = {};
+        luminaires_[j].indirect.clear();
+        luminaires_[j].stored = j;
+        luminaires_[j].mirror_traced = false;
+      }
+    } else if (geometry_changed && luminaires_[j].live) {
+      luminaires_[j].bounced = false;  // its direct light changed: bounce it again
+    }
+    apply(j, next, geometry_changed);
     changed = changed || geometry_changed || now.on != next.on || now.dimmer != next.dimmer ||
               !(now.color == next.color);
     states_[j] = next;
   }
+  // Luminaires a state no longer adds are gone from the light.
+  if (states.size() < luminaires_.size()) {
+    luminaires_.resize(states.size());
+    states_.resize(states.size());
+    changed = true;
+  }
   return changed;
+}
+
+bool LuminaireLighting::update() {
+  bounce_seconds_ = 0;
+  if (!bounce_live_) return false;
+  bool bounced = false;
+  const std::size_t n = transfer_.receivers;
+  for (Lit& l : luminaires_) {
+    if (!l.live || l.bounced || !l.active) continue;
+    // Per unit colour: the same scalar direct light in every channel; each channel bounces
+    // with its own albedo.
+    scratch_.resize(3 * n);
+    for (std::size_t r = 0; r < n; ++r) {
+      scratch_[3 * r] = scratch_[3 * r + 1] = scratch_[3 * r + 2] = l.direct[r];
+    }
+    const bool warm = l.indirect.size() == 3 * n;
+    l.indirect.resize(3 * n);
+    bounce_seconds_ += runtime_->bounce(scratch_, l.indirect, warm);
+    l.bounced = true;
+    bounced = true;
+  }
+  return bounced;
+}
+
+bool LuminaireLighting::converged() const {
+  for (const Lit& l : luminaires_) {
+    if (l.active && l.live && !l.bounced) return false;
+  }
+  return true;
+}
+
+std::size_t LuminaireLighting::live_count() const {
+  std::size_t n = 0;
+  for (const Lit& l : luminaires_) n += l.live ? 1 : 0;
+  return n;
 }
 
 void LuminaireLighting::project_distribution(std::size_t j, const LuminaireState& s) {
@@ -147,14 +271,14 @@ void LuminaireLighting::project_distribution(std::size_t j, const LuminaireState
   curve_world_sh(*l.curve, s.aim, l.sh);
 }
 
-void LuminaireLighting::update(std::size_t j, const LuminaireState& s, bool geometry_changed) {
+void LuminaireLighting::apply(std::size_t j, const LuminaireState& s, bool geometry_changed) {
   Lit& l = luminaires_[j];
   const int k = sh_count(transfer_.sh_order);
   if (geometry_changed) {
     project_distribution(j, s);
-    if (!transfer_.direct_sh_mode) {
+    if (!transfer_.direct_sh_mode || l.live) {
       // Exact direct: the current distribution evaluated toward every receiver.
-      const LuminaireTransferView& v = transfer_.luminaires[j];
+      const Geometry v = geometry(j);
       const PhotometricFrame frame = photometric_frame(s.aim, s.c0);
       l.direct.resize(transfer_.receivers);
       tbb::parallel_for(
@@ -195,11 +319,10 @@ void LuminaireLighting::add_block(std::size_t b, bool include_direct,
   for (std::size_t j = 0; j < luminaires_.size(); ++j) {
     const Lit& l = luminaires_[j];
     if (!l.active) continue;
-    const LuminaireTransferView& v = transfer_.luminaires[j];
     if (!include_direct) {
       // interreflected light only
-    } else if (transfer_.direct_sh_mode) {
-      const float* s = v.direct_sh.data() + b * k * kBlock;
+    } else if (transfer_.direct_sh_mode && !l.live) {
+      const float* s = transfer_.luminaires[j].direct_sh.data() + b * k * kBlock;
       for (std::size_t basis = 0; basis < k; ++basis) {
         const float* t = s + basis * kBlock;
         for (int c = 0; c < 3; ++c) {
@@ -213,7 +336,14 @@ void LuminaireLighting::add_block(std::size_t b, bool include_direct,
         for (std::size_t i = 0; i < count; ++i) acc[c][i] += l.rgb[c] * d[i];
       }
     }
-    add_weighted_block(v.indirect, b, k, l.weights.data(), acc);
+    if (l.live && l.bounced) {
+      const float* e = l.indirect.data() + 3 * base;
+      for (int c = 0; c < 3; ++c) {
+        for (std::size_t i = 0; i < count; ++i) acc[c][i] += l.rgb[c] * e[3 * i + c];
+      }
+    } else if (l.stored) {
+      add_weighted_block(transfer_.luminaires[*l.stored].indirect, b, k, l.weights.data(), acc);
+    }
   }
 }
 
@@ -221,7 +351,7 @@ void LuminaireLighting::add_glossy(std::span<float> out) const {
   if (glossy_ == nullptr) return;
   for (const Lit& l : luminaires_) {
     if (!l.active || l.glossy.empty()) continue;
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, out.size(), 3 * 4096),
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, out.size(), std::size_t{3 * 4096}),
                       [&](const auto& range) {
                         for (std::size_t i = range.begin(); i != range.end(); ++i) {
                           out[i] += l.rgb[i % 3] * l.glossy[i];
@@ -249,7 +379,7 @@ void LuminaireLighting::respond_glossy(std::size_t j, const LuminaireState& s) {
     l.mirror_traced = false;
     return;
   }
-  const LuminaireTransferView& v = transfer_.luminaires[j];
+  const Geometry v = geometry(j);
   l.glossy.resize(3 * transfer_.receivers);
   // D': what the stored transfer reflected at the glossy vertices — the distribution's SH
   // series toward each (its weights are l.sh), times the same geometry.
@@ -269,7 +399,7 @@ void LuminaireLighting::respond_glossy(std::size_t j, const LuminaireState& s) {
   }
   // Its image in the near-mirror planes: the paths traced once, I evaluated as aimed now.
   if (!l.mirror_traced) {
-    l.mirror_paths = mirrors->trace(specs_[j].position);
+    l.mirror_paths = mirrors->trace(s.position);
     l.mirror_traced = true;
   }
   const PhotometricFrame frame = photometric_frame(s.aim, s.c0);
@@ -285,18 +415,22 @@ void LuminaireLighting::respond_glossy(std::size_t j, const LuminaireState& s) {
 
 std::unique_ptr<const DirectLights> LuminaireLighting::direct_lights(const Occluders& occluders,
                                                                      int opening_samples) const {
-  return std::make_unique<LuminaireDirectLights>(occluders, lights(opening_samples), specs_);
+  return std::make_unique<LuminaireDirectLights>(occluders, lights(opening_samples), states_);
 }
 
 std::size_t LuminaireLighting::transfer_bytes() const {
   std::size_t bytes = 0;
   for (std::size_t j = 0; j < luminaires_.size(); ++j) {
-    if (!luminaires_[j].active) continue;
-    const LuminaireTransferView& v = transfer_.luminaires[j];
-    bytes += v.indirect.size_bytes();
-    bytes += transfer_.direct_sh_mode ? v.direct_sh.size_bytes()
-                                      : luminaires_[j].direct.size() * sizeof(float);
-    bytes += luminaires_[j].glossy.size() * sizeof(float);
+    const Lit& l = luminaires_[j];
+    if (!l.active) continue;
+    if (l.live && l.bounced) {
+      bytes += l.indirect.size() * sizeof(float);
+    } else if (l.stored) {
+      bytes += transfer_.luminaires[*l.stored].indirect.size_bytes();
+    }
+    bytes += transfer_.direct_sh_mode && !l.live ? transfer_.luminaires[j].direct_sh.size_bytes()
+                                                 : l.direct.size() * sizeof(float);
+    bytes += l.glossy.size() * sizeof(float);
   }
   return bytes;
 }

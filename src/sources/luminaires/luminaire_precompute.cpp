@@ -30,7 +30,7 @@ PhaseTiming LuminairePrecompute::compute_direct(const SourceContext& context,
     const std::vector<Vec3> offsets = opening_sample_offsets(
         luminaire_opening(l, placed.distribution.opening()), placed.frame, opening_samples_);
     LuminaireTransfer t;
-    t.direct = compute_direct_geometry(context.receivers, context.ray_points, context.traced,
+    t.direct = compute_direct_geometry(context.receivers, context.ray_points, context.traced.opaque,
                                        l.position, offsets, context.progress, context.ranks);
     rays += t.direct.rays;
     columns.set(columns_[j], sh_basis_direct(t.direct, order));
