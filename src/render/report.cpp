@@ -231,27 +231,29 @@ std::string report_html(RelitScene& scene, const ReportOptions& options) {
     html += "</table>";
   }
 
-  if (!s.luminaires.empty()) {
+  const LightingState& state = scene.state();
+  if (!state.luminaires.empty()) {
+    // The layout as the state sets it: moved luminaires where they hang, added ones too.
     html +=
         "<h2>Luminaires</h2><table><tr><th>name</th><th>position (m)</th><th>photometry"
-        "</th><th>flux (lm)</th><th>dimmer</th><th>on</th></tr>";
-    const LightingState& state = scene.state();
-    for (std::size_t j = 0; j < s.luminaires.size(); ++j) {
-      const Luminaire& l = s.luminaires[j];
+        "</th><th>flux (lm)</th><th>power (W)</th><th>dimmer</th><th>on</th></tr>";
+    for (std::size_t j = 0; j < state.luminaires.size(); ++j) {
       const LuminaireState& ls = state.luminaires[j];
+      const Distribution& d = scene.relighter().distribution(j);
       const std::string photometry = ls.distribution.file.empty()
                                          ? std::string("analytic")
                                          : ls.distribution.file.filename().string();
-      html += "<tr><td>" + html_escape(l.name) + "</td><td>" + format("%.2f", l.position.x) + ", " +
-              format("%.2f", l.position.y) + ", " + format("%.2f", l.position.z) + "</td><td>" +
-              html_escape(photometry) + "</td><td>" +
-              format("%.0f", scene.relighter().distribution(j).flux_lm()) + "</td><td>" +
+      const std::optional<double> watts = d.input_watts();
+      html += "<tr><td>" + html_escape(ls.name) + "</td><td>" + format("%.2f", ls.position.x) +
+              ", " + format("%.2f", ls.position.y) + ", " + format("%.2f", ls.position.z) +
+              "</td><td>" + html_escape(photometry) + "</td><td>" + format("%.0f", d.flux_lm()) +
+              "</td><td>" + (watts ? format("%.1f", *watts) : std::string("—")) + "</td><td>" +
               format("%.2f", ls.dimmer) + "</td><td>" + (ls.on ? "yes" : "no") + "</td></tr>";
     }
     html += "</table>";
-    for (std::size_t j = 0; j < s.luminaires.size(); ++j) {
+    for (std::size_t j = 0; j < state.luminaires.size(); ++j) {
       html += "<div class=\"luminaire\" style=\"display:inline-block;margin:0 1em 1em 0\"><h3>" +
-              html_escape(s.luminaires[j].name) + "</h3>" +
+              html_escape(state.luminaires[j].name) + "</h3>" +
               polar_svg(scene.relighter().distribution(j)) + "</div>";
     }
   }

@@ -185,6 +185,22 @@ TEST(Layout, AnAddedLuminaireNeedsAPositionAndADistribution) {
           "the state adds needs \"distribution\"");
 }
 
+// The report's luminaire schedule is the layout: the moved one where it hangs, the added ones.
+TEST(Layout, TheReportListsTheLayoutAsTheStateSetsIt) {
+  LayoutRoom room;
+  const fs::path html = room.dir.path() / "report.html";
+  const auto r = run_relight("report '" + room.rlt.string() + "' --state '" + room.state.string() +
+                             "' -o '" + html.string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string page = read_text(html);
+  EXPECT_NE(page.find("<td>asym</td><td>3.00, 2.90, 1.50</td>"), std::string::npos);
+  EXPECT_NE(page.find("<td>added ldt</td><td>4.50, 2.90, 3.00</td>"), std::string::npos);
+  EXPECT_NE(page.find("<td>added asym</td>"), std::string::npos);
+  // The EULUMDAT file's 10 W.
+  EXPECT_NE(page.find("<td>small_axial.ldt</td><td>"), std::string::npos);
+  EXPECT_NE(page.find("</td><td>10.0</td>"), std::string::npos);
+}
+
 // "runtime_bounce": false leaves the gather operator out: the file is smaller and refuses a move.
 TEST(Layout, WithoutTheGatherOperatorAMoveIsRefused) {
   LayoutRoom room;
