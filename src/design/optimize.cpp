@@ -19,14 +19,15 @@ constexpr double kBindingTolerance = 1e-4;  // relative: a target at its bound
 
 // Per free luminaire: W at dimmer 1 from "power_w", else from its IES/LDT file; the others
 // the mean of those known, or 1 when none is ("equal").
-std::vector<double> luminaire_watts(const RelitScene& relit, const DesignTargets& targets,
+std::vector<double> luminaire_watts(const RelitScene& relit,
+                                    std::span<const LuminaireFreedom> freedom,
                                     std::span<const std::size_t> free, bool& all_known) {
   std::vector<std::optional<double>> known(free.size());
   double sum = 0;
   std::size_t n = 0;
   for (std::size_t k = 0; k < free.size(); ++k) {
     const std::size_t j = free[k];
-    known[k] = targets.luminaires[j].power_w;
+    known[k] = freedom[j].power_w;
     if (!known[k]) known[k] = relit.relighter().distribution(j).input_watts();
     if (known[k]) {
       sum += *known[k];
@@ -52,7 +53,7 @@ nlohmann::json result_document(const Scene& scene, const StartState& start,
   nlohmann::json doc = start.document.is_object() ? start.document : nlohmann::json::object();
   for (std::size_t k = 0; k < free.size(); ++k) {
     const std::size_t j = free[k];
-    nlohmann::json& l = doc["luminaires"][scene.luminaires[j].name];
+    nlohmann::json& l = doc["luminaires"][state.luminaires[j].name];
     if (!l.is_object()) l = nlohmann::json::object();
     l["on"] = true;
     l["dimmer"] = dimmers[k];
@@ -112,16 +113,19 @@ OptimizeResult optimize_lighting(RelitScene& relit, const StartState& start,
     for (PortalState& p : state.portals) p.tint = {0, 0, 0};
   }
 
-  // The unknowns: every luminaire not fixed; the aimed ones start in their cones.
+  // The unknowns: every luminaire not fixed (those the start state adds are free, dimmer
+  // 0..1); the aimed ones start in their cones.
+  std::vector<LuminaireFreedom> freedom = targets.luminaires;
+  freedom.resize(state.luminaires.size());
   std::vector<std::size_t> free;
   std::vector<AimCone> cones;
   std::vector<std::size_t> cone_of;  // model index of each cone's luminaire
   std::vector<AimOffset> offsets;
-  for (std::size_t j = 0; j < scene.luminaires.size(); ++j) {
-    const LuminaireFreedom& f = targets.luminaires[j];
+  for (std::size_t j = 0; j < state.luminaires.size(); ++j) {
+    const LuminaireFreedom& f = freedom[j];
     if (f.fixed) continue;
     if (f.aim_cone_deg > 0) {
-      const AimCone cone{scene.luminaires[j].aim, f.aim_cone_deg * kPi / 180};
+      const AimCone cone{scene.luminaires.at(j).aim, f.aim_cone_deg * kPi / 180};
       LuminaireState& l = state.luminaires[j];
       offsets.push_back(offset_in_cone(cone, l.aim));
       l.aim = aim_in_cone(cone, offsets.back());
@@ -144,10 +148,10 @@ OptimizeResult optimize_lighting(RelitScene& relit, const StartState& start,
   problem.targets = targets.targets;
   problem.objective = targets.objective;
   for (const std::size_t j : free) {
-    problem.lo.push_back(targets.luminaires[j].dimmer_lo);
-    problem.hi.push_back(targets.luminaires[j].dimmer_hi);
+    problem.lo.push_back(freedom[j].dimmer_lo);
+    problem.hi.push_back(freedom[j].dimmer_hi);
   }
-  problem.watts = luminaire_watts(relit, targets, free, result.watts_from_data);
+  problem.watts = luminaire_watts(relit, freedom, free, result.watts_from_data);
   DimmerSolution best = solve_dimmers(problem);
   int iterations = best.iterations;
 

@@ -201,6 +201,30 @@ TEST(Layout, TheReportListsTheLayoutAsTheStateSetsIt) {
   EXPECT_NE(page.find("</td><td>10.0</td>"), std::string::npos);
 }
 
+// Inverse design over the layout: the added luminaires are free dimmers with the scene's, and
+// the state it writes meets the target when probed.
+TEST(Layout, OptimizeDimsTheAddedLuminairesToo) {
+  LayoutRoom room;
+  const fs::path targets =
+      room.dir.write("targets.json", R"({ "sensors": { "desk": { "em_min": 150 } } })");
+  const fs::path out = room.dir.path() / "designed.json";
+  auto r = run_relight("optimize '" + room.rlt.string() + "' --targets '" + targets.string() +
+                       "' --state '" + room.state.string() + "' -o '" + out.string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json designed = nlohmann::json::parse(read_text(out));
+  ASSERT_TRUE(designed["luminaires"]["added ldt"].contains("dimmer")) << designed.dump();
+  ASSERT_TRUE(designed["luminaires"]["added asym"].contains("dimmer")) << designed.dump();
+  const fs::path csv = room.dir.path() / "designed.csv";
+  r = run_relight("probe '" + room.rlt.string() + "' --state '" + out.string() + "' -o '" +
+                  csv.string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::vector<double> lux = sensor_lux(csv);
+  double desk = 0;
+  for (std::size_t i = 0; i < 24; ++i) desk += lux[i] / 24;  // the 6 × 4 desk grid comes first
+  EXPECT_GT(desk, 150 * 0.995);
+  EXPECT_LT(desk, 150 * 1.05);  // the least power: no more light than the target needs
+}
+
 // "runtime_bounce": false leaves the gather operator out: the file is smaller and refuses a move.
 TEST(Layout, WithoutTheGatherOperatorAMoveIsRefused) {
   LayoutRoom room;
