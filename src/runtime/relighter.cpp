@@ -144,7 +144,7 @@ void Relighter::add_glossy(std::span<float> out) const {
 }
 
 void Relighter::set_state(const LightingState& state) {
-  if (lights_.luminaires().needs_runtime(state.luminaires) && !runtime_) {
+  if (lights_.luminaires().needs_runtime(state.luminaires)) {
     // A moved or added luminaire is traced against the room and bounced through its stored
     // gather operator.
     if (transfer_.scene.gather_rows.empty()) {
@@ -152,8 +152,10 @@ void Relighter::set_state(const LightingState& state) {
                  "moving or adding a luminaire needs the gather operator, which this transfer "
                  "file does not keep (\"runtime_bounce\": false): precompute again without it");
     }
-    runtime_.emplace(transfer_.scene, bounce_);
-    lights_.luminaires().set_runtime(&*runtime_);
+    if (!runtime_) {
+      runtime_.emplace(transfer_.scene, bounce_);
+      lights_.luminaires().set_runtime(&*runtime_);
+    }
   }
   for (LightTerm* light : lights_.all()) {
     if (light->set_state(state)) invalidate(light);

@@ -94,7 +94,8 @@ class Relighter {
   std::span<const float> vertex_albedo() const { return vertex_albedo_; }
 
   // The scene's receivers, occluders and gather operator for light computed at run time;
-  // null for a scene with no portals, emitters or movable objects.
+  // null for a scene with no portals, emitters or movable objects until a state moves or adds a
+  // luminaire or edits a material.
   const RuntimeScene* runtime_scene() const { return runtime_ ? &*runtime_ : nullptr; }
   // The sensors' importance when relight() reads the sensors alone through it, else null.
   std::shared_ptr<const SensorImportance> sensor_importance() const {
