@@ -13,11 +13,6 @@ namespace relight {
 
 namespace {
 
-bool inside(const Bounds& b, Vec3 p) {
-  return p.x >= b.min.x && p.y >= b.min.y && p.z >= b.min.z && p.x <= b.max.x && p.y <= b.max.y &&
-         p.z <= b.max.z;
-}
-
 double since_ms(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
       .count();
@@ -38,7 +33,7 @@ nlohmann::json bench_layout(const BenchOptions& args) {
   // Along the longer horizontal axis, toward the side with room for 0.4 m.
   const Vec3 extent = bounds.max - bounds.min;
   Vec3 step = extent.x >= extent.z ? Vec3{0.2, 0, 0} : Vec3{0, 0, 0.2};
-  if (!inside(bounds, home + step * 2.0)) step = step * -1.0;
+  if (!contains(bounds, home + step * 2.0)) step = step * -1.0;
   LuminaireState added = state.luminaires.front();
   added.name = "bench added luminaire";
   const Vec3 middle = (bounds.min + bounds.max) * 0.5;

@@ -21,11 +21,6 @@ LuminaireState* find_luminaire(LightingState& state, const std::string& name) {
   return nullptr;
 }
 
-bool inside(const Bounds& b, Vec3 p) {
-  return p.x >= b.min.x && p.y >= b.min.y && p.z >= b.min.z && p.x <= b.max.x && p.y <= b.max.y &&
-         p.z <= b.max.z;
-}
-
 void apply_luminaire(LuminaireState& s, const Scene& scene, const JsonNode& node,
                      const std::filesystem::path& base_dir) {
   node.expect_keys({"on", "dimmer", "color", "cct_kelvin", "aim", "target", "c0", "distribution",
@@ -33,7 +28,7 @@ void apply_luminaire(LuminaireState& s, const Scene& scene, const JsonNode& node
   if (const auto p = node.find("position")) {
     const Vec3 at = p->vec3();
     // Named as docs/lighting-state.md names it: STATE:luminaires.NAME.position.
-    if (!inside(scene.bounds(), at)) {
+    if (!contains(scene.bounds(), at)) {
       fail_input(p->file() + ":luminaires." + s.name + ".position", "outside the scene");
     }
     s.position = at;

@@ -190,6 +190,12 @@ struct Bounds {
   Vec3 min{0, 0, 0}, max{0, 0, 0};
 };
 
+// Whether p lies in the box (its faces included).
+inline bool contains(const Bounds& b, Vec3 p) {
+  return p.x >= b.min.x && p.y >= b.min.y && p.z >= b.min.z && p.x <= b.max.x && p.y <= b.max.y &&
+         p.z <= b.max.z;
+}
+
 struct Scene {
   std::filesystem::path file;  // the scene file (for messages and relative paths)
   std::vector<Material> materials;

@@ -85,6 +85,7 @@ LuminaireLighting::LuminaireLighting(LuminaireTransferSet transfer, const Scene&
   for (const Luminaire& l : scene.luminaires) states_.push_back(luminaire_state(l));
   for (std::size_t j = 0; j < luminaires_.size(); ++j) {
     luminaires_[j].stored = j;
+    project_distribution(j, states_[j]);
     apply(j, states_[j], true);
   }
 }
@@ -134,7 +135,7 @@ void LuminaireLighting::trace_live(std::size_t j, const LuminaireState& s) {
   }
   const auto start = std::chrono::steady_clock::now();
   Lit& l = luminaires_[j];
-  const Distribution distribution = load_distribution(s.distribution);
+  const Distribution& distribution = l.distribution;  // loaded for s by project_distribution
   const std::vector<Vec3> offsets =
       opening_sample_offsets(luminaire_opening(scene_luminaire(s), distribution.opening()),
                              photometric_frame(s.aim, s.c0), kOpeningSamples);
@@ -166,6 +167,7 @@ bool LuminaireLighting::set_state(std::span<const LuminaireState> states) {
     states_.resize(states.size());
     for (std::size_t j = specs_.size(); j < states.size(); ++j) {
       states_[j] = states[j];
+      project_distribution(j, states[j]);
       trace_live(j, states[j]);
       apply(j, states[j], true);
     }
@@ -175,8 +177,11 @@ bool LuminaireLighting::set_state(std::span<const LuminaireState> states) {
     const LuminaireState& now = states_[j];
     const LuminaireState& next = states[j];
     const bool moved = !(now.position == next.position) || !same_opening(now, next);
-    bool geometry_changed = moved || !(now.aim == next.aim) || !(now.c0 == next.c0) ||
-                            !same_distribution(now.distribution, next.distribution);
+    const bool photometry_changed = !(now.aim == next.aim) || !(now.c0 == next.c0) ||
+                                    !same_distribution(now.distribution, next.distribution);
+    // A move keeps the SH weights: only a new aim or distribution is projected (and its file
+    // read) again.
+    if (photometry_changed) project_distribution(j, next);
     if (moved) {
       if (is_moved(j, next)) {
         trace_live(j, next);
@@ -187,12 +192,12 @@ bool LuminaireLighting::set_state(std::span<const LuminaireState> states) {
         luminaires_[j].stored = j;
         luminaires_[j].mirror_traced = false;
       }
-    } else if (geometry_changed && luminaires_[j].live) {
+    } else if (photometry_changed && luminaires_[j].live) {
       luminaires_[j].bounced = false;  // its direct light changed: bounce it again
     }
-    apply(j, next, geometry_changed);
-    changed = changed || geometry_changed || now.on != next.on || now.dimmer != next.dimmer ||
-              !(now.color == next.color);
+    apply(j, next, moved || photometry_changed);
+    changed = changed || moved || photometry_changed || now.on != next.on ||
+              now.dimmer != next.dimmer || !(now.color == next.color);
     states_[j] = next;
   }
   // Luminaires a state no longer adds are gone from the light.
@@ -271,11 +276,10 @@ void LuminaireLighting::project_distribution(std::size_t j, const LuminaireState
   curve_world_sh(*l.curve, s.aim, l.sh);
 }
 
-void LuminaireLighting::apply(std::size_t j, const LuminaireState& s, bool geometry_changed) {
+void LuminaireLighting::apply(std::size_t j, const LuminaireState& s, bool direct_changed) {
   Lit& l = luminaires_[j];
   const int k = sh_count(transfer_.sh_order);
-  if (geometry_changed) {
-    project_distribution(j, s);
+  if (direct_changed) {
     if (!transfer_.direct_sh_mode || l.live) {
       // Exact direct: the current distribution evaluated toward every receiver.
       const Geometry v = geometry(j);

@@ -130,7 +130,9 @@ class LuminaireLighting : public LightTerm {
   bool is_moved(std::size_t j, const LuminaireState& s) const;
   void trace_live(std::size_t j, const LuminaireState& s);
 
-  void apply(std::size_t j, const LuminaireState& s, bool geometry_changed);
+  // Luminaire j's exact direct light (when `direct_changed`; its distribution already projected
+  // for s) and its weights.
+  void apply(std::size_t j, const LuminaireState& s, bool direct_changed);
   void project_distribution(std::size_t j, const LuminaireState& s);
   void respond_glossy(std::size_t j, const LuminaireState& s);
 
