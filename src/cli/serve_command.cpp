@@ -1,5 +1,5 @@
-// `relight serve SCENE.rlt [--host 127.0.0.1] [--port 8080] [--client DIR]`: the studio
-// (docs/studio.md) on a precomputed scene: prints the URL to open and serves until Ctrl-C.
+// `relight serve SCENE.rlt [--host 127.0.0.1] [--port 8080] [--client DIR] [--photometry DIR]`: the
+// studio (docs/studio.md) on a precomputed scene: prints the URL to open and serves until Ctrl-C.
 // The protocol is docs/studio-protocol.md; the server serve/studio_server.h.
 #include <iostream>
 #include <memory>
@@ -15,14 +15,19 @@ void add_serve_command(CLI::App& app, Action& action) {
   auto rlt = std::make_shared<std::string>();
   auto options = std::make_shared<StudioOptions>();
   auto client = std::make_shared<std::string>();
+  auto photometry = std::make_shared<std::string>();
   CLI::App* cmd =
       app.add_subcommand("serve", "Serve the studio (a browser client) on a precomputed scene");
   cmd->add_option("scene", *rlt, "precomputed scene (.rlt)")->required();
   add_studio_address_options(*cmd, *options);
   cmd->add_option("--client", *client, "folder of the studio client (default: the source tree's)");
-  cmd->callback([rlt, options, client, &action] {
-    action = [rlt, options, client] {
+  cmd->add_option("--photometry", *photometry,
+                  "folder of IES/LDT files for the studio's catalogue (uploads go to its "
+                  "uploads/ folder)");
+  cmd->callback([rlt, options, client, photometry, &action] {
+    action = [rlt, options, client, photometry] {
       options->client = *client;
+      options->photometry = *photometry;
       return serve_studio(*rlt, *options);
     };
   });

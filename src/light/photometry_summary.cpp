@@ -76,6 +76,16 @@ double outermost_crossing_deg(const PhotometricWeb& web, double c_rad, double le
 
 }  // namespace
 
+nlohmann::json polar_json(const PhotometrySummary& s) {
+  std::vector<int> gamma;
+  for (int g = 0; g <= 180; g += kPolarStepDeg) gamma.push_back(g);
+  return {{"gamma_deg", gamma},
+          {"c0", s.polar_cd[0]},
+          {"c90", s.polar_cd[1]},
+          {"c180", s.polar_cd[2]},
+          {"c270", s.polar_cd[3]}};
+}
+
 std::string_view to_string(CSymmetry symmetry) {
   switch (symmetry) {
     case CSymmetry::kNone:
@@ -160,6 +170,12 @@ PhotometrySummary summarize_photometry(std::string_view text, const std::filesys
   s.beam_angle_deg = spread_angle_deg(web, 0.5);
   s.field_angle_deg = spread_angle_deg(web, 0.1);
   s.opening = web.opening;
+  for (std::size_t plane = 0; plane < 4; ++plane) {
+    const double c_rad = kPi / 2 * static_cast<double>(plane);
+    for (int g = 0; g <= 180; g += kPolarStepDeg) {
+      s.polar_cd[plane].push_back(intensity(web, c_rad, g * kPi / 180.0));
+    }
+  }
   return s;
 }
 

@@ -19,6 +19,7 @@
 // Pinned by tests/light/photometry_summary_test.cpp.
 #pragma once
 
+#include <array>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -44,7 +45,12 @@ struct PhotometrySummary {
   CSymmetry symmetry = CSymmetry::kNone;
   LuminousOpening opening;
   bool absolute_photometry = false;
+  // The polar plot of a catalogue: candela at γ = 0, 5, …, 180° in the half-planes C0, C90,
+  // C180 and C270 (kPolarStepDeg apart).
+  std::array<std::vector<double>, 4> polar_cd;
 };
+
+inline constexpr int kPolarStepDeg = 5;
 
 // The full angle (degrees) within which the web's intensity stays at or above
 // `fraction` of its peak, as defined in the header comment.
@@ -63,6 +69,9 @@ PhotometrySummary summarize_photometry_file(const std::filesystem::path& file);
 
 // One JSON object with the keys of `relight info FILE.ies` (docs/cli.md).
 nlohmann::json to_json(const PhotometrySummary& summary);
+
+// The polar plot as {"gamma_deg": [...], "c0": [...], "c90": [...], "c180": [...], "c270": [...]}.
+nlohmann::json polar_json(const PhotometrySummary& summary);
 
 std::string_view to_string(CSymmetry symmetry);
 

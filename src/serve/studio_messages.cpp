@@ -25,14 +25,6 @@ std::optional<std::uint32_t> read_seq(const JsonNode& root) {
   return s->value().get<std::uint32_t>();
 }
 
-std::size_t luminaire_named(const Scene& scene, const JsonNode& node) {
-  const std::string name = node.string();
-  for (std::size_t j = 0; j < scene.luminaires.size(); ++j) {
-    if (scene.luminaires[j].name == name) return j;
-  }
-  node.fail("no luminaire named \"" + name + "\" in the scene");
-}
-
 }  // namespace
 
 nlohmann::json seq_json(std::optional<std::uint32_t> seq) {
@@ -90,7 +82,7 @@ ClientMessage parse_client_message(const std::string& text, const Scene& scene,
   } else if (type == "distribution") {
     root.expect_keys({"type", "seq", "luminaire", "samples"});
     DistributionRequest r;
-    r.luminaire = luminaire_named(scene, root.at("luminaire"));
+    r.luminaire = root.at("luminaire").string();
     if (const auto s = root.find("samples")) r.samples = s->integer_in(2, 1801);
     m.request = r;
   } else if (type == "ping") {
@@ -110,6 +102,12 @@ ClientMessage parse_client_message(const std::string& text, const Scene& scene,
       r.period = *period;
     }
     m.request = std::move(r);
+  } else if (type == "upload") {
+    root.expect_keys({"type", "seq", "name", "text"});
+    m.request = UploadRequest{root.at("name").string(), root.at("text").string()};
+  } else if (type == "export_scene") {
+    root.expect_keys({"type", "seq"});
+    m.request = ExportSceneRequest{};
   } else if (type == "optimize") {
     root.expect_keys({"type", "seq", "targets", "daylight"});
     OptimizeRequest r{parse_design_targets(root.at("targets"), scene)};
@@ -117,7 +115,8 @@ ClientMessage parse_client_message(const std::string& text, const Scene& scene,
     m.request = std::move(r);
   } else {
     root.at("type").fail("unknown message type \"" + type +
-                         "\" (expected state, pick, distribution, ping, annual, optimize or view)");
+                         "\" (expected state, pick, distribution, ping, annual, optimize, view, "
+                         "upload or export_scene)");
   }
   return m;
 }
@@ -294,7 +293,7 @@ nlohmann::json error_message(std::optional<std::uint32_t> seq, const std::string
   return {{"type", "error"}, {"seq", seq_json(seq)}, {"message", message}};
 }
 
-nlohmann::json distribution_message(std::optional<std::uint32_t> seq, const Luminaire& luminaire,
+nlohmann::json distribution_message(std::optional<std::uint32_t> seq, const std::string& luminaire,
                                     const DistributionSpec& spec,
                                     const DistributionProfile& profile, int sh_order,
                                     std::size_t incremental_updates) {
@@ -307,7 +306,7 @@ nlohmann::json distribution_message(std::optional<std::uint32_t> seq, const Lumi
   };
   nlohmann::json m = {
       {"type", "distribution"},         {"seq", seq_json(seq)},
-      {"luminaire", luminaire.name},    {"kind", kKinds[static_cast<int>(spec.type)]},
+      {"luminaire", luminaire},         {"kind", kKinds[static_cast<int>(spec.type)]},
       {"sh_order", sh_order},           {"window", "sigma"},
       {"gamma_deg", profile.gamma_deg}, {"exact", planes(profile.exact)},
       {"sh", planes(profile.sh)},       {"sh_windowed", planes(profile.sh_windowed)},

@@ -38,10 +38,19 @@ struct StateRequest {
 struct PickRequest {
   Vec3 origin, direction;  // direction normalised
 };
+// A luminaire of the scene or one the state shown adds, by name (resolved when answered).
 struct DistributionRequest {
-  std::size_t luminaire = 0;
+  std::string luminaire;
   int samples = kDefaultProfileSamples;
 };
+// A photometric file for the catalogue (serve/photometry_catalogue.h): its name as the client
+// knows it (never used as a path) and its text.
+struct UploadRequest {
+  std::string name;
+  std::string text;
+};
+// The scene JSON with the layout shown as ordinary luminaires (runtime/scene_export.h).
+struct ExportSceneRequest {};
 struct PingRequest {};
 // Where the sender's camera is: glossy surfaces are shaded toward it (RLGV).
 struct ViewRequest {
@@ -67,7 +76,7 @@ inline constexpr std::size_t kMaxClientMessageBytes = std::size_t{8} << 20;
 struct ClientMessage {
   std::optional<std::uint32_t> seq;
   std::variant<StateRequest, PickRequest, DistributionRequest, PingRequest, AnnualRequest,
-               OptimizeRequest, ViewRequest>
+               OptimizeRequest, ViewRequest, UploadRequest, ExportSceneRequest>
       request;
 };
 
@@ -81,7 +90,7 @@ nlohmann::json hello_message(const TransferFile& transfer, const std::string& sc
 
 nlohmann::json error_message(std::optional<std::uint32_t> seq, const std::string& message);
 
-nlohmann::json distribution_message(std::optional<std::uint32_t> seq, const Luminaire& luminaire,
+nlohmann::json distribution_message(std::optional<std::uint32_t> seq, const std::string& luminaire,
                                     const DistributionSpec& spec,
                                     const DistributionProfile& profile, int sh_order,
                                     std::size_t incremental_updates);

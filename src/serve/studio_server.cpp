@@ -19,6 +19,9 @@
 #include "runtime/annual_daylight.h"
 #include "runtime/luminaire_profile.h"
 #include "runtime/relit_scene.h"
+#include "runtime/scene_export.h"
+#include "scene/json_node.h"
+#include "serve/photometry_catalogue.h"
 #include "serve/static_files.h"
 #include "serve/studio_frames.h"
 #include "serve/studio_messages.h"
@@ -79,6 +82,21 @@ nlohmann::json named_distribution(const nlohmann::json& document, const std::str
   return d == l->end() ? nlohmann::json(nullptr) : *d;
 }
 
+// Whether `next` hangs a luminaire of the layout elsewhere than `now`, or adds or drops one:
+// its interreflection is then solved anew, and a first frame shows it approximately
+// (runtime/relighter.h set_layout_bounce).
+bool layout_moves(const LightingState& now, const LightingState& next) {
+  if (now.luminaires.size() != next.luminaires.size()) return true;
+  for (std::size_t j = 0; j < now.luminaires.size(); ++j) {
+    const Vec3 a = now.luminaires[j].position, b = next.luminaires[j].position;
+    if (now.luminaires[j].name != next.luminaires[j].name || a.x != b.x || a.y != b.y ||
+        a.z != b.z) {
+      return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 struct StudioServer::Impl {
@@ -91,6 +109,10 @@ struct StudioServer::Impl {
   std::string objects_message;        // RLOB; empty when the scene has no movable objects
   const RayTracer* picker = nullptr;  // relit's tracer of every triangle
   std::unique_ptr<WebSocketServer> transport;
+  // Null without --photometry. Its own mutex: an upload parses and writes a file, which the
+  // relighting's mutex need not wait for.
+  std::unique_ptr<PhotometryCatalogue> catalogue;
+  std::mutex catalogue_mutex;
 
   std::mutex mutex;  // guards everything below
   std::condition_variable wake;
@@ -177,11 +199,17 @@ struct StudioServer::Impl {
       }
       try {
         // A material edit shows its first bounce at once, then the converged light
-        // (runtime/relighter.h set_material_bounces); the state messages say which.
+        // (runtime/relighter.h set_material_bounces); a luminaire moved or added its exact
+        // direct light with the nearest stored luminaire's interreflection, then its own
+        // (set_layout_bounce). The state messages say which.
         if (relit->state().materials != p.state.materials) {
           relit->set_material_bounces(0);
           show(p, shown_document, frame_number, false);
           relit->set_material_bounces(-1);
+        } else if (layout_moves(relit->state(), p.state)) {
+          relit->relighter().set_layout_bounce(false);
+          show(p, shown_document, frame_number, false);
+          relit->relighter().set_layout_bounce(true);
         }
         show(p, shown_document, frame_number, true);
         last_good = std::move(p.state);
@@ -190,6 +218,7 @@ struct StudioServer::Impl {
       } catch (const std::exception& e) {  // e.g. a map file that cannot be read
         send_json(p.client, error_message(p.seq, e.what()));
         relit->set_material_bounces(-1);
+        relit->relighter().set_layout_bounce(true);
         try {
           relit->apply(last_good);
         } catch (const std::exception&) {  // it lit before: cannot fail again
@@ -211,8 +240,9 @@ struct StudioServer::Impl {
         std::make_shared<const std::string>(encode_frame(number, p.seq, ms.count(), *values));
     incremental_updates = relit->incremental_curve_updates();
     std::vector<std::string> profiles;
-    for (std::size_t j = 0; j < scene().luminaires.size(); ++j) {
-      const std::string& name = scene().luminaires[j].name;
+    // The scene's luminaires and those the state adds.
+    for (std::size_t j = 0; j < p.state.luminaires.size(); ++j) {
+      const std::string& name = p.state.luminaires[j].name;
       if (named_distribution(p.document, name) != named_distribution(shown_document, name)) {
         profiles.push_back(text_of(profile_message(std::nullopt, j, p.state)));
       }
@@ -261,7 +291,7 @@ struct StudioServer::Impl {
     const DistributionSpec& spec = state.luminaires.at(j).distribution;
     const int order = transfer().view.sh_order;
     const DistributionProfile profile = luminaire_profile(spec, order, samples);
-    return distribution_message(seq, scene().luminaires[j], spec, profile, order,
+    return distribution_message(seq, state.luminaires.at(j).name, spec, profile, order,
                                 incremental_updates.load());
   }
 
@@ -276,6 +306,10 @@ struct StudioServer::Impl {
     transport->send(id, geometry, true);
     if (!objects_message.empty()) transport->send(id, objects_message, true);
     transport->send(id, *shown.frame, true);
+    if (catalogue) {
+      std::lock_guard catalogue_lock(catalogue_mutex);
+      send_json(id, catalogue_message(*catalogue));
+    }
   }
 
   void on_close(ConnectionId id) {
@@ -302,8 +336,8 @@ struct StudioServer::Impl {
     LightingState state = default_lighting_state(scene());
     apply_lighting_state(state, scene(), r.document, "message", rlt.parent_path());
     // Photometry files a state names are read now, so their errors reach this sender.
-    for (std::size_t j = 0; j < scene().luminaires.size(); ++j) {
-      if (!named_distribution(r.document, scene().luminaires[j].name).is_null()) {
+    for (std::size_t j = 0; j < state.luminaires.size(); ++j) {
+      if (!named_distribution(r.document, state.luminaires[j].name).is_null()) {
         (void)load_distribution(state.luminaires[j].distribution);
       }
     }
@@ -394,7 +428,57 @@ struct StudioServer::Impl {
       std::lock_guard lock(mutex);
       state = shown.state;
     }
-    send_json(id, profile_message(seq, r.luminaire, state, r.samples));
+    for (std::size_t j = 0; j < state.luminaires.size(); ++j) {
+      if (state.luminaires[j].name == r.luminaire) {
+        send_json(id, profile_message(seq, j, state, r.samples));
+        return;
+      }
+    }
+    fail_input("message:/luminaire",
+               "no luminaire named \"" + r.luminaire + "\" in the scene or the state shown");
+  }
+
+  // An upload joins the catalogue: the sender gets its entry, every client the new catalogue.
+  void handle(ConnectionId id, std::optional<std::uint32_t> seq, const UploadRequest& r) {
+    if (!catalogue) {
+      fail_input("message",
+                 "this server has no photometry catalogue (start relight serve with "
+                 "--photometry DIR to accept uploads)");
+    }
+    nlohmann::json entry, listing;
+    {
+      std::lock_guard catalogue_lock(catalogue_mutex);
+      entry = catalogue_entry_json(catalogue->add_upload(r.name, r.text));
+      listing = catalogue_message(*catalogue);
+    }
+    send_json(id, {{"type", "uploaded"}, {"seq", seq_json(seq)}, {"entry", entry}});
+    const std::string text = text_of(listing);
+    std::lock_guard lock(mutex);
+    for (const ConnectionId c : clients) transport->send(c, text, false);
+  }
+
+  // The scene with the layout of the latest state received (one sent just before this message
+  // may not be shown yet) as ordinary luminaires.
+  void handle(ConnectionId id, std::optional<std::uint32_t> seq, const ExportSceneRequest&) {
+    nlohmann::json document;
+    {
+      std::lock_guard lock(mutex);
+      document = received_document;
+    }
+    LightingState state = default_lighting_state(scene());
+    apply_lighting_state(state, scene(), document, "message", rlt.parent_path());
+    // The .rlt keeps the scene without its geometry: the exported scene is the file it was
+    // precomputed from.
+    const fs::path scene_file = transfer().metadata.at("scene_file").get<std::string>();
+    std::error_code ec;
+    if (!fs::is_regular_file(scene_file, ec)) {
+      fail_input("message", "Export scene reads the scene file the .rlt was precomputed from, " +
+                                scene_file.string() + ": not found");
+    }
+    const nlohmann::json scene_json = read_json_file(scene_file);
+    send_json(id, {{"type", "scene"},
+                   {"seq", seq_json(seq)},
+                   {"scene", scene_json_with_layout(scene_json, scene_file, state)}});
   }
 
   void handle(ConnectionId id, std::optional<std::uint32_t> seq, AnnualRequest& r) {
@@ -504,6 +588,9 @@ StudioServer::StudioServer(const fs::path& rlt, const StudioOptions& options)
   s.rlt = rlt;
   s.options = options;
   s.client_folder = studio_client_folder(options.client);
+  if (!options.photometry.empty()) {
+    s.catalogue = std::make_unique<PhotometryCatalogue>(options.photometry);
+  }
   // The glossy BRDF's albedo table, which a designer's first roughness or metallic edit needs:
   // built before serving (0.9 s of CPU once), not in that edit's frame.
   prepare_metallic_roughness_tables();

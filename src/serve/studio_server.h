@@ -17,7 +17,10 @@ struct StudioOptions {
   std::string host = "127.0.0.1";
   std::uint16_t port = 8080;     // 0: any free port
   std::filesystem::path client;  // empty: the studio/ folder compiled in
-  bool stop_on_signals = true;   // Ctrl-C / SIGTERM end run()
+  // The photometry catalogue's folder (serve/photometry_catalogue.h); empty: no catalogue, and
+  // uploads are refused.
+  std::filesystem::path photometry;
+  bool stop_on_signals = true;  // Ctrl-C / SIGTERM end run()
 };
 
 class StudioServer {

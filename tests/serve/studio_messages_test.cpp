@@ -51,6 +51,11 @@ TEST(StudioMessages, StatePickDistributionPing) {
   const ClientMessage d = parse(R"({"type":"distribution","luminaire":"down","samples":91})");
   EXPECT_EQ(std::get<DistributionRequest>(d.request).samples, 91);
   EXPECT_TRUE(std::holds_alternative<PingRequest>(parse(R"({"type":"ping","seq":0})").request));
+  const ClientMessage u = parse(R"({"type":"upload","seq":4,"name":"a.ies","text":"IES"})");
+  EXPECT_EQ(std::get<UploadRequest>(u.request).name, "a.ies");
+  EXPECT_EQ(std::get<UploadRequest>(u.request).text, "IES");
+  EXPECT_TRUE(
+      std::holds_alternative<ExportSceneRequest>(parse(R"({"type":"export_scene"})").request));
 }
 
 TEST(StudioMessages, MalformedMessagesNameWhereAndKeepTheirSeq) {
@@ -64,7 +69,10 @@ TEST(StudioMessages, MalformedMessagesNameWhereAndKeepTheirSeq) {
   EXPECT_NE(
       refusal(R"({"type":"pick","origin":[0,"a",0],"direction":[0,1,0]})").first.find("/origin"),
       std::string::npos);
-  EXPECT_NE(refusal(R"({"type":"distribution","luminaire":"nobody"})").first.find("nobody"),
+  EXPECT_NE(refusal(R"({"type":"distribution","luminaire":7})").first.find("/luminaire"),
+            std::string::npos);
+  EXPECT_NE(refusal(R"({"type":"upload","name":"a.ies"})").first.find("text"), std::string::npos);
+  EXPECT_NE(refusal(R"({"type":"export_scene","scene":{}})").first.find("scene"),
             std::string::npos);
   EXPECT_NE(
       refusal(R"({"type":"distribution","luminaire":"down","samples":1})").first.find("/samples"),
