@@ -10,6 +10,47 @@ const normalize = (v) => {
   return l > 0 ? v.map((x) => x / l) : v;
 };
 
+// The luminaires the layout shows: the scene's (hello order), then those the state adds (an
+// entry whose name the scene lacks, with a position and a distribution; by name, as the
+// server orders them). An added one's scene values are its entry's at placing, marked `added`.
+export function layoutLuminaires(hello, doc) {
+  const names = new Set(hello.luminaires.map((l) => l.name));
+  const added = Object.keys(doc?.luminaires ?? {})
+    .filter((n) => {
+      const e = doc.luminaires[n];
+      return !names.has(n) && e && Array.isArray(e.position) && e.distribution;
+    })
+    .sort()
+    .map((name) => {
+      const e = doc.luminaires[name];
+      return { name, added: true, position: e.position, aim: [0, -1, 0], color: [1, 1, 1], dimmer: 1, size: [0, 0, 0], distribution: e.distribution };
+    });
+  return [...hello.luminaires, ...added];
+}
+
+// The group of an array's luminaire (named GROUP-rRcC by the array tool), or null.
+export function groupOf(name) {
+  const m = /^(.*)-r\d+c\d+$/.exec(name);
+  return m ? m[1] : null;
+}
+
+const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+
+// C0 as the relighter takes it: the hint (default: world +x, or −z for an aim along x, as the
+// scene loader) made perpendicular to the aim.
+export function c0Of(hint, aim) {
+  const h = hint ?? (Math.abs(aim[0]) > 0.999 ? [0, 0, -1] : [1, 0, 0]);
+  const d = dot(h, aim);
+  return normalize(h.map((x, k) => x - d * aim[k]));
+}
+
+// C0 turned by `deg` about the aim (right-handed), perpendicular to it.
+export function turnC0(c0, aim, deg) {
+  const a = (deg * Math.PI) / 180, c = Math.cos(a), s = Math.sin(a);
+  const x = [aim[1] * c0[2] - aim[2] * c0[1], aim[2] * c0[0] - aim[0] * c0[2], aim[0] * c0[1] - aim[1] * c0[0]];
+  return normalize(c0.map((v, k) => c * v + s * x[k]));
+}
+
 export function effectiveLuminaire(scene, entry = {}) {
   let colorMode = 'scene';
   let color = scene.color || [1, 1, 1];
@@ -21,12 +62,16 @@ export function effectiveLuminaire(scene, entry = {}) {
     color = entry.color;
   }
   const l = luminance(color);
+  const position = entry.position ?? scene.position;
   let aim = normalize(scene.aim || [0, -1, 0]);
-  if (entry.target) aim = normalize(sub(entry.target, scene.position));
+  if (entry.target) aim = normalize(sub(entry.target, position));
   else if (entry.aim) aim = normalize(entry.aim);
   return {
+    c0: c0Of(entry.c0 ?? scene.c0, aim),
     name: scene.name,
-    position: scene.position,
+    added: !!scene.added,
+    position,
+    moved: entry.position !== undefined && !scene.added,
     on: entry.on ?? true,
     dimmer: entry.dimmer ?? scene.dimmer ?? 1,
     colorMode,

@@ -1,4 +1,5 @@
-// The Luminaires panel: one block per luminaire (hello order i) with on/off
+// The Luminaires panel: one block per luminaire of the layout (the scene's in hello order, then
+// those the state adds; index i in that order) with on/off
 // (data-testid on-i), a dimmer slider 0..1 (dimmer-i) and a number box that also takes
 // values above 1, colour as the scene's, an RGB chromaticity (colour picker) or a colour
 // temperature (cct_kelvin 1667..25000 K), the distribution type and its parameters
@@ -7,7 +8,7 @@
 // luminaire's "target" (the lighting-design paper §4.2, Fig. 5). Every change edits the
 // state document (state.js), which sends the whole document.
 import { cctToRgb, hexToLinear, linearToHex } from './colors.js';
-import { effectiveLuminaire, peakCandela, sampleCurve } from './luminaire_model.js';
+import { effectiveLuminaire, layoutLuminaires, peakCandela, sampleCurve } from './luminaire_model.js';
 import { el, numberInput, onValue, row, select, setIfIdle, sliderNumber } from './ui.js';
 
 const DIST_TYPES = [
@@ -31,10 +32,15 @@ export class LuminairePanel {
 
   setScene(hello) {
     this.hello = hello;
-    this.container.innerHTML = '';
-    this.blocks = hello.luminaires.map((lum, i) => this._block(lum, i));
-    if (!this.blocks.length) this.container.append(el('p', { class: 'hint', text: 'This scene has no luminaires.' }));
+    this._names = null;
     this.refresh();
+  }
+
+  // The blocks anew when the layout's names change (a luminaire added or deleted).
+  _rebuild(list) {
+    this.container.innerHTML = '';
+    this.blocks = list.map((lum, i) => this._block(lum, i));
+    if (!this.blocks.length) this.container.append(el('p', { class: 'hint', text: 'No luminaires: drag one from the catalogue onto a ceiling or a wall.' }));
   }
 
   entry(name) {
@@ -50,16 +56,18 @@ export class LuminairePanel {
     const b = { lum, i };
     b.swatch = el('span', { class: 'swatch' });
     b.summaryInfo = el('span', { class: 'summary-info' });
-    const details = el('details', { class: 'luminaire', open: true, dataset: { luminaire: name, index: String(i) } }, [
-      el('summary', { title: `Luminaire "${name}" at (${lum.position.join(', ')}) m` }, [b.swatch, el('span', { class: 'lum-name', text: name }), b.summaryInfo]),
+    const details = el('details', { class: 'luminaire', open: !lum.added, dataset: { luminaire: name, index: String(i) } }, [
+      el('summary', { title: `Luminaire "${name}"${lum.added ? ', added to the layout' : ''}` }, [b.swatch, el('span', { class: 'lum-name', text: name }), b.summaryInfo]),
     ]);
     b.details = details;
 
     // On/off and reset.
     b.on = el('input', { type: 'checkbox', dataset: { testid: `on-${i}` }, title: 'Switch the luminaire on or off (off keeps its other settings)' });
     onValue(b.on, (v) => this._edit(name, (e) => (v ? delete e.on : (e.on = false))), (x) => x.checked);
-    const reset = el('button', { type: 'button', class: 'small', text: 'Reset', title: "Back to the scene's settings for this luminaire (remove it from the state)" });
-    reset.addEventListener('click', () => this.store.edit((doc) => delete doc.luminaires?.[name]));
+    const reset = lum.added
+      ? el('button', { type: 'button', class: 'small', text: 'Delete', title: 'Remove this luminaire from the layout' })
+      : el('button', { type: 'button', class: 'small', text: 'Reset', title: "Back to the scene's settings for this luminaire (remove it from the state)" });
+    reset.addEventListener('click', () => this.store.edit((doc) => delete doc.luminaires?.[name], null));
     details.append(el('div', { class: 'row' }, [el('label', { class: 'check' }, [b.on, ' on']), el('span', { class: 'spacer' }), reset]));
 
     // Dimmer.
@@ -157,7 +165,7 @@ export class LuminairePanel {
         this._pendingFileType = { name, type };
         return;
       }
-      if (JSON.stringify(e.distribution) === JSON.stringify(lum.distribution)) delete e.distribution;
+      if (!lum.added && JSON.stringify(e.distribution) === JSON.stringify(lum.distribution)) delete e.distribution;
     });
     this.refresh();
   }
@@ -213,6 +221,12 @@ export class LuminairePanel {
 
   refresh() {
     if (!this.hello) return;
+    const list = layoutLuminaires(this.hello, this.store.doc);
+    const names = list.map((l) => l.name).join('\n');
+    if (names !== this._names) {
+      this._names = names;
+      this._rebuild(list);
+    }
     for (const b of this.blocks) {
       const eff = effectiveLuminaire(b.lum, this.entry(b.lum.name));
       setIfIdle(b.on, eff.on, 'checked');

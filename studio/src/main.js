@@ -7,12 +7,15 @@
 // tests.
 import { AnnualPanel } from './annual.js';
 import { CameraRig } from './cameras.js';
+import { CataloguePanel } from './catalogue.js';
 import { Connection } from './connection.js';
 import { DistributionEditor } from './distribution_editor.js';
 import { EmitterMarkers, EmitterPanel } from './emitters.js';
 import { formatValue } from './false_color.js';
 import { LabelLayer } from './labels.js';
+import { LayoutTools } from './layout.js';
 import { Legend } from './legend.js';
+import { layoutLuminaires } from './luminaire_model.js';
 import { LuminairePanel } from './luminaires.js';
 import { Markers } from './markers.js';
 import { MaterialPanel } from './materials.js';
@@ -44,6 +47,9 @@ const api = {
   optimized: null, // the last `optimized` result of this client's optimise panel
   glossyViews: 0, // RLGV messages applied
   lastGlossyView: null, // {frame, count, eye, serverMs, vertices} of the last one
+  catalogue: null, // the last `catalogue` message
+  uploads: [], // entries of this client's accepted uploads
+  exports: 0, // `scene` replies (Export scene)
 };
 window.relightStudio = api;
 
@@ -73,13 +79,29 @@ const distributions = new Map();
 const labels = new LabelLayer($('labels'), viewer);
 const legend = new Legend($('legend'));
 const markers = new Markers(viewer, store);
+const sendMessage = (message) => {
+  const seq = connection.nextSeq();
+  return connection.send({ ...message, seq }) ? seq : null;
+};
+// The catalogue's armed card places a luminaire with the next click in the view.
+const catalogue = new CataloguePanel($('catalogue'), sendMessage, (entry) => layout.setMode(entry ? { kind: 'place', entry } : null));
+// Takes presses on luminaire markers on #stage in the capture phase, ahead of everything below.
+const layout = new LayoutTools($('layout'), $('stage'), {
+  viewer,
+  store,
+  markers,
+  catalogue,
+  pick: (ray) => sendPick(ray),
+  send: sendMessage,
+  sceneName: () => (session.hello?.scene_file || 'scene').replace(/\.rlt$/, ''),
+});
 // Takes presses on its markers on #stage in the capture phase, ahead of the camera controls
 // and the click handling below.
 const emitterMarkers = new EmitterMarkers(viewer, store, $('stage'));
 // Likewise for presses on movable objects (after the markers: a marker in front wins), except
 // while a luminaire is being aimed; a click on an object reads the point as any click does.
 const objectsView = new ObjectsView(viewer, store, $('stage'), {
-  busy: () => session.aimIndex !== null,
+  busy: () => session.aimIndex !== null || !!layout.mode,
   click: (x, y) => onViewportClick(x, y),
 });
 const sensors = new Sensors(viewer, $('sensors'));
@@ -141,8 +163,9 @@ function onText(msg) {
       return onHello(msg);
     case 'state': {
       api.lastState = { seq: msg.seq ?? null, frame: msg.frame ?? null, final: msg.final ?? true };
-      // A material edit's first frame is its light reflected once; the converged one follows.
-      $('frame-quality').textContent = msg.final === false ? 'approximate: material edit converging' : '';
+      // A material edit's first frame is its light reflected once, a moved or added luminaire's
+      // has a stored luminaire's interreflection; the converged frame follows.
+      $('frame-quality').textContent = msg.final === false ? 'approximate: converging' : '';
       const how = store.applyRemote(msg);
       if (how === 'mine') $('state-origin').textContent = `shown: this client's state (frame ${msg.frame ?? '?'})`;
       if (how === 'remote') {
@@ -164,6 +187,16 @@ function onText(msg) {
       editor.receive(msg);
       luminairePanel.distributionUpdated(msg.luminaire);
       return;
+    case 'catalogue':
+      api.catalogue = msg;
+      return catalogue.setCatalogue(msg);
+    case 'uploaded':
+      api.uploads.push(msg.entry);
+      notice(`Uploaded ${msg.entry.name}: in the catalogue as ${msg.entry.id}`);
+      return;
+    case 'scene':
+      api.exports++;
+      return layout.onExport(msg);
     case 'annual_progress':
       api.annualProgress++;
       return annualPanel.onProgress(msg);
@@ -214,6 +247,7 @@ function onHello(hello) {
   if (!session.hadView && !(hello.cameras || []).length && hello.bounds) rig.frameBounds(hello.bounds);
   session.hadView = true;
   markers.setScene(hello);
+  layout.setScene(hello);
   sensors.setScene(hello);
   luminairePanel.setScene(hello);
   windowsPanel.setScene(hello);
@@ -226,8 +260,9 @@ function onHello(hello) {
   optimizePanel.setScene(hello);
   editor.setScene(hello);
   store.reset(hello.state || {}, hello.client ?? null);
-  // Every luminaire's distribution: flux for the panels, exact C0 samples for the editor.
-  for (const l of hello.luminaires) requestDistribution(l.name);
+  // Every luminaire's distribution (the layout's added ones too): flux for the panels, exact C0
+  // samples for the editor.
+  for (const l of layoutLuminaires(hello, store.doc)) requestDistribution(l.name);
 }
 
 function onBinary(tag, buffer) {
@@ -392,8 +427,8 @@ function refreshProbe() {
 }
 
 function startAim(i) {
-  const lum = session.hello?.luminaires[i];
-  if (!lum) return;
+  const lum = luminairePanel.blocks[i]?.lum;
+  if (!session.hello || !lum) return;
   session.aimIndex = i;
   luminairePanel.setAiming(i);
   $('stage').classList.add('aiming');
@@ -411,10 +446,11 @@ function stopAim() {
 
 async function onViewportClick(x, y) {
   if (!session.geometry) return;
+  if (layout.click(x, y)) return;
   const ray = viewer.rayAt(x, y);
   if (session.aimIndex !== null) {
     const i = session.aimIndex;
-    const name = session.hello.luminaires[i].name;
+    const name = luminairePanel.blocks[i].lum.name;
     stopAim();
     try {
       const reply = await sendPick(ray);
@@ -566,6 +602,10 @@ Object.assign(api, {
   editor,
   rig,
   canonical,
+  layout,
+  catalogueView: catalogue,
+  // Luminaire `name`'s marker on the canvas (CSS px).
+  luminaireOnScreen: (name) => markers.screenPosition(name),
 });
 
 connection.connect();

@@ -13,7 +13,8 @@
 // hidden. Dragging an object with the left mouse button moves it in the horizontal plane at its
 // base: the pointer's ray meets the plane y = the object's current bottom and the state's
 // translate follows the pointer (sent at most once per animation frame; the server coalesces,
-// and its frames keep coming while the drag goes on). R turns the object under the pointer, or
+// and its frames keep coming while the drag goes on); it stops at the room's walls and other
+// objects. R turns the object under the pointer, or
 // else the selected one, by 15° counter-clockwise seen from above, Shift+R clockwise. A press
 // on an object is the object's, not the camera's; a click on it without moving selects it and
 // reads the point (the server's pick sees the objects as placed).
@@ -24,6 +25,8 @@ import { el, numberInput, onValue, row, setIfIdle, sliderNumber } from './ui.js'
 const round4 = (x) => Number(x.toFixed(4));
 export const TURN_STEP_DEG = 15;
 const CLICK_PX = 4; // a press that moves less than this is a click, not a drag
+const GAP = 0.001; // m: an object may touch a wall
+const LIFT = 0.02; // m: nor does the floor it stands on (or a rug on it) stop it
 
 // An angle in degrees brought to (−180, 180].
 export function wrapDegrees(d) {
@@ -462,8 +465,49 @@ export class ObjectsView {
     editPlacement(this.store, o.name, (e) => (e.rotate_deg = wrapDegrees(round4(eff.rotate + degrees))));
   }
 
+  // Object i's box at a placement as a world box, lifted LIFT off the floor it stands on and
+  // shrunk by GAP on every side, so that standing on the floor or touching a wall is no
+  // collision.
+  _placedBox(i, translate, rotate) {
+    const it = this.items[i];
+    const box = it.box.clone().applyMatrix4(placementMatrix(it.o.pivot, translate, rotate, this._m ??= new THREE.Matrix4()));
+    box.min.addScalar(GAP);
+    box.max.addScalar(-GAP);
+    box.min.y += LIFT - GAP;
+    return box;
+  }
+
+  // Whether object i placed so meets the room's surfaces (window glass included) or another
+  // visible object's box. The room's triangles' bounds are kept per geometry.
+  _collides(i, translate, rotate) {
+    const box = this._placedBox(i, translate, rotate);
+    if (box.isEmpty()) return false;
+    for (let j = 0; j < this.items.length; j++) {
+      if (j === i || !this.items[j].box) continue;
+      const e = this.effective(j);
+      if (e.visible && box.intersectsBox(this._placedBox(j, e.translate, e.rotate))) return true;
+    }
+    const g = this.viewer.geometry;
+    if (!g) return false;
+    if (this._bounds?.geometry !== g) this._bounds = { geometry: g, boxes: triangleBounds(g) };
+    const b = this._bounds.boxes, P = g.positions, I = g.indices;
+    const tri = (this._tri ??= new THREE.Triangle());
+    for (let t = 0; t < g.triangleCount; t++) {
+      const k = 6 * t;
+      if (b[k] > box.max.x || b[k + 3] < box.min.x || b[k + 1] > box.max.y || b[k + 4] < box.min.y || b[k + 2] > box.max.z || b[k + 5] < box.min.z) continue;
+      tri.a.fromArray(P, 3 * I[3 * t]);
+      tri.b.fromArray(P, 3 * I[3 * t + 1]);
+      tri.c.fromArray(P, 3 * I[3 * t + 2]);
+      if (box.intersectsTriangle(tri)) return true;
+    }
+    return false;
+  }
+
   // Moves the dragged object so that its grabbed point follows canvas point (x, y) in the
-  // plane of its base, its centre kept within the scene's bounds.
+  // plane of its base, its centre kept within the scene's bounds. It stops at walls and other
+  // objects: when the whole move would collide it goes as far as it can along x, then along z
+  // (bisection), so that it slides along a wall; an object already overlapping something moves
+  // freely.
   _moveTo(x, y) {
     const d = this.drag;
     if (!d.offset) return;
@@ -473,9 +517,45 @@ export class ObjectsView {
     const b = this.hello.bounds;
     const clamp = (v, k) => (b ? Math.min(Math.max(v, b.min[k]), b.max[k]) : v);
     const px = clamp(at[0] - d.offset[0], 0), pz = clamp(at[1] - d.offset[1], 2);
-    const ty = this.effective(d.i).translate[1];
+    const eff = this.effective(d.i);
+    const from = eff.translate;
+    const to = [px - it.o.pivot[0], from[1], pz - it.o.pivot[2]];
+    const free = (t) => !this._collides(d.i, t, eff.rotate);
+    let t = to;
+    if (it.box && free(from) && !free(to)) {
+      // Along x, then along z, each as far as it is free: a drag into a wall slides along it.
+      t = [...from];
+      for (const c of [0, 2]) {
+        const along = (f) => t.map((v, k) => (k === c ? v + f * (to[c] - v) : v));
+        if (free(along(1))) {
+          t = along(1);
+          continue;
+        }
+        let lo = 0, hi = 1;
+        for (let k = 0; k < 12; k++) {
+          const mid = (lo + hi) / 2;
+          if (free(along(mid))) lo = mid;
+          else hi = mid;
+        }
+        t = along(lo);
+      }
+    }
     editPlacement(this.store, it.o.name, (e) => {
-      e.translate = [round4(px - it.o.pivot[0]), round4(ty), round4(pz - it.o.pivot[2])];
+      e.translate = t.map(round4);
     });
   }
+}
+
+// Per triangle of a decoded RLGE its bounding box (min xyz, max xyz).
+function triangleBounds(g) {
+  const out = new Float32Array(6 * g.triangleCount);
+  const P = g.positions, I = g.indices;
+  for (let t = 0; t < g.triangleCount; t++) {
+    for (let c = 0; c < 3; c++) {
+      const a = P[3 * I[3 * t] + c], b = P[3 * I[3 * t + 1] + c], d = P[3 * I[3 * t + 2] + c];
+      out[6 * t + c] = Math.min(a, b, d);
+      out[6 * t + 3 + c] = Math.max(a, b, d);
+    }
+  }
+  return out;
 }

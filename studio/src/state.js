@@ -7,7 +7,9 @@
 // echo of an older one of ours is stale and ignored, any other state (another client, or a
 // message sent around this store) replaces the document and refreshes the panels. A state
 // the server refuses (an error reply to it) is undone: the document returns to the one shown.
-// Also: save the document as a JSON download and load one from a file.
+// Also: save the document as a JSON download and load one from a file, and undo / redo: every
+// local edit is a step (kMaxUndo kept), except that edits under the same gesture key within
+// GESTURE_MS of each other (a slider or a drag) make one step.
 
 import { downloadBlob } from './ui.js';
 
@@ -41,6 +43,9 @@ function prune(doc) {
   return doc;
 }
 
+export const MAX_UNDO = 100;
+const GESTURE_MS = 600;
+
 export class StateStore {
   constructor(connection) {
     this.connection = connection;
@@ -53,6 +58,9 @@ export class StateStore {
     this.foreignSeqs = new Set();
     this.lastRemote = null; // {client, frame, seq}
     this._scheduled = false;
+    this.undoStack = [];
+    this.redoStack = [];
+    this._gesture = null; // {key, time} of the last recorded edit
   }
 
   // listener(source): source is 'local' (an edit here) or 'remote' (a replaced document).
@@ -75,7 +83,50 @@ export class StateStore {
     this.myClient = client;
     this.refusedSeq = null;
     this._scheduled = false;
+    this.undoStack = [];
+    this.redoStack = [];
+    this._gesture = null;
     this._notify('remote');
+  }
+
+  // Keeps the document before an edit as an undo step, unless the edit continues the gesture
+  // (same key, soon after) whose step is already kept. A key of null is always a new step.
+  _record(key) {
+    const now = performance.now();
+    const same = key !== null && this._gesture?.key === key && now - this._gesture.time < GESTURE_MS;
+    this._gesture = { key, time: now };
+    if (same) return;
+    this.undoStack.push(clone(this.doc));
+    if (this.undoStack.length > MAX_UNDO) this.undoStack.shift();
+    this.redoStack = [];
+  }
+
+  canUndo() {
+    return this.undoStack.length > 0;
+  }
+  canRedo() {
+    return this.redoStack.length > 0;
+  }
+
+  // Back to the document before the last step (sent at once); false when there is none.
+  undo() {
+    if (!this.undoStack.length) return false;
+    this.redoStack.push(clone(this.doc));
+    this.doc = this.undoStack.pop();
+    this._gesture = null;
+    this._notify('local');
+    this.sendNow(true);
+    return true;
+  }
+
+  redo() {
+    if (!this.redoStack.length) return false;
+    this.undoStack.push(clone(this.doc));
+    this.doc = this.redoStack.pop();
+    this._gesture = null;
+    this._notify('local');
+    this.sendNow(true);
+    return true;
   }
 
   // Luminaire / portal / emitter / movable object entry of the document, created on demand.
@@ -96,16 +147,20 @@ export class StateStore {
     return (this.doc.objects[name] ??= {});
   }
 
-  // fn(doc) edits the document; it is then sent (throttled).
-  edit(fn) {
+  // fn(doc) edits the document; it is then sent (throttled). `gesture`: edits with the same
+  // key in quick succession are one undo step (default: one key for all continuous edits);
+  // null makes this edit a step of its own (placing, deleting, an array).
+  edit(fn, gesture = 'edit') {
+    this._record(gesture);
     fn(this.doc);
     prune(this.doc);
     this._notify('local');
     this.scheduleSend();
   }
 
-  // Replaces the whole document and sends it at once (load, reset, test hook).
+  // Replaces the whole document and sends it at once (load, reset, test hook): an undo step.
   replace(doc) {
+    this._record(null);
     this.doc = prune(clone(doc || {}));
     this._notify('local');
     this.sendNow(true);
