@@ -171,9 +171,12 @@ test('the saved layout, probed by the CLI, reads as the studio\'s sensors', asyn
   const cli = fs.readFileSync(csv, 'utf8').trim().split('\n').slice(1).map((l) => Number(l.split(',')[8]));
   const shown = await page.evaluate(() => window.relightStudio.sensorReadings());
   assert.equal(cli.length, shown.length);
+  let worst = 0;
   for (let k = 0; k < cli.length; ++k) {
     assert.ok(Math.abs(shown[k] - cli[k]) <= 1e-3 * cli[k] + 1e-3, `sensor ${k}: studio ${shown[k]} lx, probe ${cli[k]} lx`);
+    worst = Math.max(worst, Math.abs(shown[k] - cli[k]) / cli[k]);
   }
+  console.log(`studio sensors vs relight probe --state: worst ${(100 * worst).toFixed(4)} % over ${cli.length} sensors`);
   // The layout lights the room: far above the scene's one downlight alone.
   const alone = execFileSync(relightBinary, ['probe', path.join(dir, 'layout-room.rlt')], { encoding: 'utf8' });
   const eavg = (text) => Number(/Eavg ([\d.]+)/.exec(text)[1]);
