@@ -82,21 +82,6 @@ nlohmann::json named_distribution(const nlohmann::json& document, const std::str
   return d == l->end() ? nlohmann::json(nullptr) : *d;
 }
 
-// Whether `next` hangs a luminaire of the layout elsewhere than `now`, or adds or drops one:
-// its interreflection is then solved anew, and a first frame shows it approximately
-// (runtime/relighter.h set_layout_bounce).
-bool layout_moves(const LightingState& now, const LightingState& next) {
-  if (now.luminaires.size() != next.luminaires.size()) return true;
-  for (std::size_t j = 0; j < now.luminaires.size(); ++j) {
-    const Vec3 a = now.luminaires[j].position, b = next.luminaires[j].position;
-    if (now.luminaires[j].name != next.luminaires[j].name || a.x != b.x || a.y != b.y ||
-        a.z != b.z) {
-      return true;
-    }
-  }
-  return false;
-}
-
 }  // namespace
 
 struct StudioServer::Impl {
@@ -198,20 +183,22 @@ struct StudioServer::Impl {
         continue;
       }
       try {
-        // A material edit shows its first bounce at once, then the converged light
-        // (runtime/relighter.h set_material_bounces); a luminaire moved or added its exact
-        // direct light with the nearest stored luminaire's interreflection, then its own
-        // (set_layout_bounce). The state messages say which.
+        // A first frame never waits for a bounce: a material edit shows its light reflected
+        // once (runtime/relighter.h set_material_bounces), a luminaire moved or added its exact
+        // direct light with the nearest stored luminaire's interreflection (set_layout_bounce).
+        // When that frame is not the converged light, the converged frame follows; the state
+        // messages say which is which.
+        relit->relighter().set_layout_bounce(false);
+        bool converged = false;
         if (relit->state().materials != p.state.materials) {
           relit->set_material_bounces(0);
           show(p, shown_document, frame_number, false);
           relit->set_material_bounces(-1);
-        } else if (layout_moves(relit->state(), p.state)) {
-          relit->relighter().set_layout_bounce(false);
-          show(p, shown_document, frame_number, false);
-          relit->relighter().set_layout_bounce(true);
+        } else {
+          converged = show(p, shown_document, frame_number, true);
         }
-        show(p, shown_document, frame_number, true);
+        relit->relighter().set_layout_bounce(true);
+        if (!converged) show(p, shown_document, frame_number, true);
         last_good = std::move(p.state);
         std::lock_guard lock(mutex);
         for (const auto& [id, eye] : eyes) views_due.insert(id);
@@ -228,12 +215,14 @@ struct StudioServer::Impl {
   }
 
   // Relights with a pending state and sends every client the state (with "final": false for
-  // a material edit's first, approximate frame), the frame and the profiles of distributions
-  // that changed. Everything slow happens outside the mutex.
-  void show(const PendingState& p, nlohmann::json& shown_document, std::uint32_t& frame_number,
+  // a first, approximate frame: `final` false, or a moved or added luminaire's bounce left
+  // out), the frame and the profiles of distributions that changed. Returns whether the
+  // frame was final. Everything slow happens outside the mutex.
+  bool show(const PendingState& p, nlohmann::json& shown_document, std::uint32_t& frame_number,
             bool final) {
     const auto start = std::chrono::steady_clock::now();
     const std::shared_ptr<const FrameValues> values = relight_values(p.state);
+    final = final && relit->relighter().layout_converged();
     const std::chrono::duration<float, std::milli> ms = std::chrono::steady_clock::now() - start;
     const std::uint32_t number = frame_number + 1;
     const auto frame =
@@ -274,6 +263,7 @@ struct StudioServer::Impl {
       transport->send(c, *frame, true, true);
       for (const std::string& m : profiles) transport->send(c, m, false, true);
     }
+    return final;
   }
 
   // Sends client `id` its glossy vertices' luminance toward `eye` under the state shown

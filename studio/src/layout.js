@@ -262,7 +262,7 @@ export class LayoutTools {
         if (!eff.on) entry.on = false;
         const src = doc.luminaires?.[name] ?? {};
         if (src.cct_kelvin !== undefined) entry.cct_kelvin = src.cct_kelvin;
-        else if (eff.colorMode !== 'scene' || this.lum(name).color) entry.color = eff.color.map(r4);
+        else entry.color = eff.color.map(r4);
         doc.luminaires ??= {};
         doc.luminaires[copy] = entry;
         copies.push(copy);
