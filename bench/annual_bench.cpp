@@ -23,8 +23,8 @@ struct DemoYear {
   testing::TempDir dir;
   std::filesystem::path rlt = testing::write_precomputed(dir, "demo-room", demo_room_scene());
   WeatherFile weather = parse_epw(testing::synthetic_epw(), "year.epw");
-  AnnualHours hours = annual_hours(weather, {});                 // 08:00–18:00
-  AnnualHours every_hour = annual_hours(weather, {0, 24 * 60});  // the 8,760 hours
+  AnnualHours hours = annual_hours(weather, {}, 0);                 // 08:00–18:00
+  AnnualHours every_hour = annual_hours(weather, {0, 24 * 60}, 0);  // the 8,760 hours
 };
 
 // Precomputed once (a minute), kept for both benchmarks.

@@ -118,7 +118,7 @@ int run_annual(const AnnualArgs& args) {
   for (const ChosenSet& c : sets) set_indices.push_back(c.index);
   const LightingState base = annual_base_state(
       scene, args.state.empty() ? std::nullopt : std::optional<std::filesystem::path>(args.state));
-  const AnnualHours hours = annual_hours(weather, *period);
+  const AnnualHours hours = annual_hours(weather, *period, north_deg(base));
   const WeatherLocation& at = weather.location;
   std::printf(
       "weather: %s (%.2f°, %.2f°, UTC%+g h): %zu records, %zu occupied (%s), %zu with the "

@@ -62,17 +62,16 @@ const char* kWork = R"({
   }
 })";
 
-// A clear equinox day in Munich (48.14° N, 11.58° E, CET) through the south window, the
-// luminaires as the scene sets them: the sun moves from the south-east to the south-west.
+// A clear equinox day at the scene's site (Munich) through the south window, the luminaires as
+// the scene sets them: the sun moves from the south-east to the south-west, and the sky and sun
+// are as bright as its altitude makes them (light/daylight_availability.h).
 std::string clear_day_state(const char* local_time) {
   return std::string(R"({
   "portals": {
     "south window": { "environment": {
-      "type": "cie_sky", "sky_type": 12, "horizontal_illuminance": 12000, "ground_albedo": 0.2,
-      "sun": { "latitude": 48.14, "longitude": 11.58, "utc_offset": 1,
-               "datetime": "2026-03-21T)") +
-         local_time + R"(" },
-      "sun_illuminance": 70000 } }
+      "type": "cie_sky", "sky_type": 12, "ground_albedo": 0.2,
+      "sun": { "datetime": "2026-03-21T)") +
+         local_time + R"(" } } }
   }
 })";
 }

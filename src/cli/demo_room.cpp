@@ -119,7 +119,14 @@ json demo_room_scene() {
       {{"name", "sofa"}, {"eye", {5.6, 1.5, 3.9}}, {"target", {0.5, 0.7, 2.0}}, {"fov_deg", 60}},
       {{"name", "window"}, {"eye", {3.0, 1.5, 0.6}}, {"target", {3.0, 1.1, 4.5}}, {"fov_deg", 70}},
   });
+  // Munich: the site of every sun given by date and time alone.
+  json site = {{"latitude", 48.14},
+               {"longitude", 11.58},
+               {"utc_offset", 1},
+               {"elevation_m", 520},
+               {"north_deg", 0}};
   return {{"description", "relight demo: a furnished living room with a south window"},
+          {"site", site},
           {"materials", materials},
           {"geometry", geometry},
           {"luminaires", luminaires},

@@ -29,12 +29,12 @@ AnnualReport year_of_daylight(const ReportArgs& args) {
   const WeatherFile weather = read_epw(args.weather);
   const std::unique_ptr<RelitScene> relit = open_for_annual(args.rlt);
   const Scene& scene = relit->scene();
-  const AnnualHours hours = annual_hours(weather, OccupiedPeriod{});
+  const LightingState base = annual_base_state(scene, state_path(args.state));
+  const AnnualHours hours = annual_hours(weather, OccupiedPeriod{}, north_deg(base));
   if (hours.hours.empty()) fail_input(args.weather, "no occupied hour has the sun up");
   Progress progress("annual", hours.hours.size());
-  AnnualDaylight year =
-      annual_daylight(*relit, annual_base_state(scene, state_path(args.state)), hours.hours,
-                      every_sensor_set(scene), [&] { progress.advance(); });
+  AnnualDaylight year = annual_daylight(*relit, base, hours.hours, every_sensor_set(scene),
+                                        [&] { progress.advance(); });
   progress.finish();
   AnnualReport out;
   char heading[256];

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <stdexcept>
 
+#include "light/daylight_availability.h"
 #include "light/environment_map_cubemap.h"
 #include "light/perez_sky.h"
 #include "light/sun_position.h"
@@ -235,21 +236,25 @@ Environment make_sky_environment(SkyModel sky) {
   return env;
 }
 
-Vec3 sun_direction(const SunSpec& sun) {
+Vec3 sun_direction(const SunSpec& sun, double north_deg) {
   switch (sun.placement) {
     case SunPlacement::kPlaceAndTime: {
       const CivilDateTime& t = sun.local_time;
       const UtcTime utc =
           utc_from_local(t.year, t.month, t.day, t.hour, t.minute, t.second, sun.utc_offset_hours);
       const SunPosition p = psa_sun_position(utc, sun.latitude_deg, sun.longitude_deg);
-      return horizontal_to_world(p.azimuth_deg, p.altitude_deg());
+      return horizontal_to_world(p.azimuth_deg + north_deg, p.altitude_deg());
     }
     case SunPlacement::kAngles:
-      return horizontal_to_world(sun.azimuth_deg, sun.altitude_deg);
+      return horizontal_to_world(sun.azimuth_deg + north_deg, sun.altitude_deg);
     case SunPlacement::kNone:
       break;
   }
   throw std::invalid_argument("the sun has no position");
+}
+
+int sun_day_of_year(const SunSpec& sun) {
+  return sun.placement == SunPlacement::kPlaceAndTime ? day_of_year(sun.local_time) : 0;
 }
 
 Environment make_environment(const EnvironmentSpec& spec, std::shared_ptr<const EquirectMap> map) {
@@ -260,23 +265,34 @@ Environment make_environment(const EnvironmentSpec& spec, std::shared_ptr<const 
     }
     case EnvironmentType::kMap:
       if (!map) throw std::invalid_argument(spec.where + ": the map image was not loaded");
-      return make_map_environment(std::move(map), spec.rotate_deg, spec.scale);
+      return make_map_environment(std::move(map), spec.rotate_deg + spec.north_deg, spec.scale);
     case EnvironmentType::kCieSky: {
-      const Vec3 sun =
-          spec.sun.placement == SunPlacement::kNone ? Vec3{0, 1, 0} : sun_direction(spec.sun);
-      return make_sky_environment(
-          spec.scaling == SkyScaling::kZenithLuminance
-              ? make_sky_from_zenith_luminance(spec.sky_type, sun, spec.scaling_value,
-                                               spec.ground_albedo, spec.sun_illuminance)
-              : make_sky_from_horizontal_illuminance(spec.sky_type, sun, spec.scaling_value,
-                                                     spec.ground_albedo, spec.sun_illuminance));
+      const Vec3 sun = spec.sun.placement == SunPlacement::kNone
+                           ? Vec3{0, 1, 0}
+                           : sun_direction(spec.sun, spec.north_deg);
+      switch (spec.scaling) {
+        case SkyScaling::kZenithLuminance:
+          return make_sky_environment(make_sky_from_zenith_luminance(
+              spec.sky_type, sun, spec.scaling_value, spec.ground_albedo, spec.sun_illuminance));
+        case SkyScaling::kHorizontalIlluminance:
+          return make_sky_environment(make_sky_from_horizontal_illuminance(
+              spec.sky_type, sun, spec.scaling_value, spec.ground_albedo, spec.sun_illuminance));
+        case SkyScaling::kSunAltitude: {
+          const DaylightAvailability day =
+              cie_sky_daylight(spec.sky_type, sun, sun_day_of_year(spec.sun), spec.elevation_m,
+                               spec.linke_turbidity);
+          return make_sky_environment(make_sky_from_horizontal_illuminance(
+              spec.sky_type, sun, day.sky_horizontal_illuminance, spec.ground_albedo,
+              spec.sun_illuminance_from_model ? day.sun_normal_illuminance : spec.sun_illuminance));
+        }
+      }
+      break;
     }
     case EnvironmentType::kPerezSky: {
-      const PerezWeather weather{
-          spec.direct_normal_irradiance, spec.diffuse_horizontal_irradiance, spec.dew_point_c,
-          spec.sun.placement == SunPlacement::kPlaceAndTime ? day_of_year(spec.sun.local_time) : 0};
+      const PerezWeather weather{spec.direct_normal_irradiance, spec.diffuse_horizontal_irradiance,
+                                 spec.dew_point_c, sun_day_of_year(spec.sun)};
       return make_sky_environment(
-          make_perez_sky(weather, sun_direction(spec.sun), spec.ground_albedo));
+          make_perez_sky(weather, sun_direction(spec.sun, spec.north_deg), spec.ground_albedo));
     }
   }
   throw std::invalid_argument("unknown environment type");

@@ -101,12 +101,16 @@ Environment make_map_environment(std::shared_ptr<const EquirectMap> map, double 
 Environment make_sky_environment(SkyModel sky);
 
 // Unit world direction toward the sun of a spec: PSA (light/sun_position.h) from place and
-// local time, or the given angles. Throws std::invalid_argument for SunPlacement::kNone.
-Vec3 sun_direction(const SunSpec& sun);
+// local time, or the given angles; its compass azimuth turned by the site's north_deg
+// (clockwise seen from above). Throws std::invalid_argument for SunPlacement::kNone.
+Vec3 sun_direction(const SunSpec& sun, double north_deg = 0);
+// The day of the year of a sun by place and time, 0 (no date) otherwise.
+int sun_day_of_year(const SunSpec& sun);
 
 // The environment of a spec. A map spec needs the loaded image (light/environment_map_io.h
 // reads spec.file); other kinds ignore `map`. A sky without a "sun" puts the (irrelevant) sun
-// at the zenith.
+// at the zenith; a cie_sky without a brightness takes it from light/daylight_availability.h.
+// Maps and suns are turned by the spec's north_deg.
 Environment make_environment(const EnvironmentSpec& spec,
                              std::shared_ptr<const EquirectMap> map = nullptr);
 

@@ -14,6 +14,7 @@ LightingState default_lighting_state(const Scene& scene) {
   s.objects.resize(scene.objects.size());
   s.materials = scene.materials;
   s.environment = scene.environment;
+  s.site = scene.site;
   return s;
 }
 

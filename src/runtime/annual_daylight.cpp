@@ -9,15 +9,15 @@
 
 #include <algorithm>
 #include <chrono>
-#include <mutex>
 #include <memory>
+#include <mutex>
 #include <numeric>
 #include <optional>
 
+#include "engine/light_term.h"
 #include "light/environment.h"
 #include "math/rgb.h"
 #include "scene/json_node.h"
-#include "engine/light_term.h"
 
 namespace relight {
 
@@ -55,7 +55,8 @@ std::optional<OccupiedPeriod> parse_occupied_period(std::string_view text) {
   return OccupiedPeriod{*start, *end};
 }
 
-EnvironmentSpec record_sky(const WeatherLocation& location, const WeatherRecord& record) {
+EnvironmentSpec record_sky(const WeatherLocation& location, const WeatherRecord& record,
+                           double north_deg) {
   EnvironmentSpec sky;
   sky.type = EnvironmentType::kPerezSky;
   sky.direct_normal_irradiance = record.direct_normal_irradiance;
@@ -67,16 +68,18 @@ EnvironmentSpec record_sky(const WeatherLocation& location, const WeatherRecord&
   sky.sun.longitude_deg = location.longitude_deg;
   sky.sun.utc_offset_hours = location.time_zone_hours;
   sky.sun.local_time = evaluation_time(record);
+  sky.north_deg = north_deg;
   sky.where = "weather record at line " + std::to_string(record.line);
   return sky;
 }
 
-AnnualHours annual_hours(const WeatherFile& weather, const OccupiedPeriod& period) {
+AnnualHours annual_hours(const WeatherFile& weather, const OccupiedPeriod& period,
+                         double north_deg) {
   AnnualHours out;
   for (const WeatherRecord& r : weather.records) {
     if (!occupied(period, r)) continue;
     ++out.occupied;
-    EnvironmentSpec sky = record_sky(weather.location, r);
+    EnvironmentSpec sky = record_sky(weather.location, r, north_deg);
     if (sun_direction(sky.sun).y <= 0) continue;
     out.hours.push_back({r, std::move(sky)});
   }

@@ -38,10 +38,11 @@ struct OccupiedPeriod {
 // "HH:MM-HH:MM" (end up to 24:00, after start); nullopt otherwise.
 std::optional<OccupiedPeriod> parse_occupied_period(std::string_view text);
 
-// The Perez sky of a record at its evaluation time (h − 30 min), the ground reflecting the
-// record's albedo (0.2 when it gives none); messages
-// name the record's line.
-EnvironmentSpec record_sky(const WeatherLocation& location, const WeatherRecord& record);
+// The Perez sky of a record at its evaluation time (h − 30 min) at the weather file's place,
+// the ground reflecting the record's albedo (0.2 when it gives none), its sun turned by the
+// scene's true north (`north_deg`, the site's); messages name the record's line.
+EnvironmentSpec record_sky(const WeatherLocation& location, const WeatherRecord& record,
+                           double north_deg);
 
 struct AnnualHour {
   WeatherRecord record;
@@ -53,7 +54,8 @@ struct AnnualHours {
   std::vector<AnnualHour> hours;
   std::size_t occupied = 0;
 };
-AnnualHours annual_hours(const WeatherFile& weather, const OccupiedPeriod& period);
+AnnualHours annual_hours(const WeatherFile& weather, const OccupiedPeriod& period,
+                         double north_deg);
 
 // `rlt` opened for a year of hours: every sun's bounce solved from nothing
 // (RelighterSettings::warm_sun_bounce), so that each hour equals `relight probe` with its sky.

@@ -148,9 +148,11 @@ void apply_emitter(EmitterState& e, const JsonNode& node) {
 }
 
 void apply_portal(PortalState& s, const Scene& scene, const JsonNode& node,
-                  const std::filesystem::path& base_dir) {
+                  const std::filesystem::path& base_dir, const Site* site) {
   node.expect_keys({"environment", "tint", "frost_deg", "exterior"});
-  if (const auto e = node.find("environment")) s.environment = parse_environment(*e, base_dir);
+  if (const auto e = node.find("environment")) {
+    s.environment = parse_environment(*e, base_dir, true, site);
+  }
   if (const auto t = node.find("tint")) s.tint = parse_tint(*t);
   if (const auto f = node.find("frost_deg")) s.frost_deg = parse_frost_deg(*f);
   if (const auto x = node.find("exterior")) apply_exterior({&s}, scene, *x);
@@ -161,15 +163,22 @@ void apply_portal(PortalState& s, const Scene& scene, const JsonNode& node,
 void apply_lighting_state(LightingState& state, const Scene& scene, const nlohmann::json& document,
                           const std::string& where, const std::filesystem::path& base_dir) {
   const JsonNode root(document, where, "/");
-  root.expect_keys(
-      {"luminaires", "portals", "exterior", "emitters", "objects", "materials", "environment"});
+  root.expect_keys({"luminaires", "portals", "exterior", "emitters", "objects", "materials",
+                    "environment", "site"});
+  // The site first: every environment, the state's so far and those it sets, stands there.
+  if (const auto n = root.find("site")) {
+    state.site = parse_site(*n);
+    for (PortalState& p : state.portals) apply_site(p.environment, *state.site);
+    if (state.environment) apply_site(*state.environment, *state.site);
+  }
+  const Site* site = state.site ? &*state.site : nullptr;
   if (const auto e = root.find("environment")) {
     if (!scene.environment) {
       e->fail(
           "the scene has no top-level environment: its transfer has no visibility cuts to "
           "light one (add \"environment\" to the scene and run relight precompute)");
     }
-    state.environment = parse_environment(*e, base_dir);
+    state.environment = parse_environment(*e, base_dir, true, site);
   }
   if (state.materials.size() != scene.materials.size()) state.materials = scene.materials;
   if (const auto materials = root.find("materials")) {
@@ -231,7 +240,7 @@ void apply_lighting_state(LightingState& state, const Scene& scene, const nlohma
     for (const auto& [name, unused] : portals->value().items()) {
       const JsonNode node = portals->at(name);
       const std::size_t i = portal_index(scene, node, name);
-      apply_portal(state.portals[i], scene, node, base_dir);
+      apply_portal(state.portals[i], scene, node, base_dir, site);
     }
   }
 }

@@ -89,7 +89,7 @@ void parse_map(const JsonNode& node, const fs::path& base_dir, bool require_file
   if (const auto s = node.find("scale")) spec.scale = s->number_at_least(0);
 }
 
-SunSpec parse_sun(const JsonNode& node) {
+SunSpec parse_sun(const JsonNode& node, const Site* site) {
   if (!node.is_object()) node.fail("expected an object");
   node.expect_keys(
       {"latitude", "longitude", "utc_offset", "datetime", "azimuth_deg", "altitude_deg"});
@@ -98,15 +98,25 @@ SunSpec parse_sun(const JsonNode& node) {
   const bool angles = node.has("azimuth_deg") || node.has("altitude_deg");
   if (place == angles) {
     node.fail(
-        "give either \"latitude\", \"longitude\", \"datetime\" (and \"utc_offset\") or "
-        "\"azimuth_deg\" and \"altitude_deg\"");
+        "give either \"latitude\", \"longitude\", \"datetime\" (and \"utc_offset\"), "
+        "\"datetime\" alone (at the site) or \"azimuth_deg\" and \"altitude_deg\"");
   }
   SunSpec sun;
   if (place) {
     sun.placement = SunPlacement::kPlaceAndTime;
-    sun.latitude_deg = number_in(node.at("latitude"), -90, 90);
-    sun.longitude_deg = number_in(node.at("longitude"), -180, 180);
-    if (const auto o = node.find("utc_offset")) sun.utc_offset_hours = number_in(*o, -14, 14);
+    sun.place_from_site =
+        !node.has("latitude") && !node.has("longitude") && !node.has("utc_offset");
+    if (sun.place_from_site && site == nullptr) {
+      node.fail(
+          "a sun given by \"datetime\" alone stands at the project's site: give the scene a "
+          "\"site\" (latitude, longitude, utc_offset) or the sun its \"latitude\" and "
+          "\"longitude\"");
+    }
+    if (!sun.place_from_site) {
+      sun.latitude_deg = number_in(node.at("latitude"), -90, 90);
+      sun.longitude_deg = number_in(node.at("longitude"), -180, 180);
+      if (const auto o = node.find("utc_offset")) sun.utc_offset_hours = number_in(*o, -14, 14);
+    }
     const JsonNode d = node.at("datetime");
     const auto t = parse_civil_datetime(d.string());
     if (!t) {
@@ -124,9 +134,9 @@ SunSpec parse_sun(const JsonNode& node) {
   return sun;
 }
 
-void parse_cie_sky(const JsonNode& node, EnvironmentSpec& spec) {
+void parse_cie_sky(const JsonNode& node, const Site* site, EnvironmentSpec& spec) {
   node.expect_keys({"type", "sky_type", "horizontal_illuminance", "zenith_luminance",
-                    "ground_albedo", "sun", "sun_illuminance"});
+                    "linke_turbidity", "ground_albedo", "sun", "sun_illuminance"});
   spec.type = EnvironmentType::kCieSky;
   const JsonNode t = node.at("sky_type");
   if (t.value().is_string()) {
@@ -142,20 +152,36 @@ void parse_cie_sky(const JsonNode& node, EnvironmentSpec& spec) {
 
   const bool horizontal = node.has("horizontal_illuminance");
   const bool zenith = node.has("zenith_luminance");
-  if (horizontal == zenith) {
+  if (horizontal && zenith) {
     node.fail(
-        "give exactly one of \"horizontal_illuminance\" (lx) or \"zenith_luminance\" "
-        "(cd/m²)");
+        "give at most one of \"horizontal_illuminance\" (lx) or \"zenith_luminance\" "
+        "(cd/m²); with neither the sky's brightness follows the sun's altitude");
   }
   if (horizontal) {
     spec.scaling = SkyScaling::kHorizontalIlluminance;
     spec.scaling_value = node.at("horizontal_illuminance").number_at_least(0);
-  } else {
+  } else if (zenith) {
     spec.scaling = SkyScaling::kZenithLuminance;
     spec.scaling_value = node.at("zenith_luminance").number_at_least(0);
+  } else {
+    spec.scaling = SkyScaling::kSunAltitude;
+    spec.sun_illuminance_from_model = !node.has("sun_illuminance");
+    if (!node.has("sun")) {
+      node.fail(
+          "a sky without \"horizontal_illuminance\" or \"zenith_luminance\" takes its "
+          "brightness from the sun's altitude: give \"sun\"");
+    }
+  }
+  if (const auto l = node.find("linke_turbidity")) {
+    if (spec.scaling != SkyScaling::kSunAltitude) {
+      l->fail(
+          "the Linke turbidity sets the brightness of a sky by the sun's altitude: leave out "
+          "\"horizontal_illuminance\" and \"zenith_luminance\"");
+    }
+    spec.linke_turbidity = number_in(*l, 1, 10);
   }
   if (const auto g = node.find("ground_albedo")) spec.ground_albedo = number_in(*g, 0, 1);
-  if (const auto s = node.find("sun")) spec.sun = parse_sun(*s);
+  if (const auto s = node.find("sun")) spec.sun = parse_sun(*s, site);
   if (const auto e = node.find("sun_illuminance")) {
     spec.sun_illuminance = number_in(*e, 0, kMaxSunIlluminance);
     if (spec.sun_illuminance > 0 && spec.sun.placement == SunPlacement::kNone) {
@@ -168,7 +194,7 @@ void parse_cie_sky(const JsonNode& node, EnvironmentSpec& spec) {
   }
 }
 
-void parse_perez(const JsonNode& node, EnvironmentSpec& spec) {
+void parse_perez(const JsonNode& node, const Site* site, EnvironmentSpec& spec) {
   node.expect_keys({"type", "direct_normal_irradiance", "diffuse_horizontal_irradiance",
                     "dew_point_c", "ground_albedo", "sun"});
   spec.type = EnvironmentType::kPerezSky;
@@ -177,7 +203,7 @@ void parse_perez(const JsonNode& node, EnvironmentSpec& spec) {
       number_in(node.at("diffuse_horizontal_irradiance"), 0, kMaxIrradiance);
   if (const auto d = node.find("dew_point_c")) spec.dew_point_c = number_in(*d, -90, 60);
   if (const auto g = node.find("ground_albedo")) spec.ground_albedo = number_in(*g, 0, 1);
-  spec.sun = parse_sun(node.at("sun"));
+  spec.sun = parse_sun(node.at("sun"), site);
 }
 
 }  // namespace
@@ -241,7 +267,7 @@ std::optional<CivilDateTime> parse_civil_datetime(std::string_view text) {
 }
 
 EnvironmentSpec parse_environment(const JsonNode& node, const fs::path& base_dir,
-                                  bool require_files) {
+                                  bool require_files, const Site* site) {
   if (!node.is_object()) node.fail("expected an environment object");
   EnvironmentSpec spec;
   spec.where = node.where();
@@ -251,14 +277,37 @@ EnvironmentSpec parse_environment(const JsonNode& node, const fs::path& base_dir
   } else if (type == "map") {
     parse_map(node, base_dir, require_files, spec);
   } else if (type == "cie_sky") {
-    parse_cie_sky(node, spec);
+    parse_cie_sky(node, site, spec);
   } else if (type == "perez") {
-    parse_perez(node, spec);
+    parse_perez(node, site, spec);
   } else {
     node.at("type").fail("unknown environment type \"" + type +
                          "\" (expected uniform, map, cie_sky or perez)");
   }
+  if (site != nullptr) apply_site(spec, *site);
   return spec;
+}
+
+Site parse_site(const JsonNode& node) {
+  if (!node.is_object()) node.fail("expected an object");
+  node.expect_keys({"latitude", "longitude", "utc_offset", "elevation_m", "north_deg"});
+  Site site;
+  site.latitude_deg = number_in(node.at("latitude"), -90, 90);
+  site.longitude_deg = number_in(node.at("longitude"), -180, 180);
+  if (const auto o = node.find("utc_offset")) site.utc_offset_hours = number_in(*o, -14, 14);
+  if (const auto e = node.find("elevation_m")) site.elevation_m = number_in(*e, -500, 9000);
+  if (const auto n = node.find("north_deg")) site.north_deg = number_in(*n, -360, 360);
+  return site;
+}
+
+void apply_site(EnvironmentSpec& spec, const Site& site) {
+  if (spec.sun.place_from_site) {
+    spec.sun.latitude_deg = site.latitude_deg;
+    spec.sun.longitude_deg = site.longitude_deg;
+    spec.sun.utc_offset_hours = site.utc_offset_hours;
+  }
+  spec.elevation_m = site.elevation_m;
+  spec.north_deg = site.north_deg;
 }
 
 }  // namespace relight

@@ -208,6 +208,9 @@ struct Scene {
   // (a showroom under a sky or a captured map): through the visibility cuts
   // (src/sources/environment/) at run time, exactly in `relight reference`.
   std::optional<EnvironmentSpec> environment;
+  // The project's site: where the suns by "datetime" alone stand, its elevation and true north
+  // (scene/environment_spec.h); none when the scene gives no "site".
+  std::optional<Site> site;
   std::vector<ExteriorGeometry> exterior;
   std::vector<Emitter> emitters;
   std::vector<MovableObject> objects;

@@ -372,6 +372,8 @@ struct Loader {
     }
   }
 
+  const Site* site() const { return scene.site ? &*scene.site : nullptr; }
+
   void load_portals(const JsonNode& node) {
     std::set<std::string> names;
     std::map<std::uint32_t, std::string> owner;  // portal material -> portal
@@ -407,7 +409,8 @@ struct Loader {
         }
         portal.materials.push_back(index);
       }
-      portal.environment = parse_environment(p.at("environment"), base_dir, embedded == nullptr);
+      portal.environment =
+          parse_environment(p.at("environment"), base_dir, embedded == nullptr, site());
       if (const auto t = p.find("tint")) portal.tint = parse_tint(*t);
       if (const auto f = p.find("frost_deg")) portal.frost_deg = parse_frost_deg(*f);
       if (const auto d = p.find("exterior_distance"))
@@ -572,12 +575,13 @@ Scene scene_from_json(const nlohmann::json& document, const fs::path& file,
   const JsonNode root(document, file.string(), "/");
   root.expect_keys({"description", "materials", "geometry", "luminaires", "sensors", "cameras",
                     "portals", "exterior", "emitters", "objects", "precompute",
-                    "maintenance_factor", "environment"});
+                    "maintenance_factor", "environment", "site"});
   Loader loader;
   loader.scene.file = file;
   loader.base_dir = file.has_parent_path() ? file.parent_path() : fs::path(".");
   loader.embedded = embedded;
   if (const auto n = root.find("description")) n->string();
+  if (const auto n = root.find("site")) loader.scene.site = parse_site(*n);
   if (materials != nullptr) {
     for (const Material& m : *materials) loader.add_material(m);
   } else if (const auto n = root.find("materials")) {
@@ -589,7 +593,8 @@ Scene scene_from_json(const nlohmann::json& document, const fs::path& file,
   if (const auto n = root.find("cameras")) loader.load_cameras(*n);
   if (const auto n = root.find("portals")) loader.load_portals(*n);
   if (const auto n = root.find("environment")) {
-    loader.scene.environment = parse_environment(*n, loader.base_dir, embedded == nullptr);
+    loader.scene.environment =
+        parse_environment(*n, loader.base_dir, embedded == nullptr, loader.site());
   }
   if (const auto n = root.find("exterior")) loader.load_exterior(*n);
   if (const auto n = root.find("emitters")) loader.load_emitters(*n);

@@ -279,6 +279,7 @@ nlohmann::json hello_message(const TransferFile& t, const std::string& scene_fil
           {"luminaires", luminaires},
           {"portals", portals},
           {"environment", scene_json.value("environment", nlohmann::json())},
+          {"site", scene_json.value("site", nlohmann::json())},
           {"exterior", exterior},
           {"emitters", emitters},
           {"objects", objects},

@@ -498,7 +498,7 @@ struct StudioServer::Impl {
     try {
       const auto start = std::chrono::steady_clock::now();
       send_json(id, annual_progress_message(seq, 0, 0, "preparing"));
-      const AnnualHours hours = annual_hours(r.weather, r.period);
+      const AnnualHours hours = annual_hours(r.weather, r.period, north_deg(base));
       if (hours.hours.empty()) fail_input("message:/weather", "no occupied hour has the sun up");
       // Opened (and the sensors' importance solved, seconds) on the first run, kept for the next.
       if (!year_scene) year_scene = open_for_annual(rlt);

@@ -128,7 +128,7 @@ TEST_F(LightingStateFiles, UnknownKey) {
   EXPECT_EQ(top.err.rfind("error: " + state_path("unknown-top.json").string() + ":", 0), 0u)
       << top.err;
   EXPECT_NE(top.err.find("lights: unknown key \"lights\" (expected one of: luminaires, portals, "
-                         "exterior, emitters, objects, materials, environment)\n"),
+                         "exterior, emitters, objects, materials, environment, site)\n"),
             std::string::npos)
       << top.err;
   EXPECT_EQ(top.err.find('\n'), top.err.size() - 1) << top.err;
@@ -146,7 +146,7 @@ TEST_F(LightingStateFiles, UnknownTopLevelKeyHasTheRootPointer) {
   expect_state_error(
       "unknown-top-key.json", R"({ "lights": {} })", ":/lights",
       "unknown key \"lights\" (expected one of: luminaires, portals, exterior, emitters, objects, "
-      "materials, environment)");
+      "materials, environment, site)");
 }
 
 TEST_F(LightingStateFiles, MovingALuminaireOutsideTheSceneIsRefused) {

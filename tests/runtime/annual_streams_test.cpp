@@ -26,7 +26,7 @@ struct SpringRoom {
     testing::SyntheticPlace place;
     place.first_month = 4;  // April: 30 days of overcast, clear and intermediate skies
     place.last_month = 4;
-    hours = annual_hours(parse_epw(testing::synthetic_epw(place), "april.epw"), {});
+    hours = annual_hours(parse_epw(testing::synthetic_epw(place), "april.epw"), {}, 0);
   }
 };
 

@@ -74,7 +74,7 @@ TEST(AnnualDaylight, OccupiedHoursWithTheSunUpAtTheHalfHour) {
   testing::SyntheticPlace place;
   place.first_month = place.last_month = 6;
   const WeatherFile june = parse_epw(testing::synthetic_epw(place), "june.epw");
-  const AnnualHours office = annual_hours(june, {});
+  const AnnualHours office = annual_hours(june, {}, 0);
   // 08:00–18:00: the hours ending 9..18 (evaluated 08:30..17:30), ten a day, all with the sun
   // up in June at 48° N.
   EXPECT_EQ(office.occupied, 300u);
@@ -83,7 +83,7 @@ TEST(AnnualDaylight, OccupiedHoursWithTheSunUpAtTheHalfHour) {
   EXPECT_EQ(office.hours.front().sky.sun.local_time.hour, 8);
   EXPECT_EQ(office.hours.front().sky.sun.local_time.minute, 30);
   EXPECT_EQ(office.hours.back().record.hour, 18);
-  const AnnualHours day = annual_hours(june, *all_day);
+  const AnnualHours day = annual_hours(june, *all_day, 0);
   EXPECT_EQ(day.occupied, 720u);
   // Sunrise about 05:15, sunset about 21:15 local standard time (UTC+1) in Munich in June:
   // the hours evaluated at 05:30 .. 20:30 → 16 a day.
@@ -97,9 +97,9 @@ TEST(AnnualDaylight, OccupiedHoursWithTheSunUpAtTheHalfHour) {
   // A record's own albedo lights the ground; without one it reflects 0.2.
   WeatherRecord snow = day.hours.front().record;
   snow.ground_albedo = 0.8;
-  EXPECT_EQ(record_sky(june.location, snow).ground_albedo, 0.8);
+  EXPECT_EQ(record_sky(june.location, snow, 0).ground_albedo, 0.8);
   snow.ground_albedo.reset();
-  EXPECT_EQ(record_sky(june.location, snow).ground_albedo, 0.2);
+  EXPECT_EQ(record_sky(june.location, snow, 0).ground_albedo, 0.2);
 }
 
 }  // namespace
