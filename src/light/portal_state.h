@@ -2,6 +2,7 @@
 // seen through it, its glass, and where the exterior objects in front of it are.
 #pragma once
 
+#include <optional>
 #include <vector>
 #include "math/placement.h"
 #include "math/rgb.h"
@@ -21,6 +22,7 @@ struct PortalState {
   EnvironmentSpec environment;
   Rgb tint{1, 1, 1};
   double frost_deg = 0;
+  std::optional<Glazing> glazing;  // none: an opening with its tint alone
   // Per exterior object (scene order): the state's top-level "exterior", overridden for this
   // portal's shell by the portal's own "exterior".
   std::vector<ExteriorPlacement> exterior;
@@ -29,7 +31,8 @@ struct PortalState {
 
 // A portal as the scene sets it, with every one of `exterior_objects` where the scene put it.
 inline PortalState portal_state(const Portal& p, std::size_t exterior_objects) {
-  return {p.environment, p.tint, p.frost_deg, std::vector<ExteriorPlacement>(exterior_objects)};
+  return {p.environment, p.tint, p.frost_deg, p.glazing,
+          std::vector<ExteriorPlacement>(exterior_objects)};
 }
 
 }  // namespace relight

@@ -75,7 +75,7 @@ Rgb environment_sample(const ExteriorView& view, std::size_t p, Vec3 origin, Vec
 Rgb sun_sample(const ExteriorView& view, std::size_t p, Vec3 origin, Vec3 n, Pcg32& rng,
                std::uint64_t& rays, const NextEventWeight& weight) {
   const std::optional<SunDisc>& sun = view.portals.portals[p].environment.sun();
-  if (!sun || view.portals.portals[p].frost) return {};  // frosted: in the area samples
+  if (!sun || view.portals.portals[p].spreads_sun()) return {};  // in the area samples
   Rgb e;
   for (const Vec3& w : sample_sun_directions(*sun, rng)) {
     const double cos_x = dot(n, w);
@@ -83,7 +83,7 @@ Rgb sun_sample(const ExteriorView& view, std::size_t p, Vec3 origin, Vec3 n, Pcg
     if (escape_portal(view, {origin, w}, rays) != static_cast<std::int32_t>(p)) continue;
     const ReferencePortal& portal = view.portals.portals[p];
     if (portal.exterior && portal.exterior->tracer.occluded({origin, w})) continue;
-    const double l = 0.5 * sun->luminance * sun->solid_angle * cos_x;
+    const double l = 0.5 * sun->luminance * sun->solid_angle * cos_x * portal.transmittance(w);
     e += weight(w, 1 / sun->solid_angle) * l;
   }
   return view.portals.portals[p].tint * e;
@@ -116,6 +116,7 @@ ReferencePortals make_reference_portals(const Scene& scene, const PreparedMesh& 
                            scene.portals[p].tint,
                            {0, 0, 1},
                            {},
+                           scene.portals[p].glazing,
                            {},
                            {},
                            {}});
@@ -265,22 +266,40 @@ Rgb seen_outside(const ReferencePortal& portal, Vec3 from, Vec3 dir, bool with_s
 
 Rgb through_glass(const ReferencePortal& portal, Vec3 from, Vec3 dir, bool with_sun, Pcg32& rng,
                   std::uint64_t& rays) {
-  if (!portal.frost) return portal.tint * seen_outside(portal, from, dir, with_sun, rng, rays);
-  const ReferenceFrost& f = *portal.frost;
+  const bool diffusing = portal.glazing && portal.glazing->diffusing;
+  if (!portal.frost && !diffusing) {
+    return portal.tint * seen_outside(portal, from, dir, with_sun, rng, rays) *
+           portal.transmittance(dir);
+  }
   Rgb l;
+  const std::optional<SunDisc>& sun = portal.environment.sun();
+  const double cs = sun ? dot(sun->direction, portal.outward) : 0.0;
+  const auto sun_seen = [&] {
+    ++rays;
+    return cs > 0 && !(portal.exterior && portal.exterior->tracer.occluded({from, sun->direction}));
+  };
+  if (diffusing) {
+    const Vec3 w = frame_from_normal(portal.outward)
+                       .to_world(sample_cosine_hemisphere(rng.next_double(), rng.next_double()));
+    l += seen_outside(portal, from, w, false, rng, rays) * portal.transmittance(w);
+    if (sun && sun_seen()) {
+      const double e =
+          sun->integrated_luminance() * cs * portal.transmittance(sun->direction) / kPi;
+      l += Rgb{e, e, e};
+    }
+    return portal.tint * l;
+  }
+  const ReferenceFrost& f = *portal.frost;
   const Vec3 w = sample_frost_direction(dir, f.sigma, rng);
   const double c = dot(w, portal.outward);
   if (c > 0) {
-    l += seen_outside(portal, from, w, false, rng, rays) * (c * f.normaliser / frost_z(f, c));
+    l += seen_outside(portal, from, w, false, rng, rays) *
+         (c * f.normaliser / frost_z(f, c) * portal.transmittance(w));
   }
-  if (const std::optional<SunDisc>& sun = portal.environment.sun()) {
-    const double cs = dot(sun->direction, portal.outward);
-    ++rays;
-    if (cs > 0 && !(portal.exterior && portal.exterior->tracer.occluded({from, sun->direction}))) {
-      const double e = sun->integrated_luminance() * cs *
-                       frost_kernel(dot(sun->direction, dir), f.sigma) / frost_z(f, cs);
-      l += Rgb{e, e, e};
-    }
+  if (sun && sun_seen()) {
+    const double e = sun->integrated_luminance() * cs * portal.transmittance(sun->direction) *
+                     frost_kernel(dot(sun->direction, dir), f.sigma) / frost_z(f, cs);
+    l += Rgb{e, e, e};
   }
   return portal.tint * l;
 }
@@ -331,12 +350,12 @@ Rgb escaped_radiance(const ExteriorView& view, const Ray& ray, double brdf_pdf, 
   const Vec3 y = ray.origin + w * hit.t;
   Rgb l = through_glass(portal, y, w, false, rng, rays) * power_heuristic(brdf_pdf, area_pdf);
   const std::optional<SunDisc>& sun = portal.environment.sun();
-  if (sun && !portal.frost && dot(w, sun->direction) >= sun->cos_angular_radius) {
+  if (sun && !portal.spreads_sun() && dot(w, sun->direction) >= sun->cos_angular_radius) {
     ++rays;
     if (!(portal.exterior && portal.exterior->tracer.occluded({ray.origin, w}))) {
       const double disc = sun->luminance * power_heuristic(brdf_pdf, 1 / sun->solid_angle) *
                           (sun_weight ? sun_weight(static_cast<std::size_t>(index)) : 1.0);
-      l += portal.tint * Rgb{disc, disc, disc};
+      l += portal.tint * Rgb{disc, disc, disc} * portal.transmittance(w);
     }
   }
   return l;

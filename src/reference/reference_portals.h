@@ -35,6 +35,7 @@
 
 #include "light/environment.h"
 #include "light/exterior_objects.h"
+#include "math/glazing.h"
 #include "math/rgb.h"
 #include "math/sampling.h"
 #include "reference/reference_weight.h"
@@ -77,10 +78,17 @@ struct ReferencePortal {
   Rgb tint{1, 1, 1};                                  // the glass's transmittance per channel
   Vec3 outward{0, 0, 1};                              // unit, from the room toward the environment
   std::shared_ptr<const ReferenceFrost> frost;        // null: clear glass
+  std::optional<Glazing> glazing;                     // none: an opening (math/glazing.h)
   std::shared_ptr<const ReferenceExterior> exterior;  // null: none in front of it
   std::vector<std::uint32_t> triangles;               // prepared-mesh triangle ids
   std::vector<double> cumulative_area;                // running sums of the triangles' areas, m²
   double area() const { return cumulative_area.empty() ? 0.0 : cumulative_area.back(); }
+  // Frosted or diffusing glass spreads the sun: it is no sun disc seen through it.
+  bool spreads_sun() const { return frost || (glazing && glazing->diffusing); }
+  // The glazing's transmittance for light arriving along `dir` (outward); 1 without glazing.
+  double transmittance(Vec3 dir) const {
+    return glazing ? glazing_transmittance(*glazing, dot(dir, outward)) : 1.0;
+  }
 };
 
 inline constexpr std::int32_t kNoPortal = -1;
@@ -101,9 +109,12 @@ ReferencePortals make_reference_portals(
     const std::vector<std::vector<ExteriorObject>>& exterior = {});
 
 // The luminance that reaches the room through the portal's glass looking along `dir` (outward):
-// the exterior object or environment seen, through frost when the glass is frosted, tinted;
-// the sun disc only when `with_sun` (area samples leave it to the sun-cone samples of clear
-// glass; frosted glass spreads it, and it is included here).
+// the exterior object or environment seen, times the glazing's transmittance at the direction
+// it arrives from, through frost when the glass is frosted, tinted; the sun disc only when
+// `with_sun` (area samples leave it to the sun-cone samples of clear glass; frosted and
+// diffusing glass spread it, and it is included here). Diffusing glass shows the same luminance
+// every way, (1/π)·∫ L·T·cos dω over the directions in front: one cosine-distributed sample,
+// the sun's share exactly.
 Rgb through_glass(const ReferencePortal& portal, Vec3 from, Vec3 dir, bool with_sun, Pcg32& rng,
                   std::uint64_t& rays);
 

@@ -339,7 +339,7 @@ Rgb mirror_illuminance(PathContext& ctx, Vec3 p, Vec3 n) {
     for (std::size_t q = 0; q < ref.portals.portals.size(); ++q) {
       const ReferencePortal& portal = ref.portals.portals[q];
       const std::optional<SunDisc>& sun = portal.environment.sun();
-      if (!sun || portal.frost) continue;
+      if (!sun || portal.spreads_sun()) continue;
       const std::optional<ImageSample> m = sample_image(
           ctx, mirror_sun_lobe(plane, alpha, origin, sun->direction, sun->angular_radius), origin,
           n, k);

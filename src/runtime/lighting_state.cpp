@@ -149,12 +149,13 @@ void apply_emitter(EmitterState& e, const JsonNode& node) {
 
 void apply_portal(PortalState& s, const Scene& scene, const JsonNode& node,
                   const std::filesystem::path& base_dir, const Site* site) {
-  node.expect_keys({"environment", "tint", "frost_deg", "exterior"});
+  node.expect_keys({"environment", "tint", "frost_deg", "glazing", "exterior"});
   if (const auto e = node.find("environment")) {
     s.environment = parse_environment(*e, base_dir, true, site);
   }
   if (const auto t = node.find("tint")) s.tint = parse_tint(*t);
   if (const auto f = node.find("frost_deg")) s.frost_deg = parse_frost_deg(*f);
+  if (const auto g = node.find("glazing")) s.glazing = parse_glazing(*g);
   if (const auto x = node.find("exterior")) apply_exterior({&s}, scene, *x);
 }
 
@@ -285,6 +286,7 @@ Scene scene_with_state(const Scene& scene, const LightingState& state) {
     out.portals[p].environment = state.portals[p].environment;
     out.portals[p].tint = state.portals[p].tint;
     out.portals[p].frost_deg = state.portals[p].frost_deg;
+    out.portals[p].glazing = state.portals[p].glazing;
   }
   out.environment = state.environment;
   return out;

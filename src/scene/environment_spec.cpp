@@ -322,6 +322,22 @@ Rgb parse_tint(const JsonNode& node) {
   return tint;
 }
 
+Glazing parse_glazing(const JsonNode& node) {
+  if (!node.is_object()) node.fail("expected an object");
+  node.expect_keys({"visible_transmittance", "panes", "diffusing"});
+  const int panes = node.has("panes") ? node.at("panes").integer_in(1, kMaxPanes) : 1;
+  const bool diffusing = node.has("diffusing") && node.at("diffusing").boolean();
+  const JsonNode t = node.at("visible_transmittance");
+  const double max = max_glazing_transmittance(panes);
+  const double value = t.number();
+  if (!(value > 0) || value > max) {
+    t.fail("uncoated glass of " + std::to_string(panes) + " pane" + (panes > 1 ? "s" : "") +
+           " transmits more than 0 and at most " + format_number(max) +
+           " at normal incidence, got " + format_number(value));
+  }
+  return make_glazing(value, panes, diffusing);
+}
+
 double parse_frost_deg(const JsonNode& node) {
   const double frost = node.number_at_least(0);
   if (frost > 90) node.fail("frost_deg must lie in 0..90");

@@ -72,6 +72,7 @@
 #include <string>
 #include <string_view>
 
+#include "math/glazing.h"
 #include "math/rgb.h"
 #include "scene/json_node.h"
 
@@ -191,5 +192,9 @@ EnvironmentSpec parse_environment(const JsonNode& node, const std::filesystem::p
 // per channel in 0..1; "frost_deg" in 0..90, the angular width of frosted glass's blur.
 Rgb parse_tint(const JsonNode& node);
 double parse_frost_deg(const JsonNode& node);
+// A portal material's or state's "glazing": { "visible_transmittance": T (required),
+// "panes": 1|2|3 (default 1), "diffusing": bool (default false) } (math/glazing.h); a
+// transmittance uncoated panes cannot have is refused with their maximum.
+Glazing parse_glazing(const JsonNode& node);
 
 }  // namespace relight

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "math/glazing.h"
 #include "math/rgb.h"
 #include "math/vec3.h"
 #include "scene/distribution_spec.h"
@@ -27,6 +28,9 @@ struct Material {
   bool glossy = false;        // `metallic` or `roughness` given
   double metallic = 0;        // 0..1 (glTF default when only roughness is given: 0)
   double roughness = 1;       // 0..1, α = roughness² (glTF default when only metallic is given)
+  // Window glass's panes: a transmittance that falls with the angle of incidence
+  // (math/glazing.h); none: the portal is an opening (its tint alone).
+  std::optional<Glazing> glazing{};
 
   bool operator==(const Material&) const = default;
 };
@@ -81,8 +85,9 @@ struct Portal {
   std::string name;
   std::vector<std::uint32_t> materials;  // indices into Scene::materials, all "portal": true
   EnvironmentSpec environment;
-  Rgb tint{1, 1, 1};     // window glass colour (transmittance per channel)
-  double frost_deg = 0;  // frosted glass: angular width of the blur of the shell
+  Rgb tint{1, 1, 1};                 // window glass colour (transmittance per channel)
+  double frost_deg = 0;              // frosted glass: angular width of the blur of the shell
+  std::optional<Glazing> glazing{};  // its materials' (all alike)
   // The shell-size check of Yue et al. 2009 §6: the nearest exterior object is
   // `exterior_distance` m away (0: only sky, no check) and the directional error l/(2r) may
   // be at most `shell_tolerance_deg`.

@@ -45,12 +45,16 @@ struct Loader {
     if (!node.is_object()) node.fail("expected an object mapping names to materials");
     for (const auto& [name, unused] : node.value().items()) {
       const JsonNode m = node.at(name);
-      m.expect_keys({"albedo", "portal", "metallic", "roughness"});
+      m.expect_keys({"albedo", "portal", "metallic", "roughness", "glazing"});
       Material material{name};
       if (const auto portal = m.find("portal")) material.portal = portal->boolean();
+      if (const auto g = m.find("glazing"); g && !material.portal) {
+        g->fail("only window glass (\"portal\": true) has glazing");
+      }
       if (material.portal) {
-        // Window glass: its look is the portal's tint and frost, not a surface's.
+        // Window glass: its look is the portal's glazing, tint and frost, not a surface's.
         if (const auto a = m.find("albedo")) material.albedo = a->rgb_in_unit_range();
+        if (const auto g = m.find("glazing")) material.glazing = parse_glazing(*g);
         for (const char* key : {"metallic", "roughness"}) {
           if (const auto k = m.find(key))
             k->fail("window glass (\"portal\": true) has no " + std::string(key));
@@ -408,6 +412,12 @@ struct Loader {
                  it->second + "\"");
         }
         portal.materials.push_back(index);
+        if (portal.materials.size() == 1) {
+          portal.glazing = scene.materials[index].glazing;
+        } else if (scene.materials[index].glazing != portal.glazing) {
+          m.fail("the materials of portal \"" + portal.name +
+                 "\" have different glazing: give them the same, or make them two portals");
+        }
       }
       portal.environment =
           parse_environment(p.at("environment"), base_dir, embedded == nullptr, site());

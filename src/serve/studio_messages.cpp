@@ -178,6 +178,16 @@ nlohmann::json annual_message(std::optional<std::uint32_t> seq, const Scene& sce
           {"sets", std::move(sets)}};
 }
 
+namespace {
+
+nlohmann::json glazing_json(const Glazing& g) {
+  return {{"visible_transmittance", g.visible_transmittance},
+          {"panes", g.panes},
+          {"diffusing", g.diffusing}};
+}
+
+}  // namespace
+
 nlohmann::json hello_message(const TransferFile& t, const std::string& scene_file_name,
                              const nlohmann::json& state) {
   const Scene& scene = t.scene;
@@ -213,13 +223,15 @@ nlohmann::json hello_message(const TransferFile& t, const std::string& scene_fil
   for (std::size_t p = 0; p < scene.portals.size(); ++p) {
     const Portal& portal = scene.portals[p];
     const PortalTransferView& v = t.view.portals.at(p);
-    portals.push_back({{"name", portal.name},
-                       {"centre", vec3_json(v.centre)},
-                       {"outward", vec3_json(v.outward)},
-                       {"diameter", v.diameter},
-                       {"environment", scene_json.at("portals").at(p).at("environment")},
-                       {"tint", rgb_json(portal.tint)},
-                       {"frost_deg", portal.frost_deg}});
+    portals.push_back(
+        {{"name", portal.name},
+         {"centre", vec3_json(v.centre)},
+         {"outward", vec3_json(v.outward)},
+         {"diameter", v.diameter},
+         {"environment", scene_json.at("portals").at(p).at("environment")},
+         {"tint", rgb_json(portal.tint)},
+         {"frost_deg", portal.frost_deg},
+         {"glazing", portal.glazing ? glazing_json(*portal.glazing) : nlohmann::json(nullptr)}});
   }
   nlohmann::json exterior = nlohmann::json::array();
   for (const ExteriorGeometry& x : scene.exterior) {

@@ -157,6 +157,11 @@ nlohmann::json materials_json(const std::vector<Material>& materials) {
                    {"glossy", m.glossy},
                    {"metallic", m.metallic},
                    {"roughness", m.roughness}});
+    if (m.glazing) {
+      out.back()["glazing"] = {{"visible_transmittance", m.glazing->visible_transmittance},
+                               {"panes", m.glazing->panes},
+                               {"diffusing", m.glazing->diffusing}};
+    }
   }
   return out;
 }
@@ -170,8 +175,15 @@ std::vector<Material> materials_from_json(const nlohmann::json& array, const std
       out.push_back({j.at("name").get<std::string>(), Rgb{albedo[0], albedo[1], albedo[2]},
                      j.at("portal").get<bool>(), j.at("glossy").get<bool>(),
                      j.at("metallic").get<double>(), j.at("roughness").get<double>()});
+      if (const auto g = j.find("glazing"); g != j.end()) {
+        out.back().glazing =
+            make_glazing(g->at("visible_transmittance").get<double>(), g->at("panes").get<int>(),
+                         g->at("diffusing").get<bool>());
+      }
     }
   } catch (const nlohmann::json::exception& e) {
+    fail_input(where, std::string("scene_materials: ") + e.what());
+  } catch (const std::invalid_argument& e) {  // a glazing no glass can have
     fail_input(where, std::string("scene_materials: ") + e.what());
   }
   return out;

@@ -117,6 +117,7 @@ void update_portal_lighting(PortalLighting& lighting, std::uint32_t index,
   inputs.environment = &environment;
   inputs.tint = state.tint;
   inputs.frost_deg = state.frost_deg;
+  inputs.glazing = state.glazing ? &*state.glazing : nullptr;
   inputs.exterior = exterior;
   // The indirect weights are the SH of the shell's outward half: no light from behind the
   // portal's plane can pass it (its direct transfer is zero), but in a band-limited projection
@@ -125,9 +126,11 @@ void update_portal_lighting(PortalLighting& lighting, std::uint32_t index,
   // transfer (a map of high contrast through a window: floor error against the reference
   // 4.4 % mean, 16 % worst unmasked; see docs/decisions.md).
   inputs.sh_outward_half = true;
-  // A sun in front of clear glass is traced exactly (portal_sun.h), not put into the shell.
+  // A sun in front of clear glass is traced exactly (portal_sun.h), not put into the shell;
+  // frosted and diffusing glass spread it, in the shell.
   const std::optional<SunDisc>& sun = environment.sun();
-  const bool exact_sun = sun && state.frost_deg == 0 && sun->normal_illuminance > 0 &&
+  const bool diffusing = state.glazing && state.glazing->diffusing;
+  const bool exact_sun = sun && state.frost_deg == 0 && !diffusing && sun->normal_illuminance > 0 &&
                          dot(sun->direction, portal.outward) > 0;
   inputs.sun_disc = !exact_sun;
   const Shell& shell = lighting.shell;
@@ -136,7 +139,11 @@ void update_portal_lighting(PortalLighting& lighting, std::uint32_t index,
   prepare_shell_cubemap(portal.face_size, shell.cubemap, lighting.cubemap);
   lighting.sun.reset();
   if (exact_sun) {
-    lighting.sun = make_portal_sun(index, *sun, state.tint * sun->normal_illuminance,
+    const double glass =
+        state.glazing
+            ? glazing_transmittance(*state.glazing, dot(sun->direction, normalize(portal.outward)))
+            : 1.0;
+    lighting.sun = make_portal_sun(index, *sun, state.tint * (glass * sun->normal_illuminance),
                                    exterior_tracer(exterior));
   }
   const auto k = static_cast<std::size_t>(sh_count(sh_order));

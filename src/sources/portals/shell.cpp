@@ -25,6 +25,23 @@ bool has_triangles(std::span<const ExteriorObject> exterior) {
   return false;
 }
 
+// Diffusing glass: what passes, (1/π)·Σ L·cos·Ω over the texels in front, shown evenly in every
+// direction in front of the glass.
+void diffuse_through_glass(int face_size, Vec3 outward, Shell& shell) {
+  const std::vector<Vec3>& directions = cubemap_texel_directions(face_size);
+  const std::vector<double>& omega = cubemap_solid_angles(face_size);
+  const auto face_texels = static_cast<std::size_t>(face_size) * face_size;
+  Rgb flux;
+  for (std::size_t t = 0; t < shell.cubemap.size(); ++t) {
+    const double c = dot(directions[t], outward);
+    if (c > 0) flux += shell.cubemap[t] * (c * omega[t % face_texels]);
+  }
+  const Rgb diffuse = flux * (1 / kPi);
+  for (std::size_t t = 0; t < shell.cubemap.size(); ++t) {
+    shell.cubemap[t] = dot(directions[t], outward) > 0 ? diffuse : Rgb{};
+  }
+}
+
 }  // namespace
 
 void render_shell(const ShellInputs& inputs, const PortalFrame& portal, int face_size, int sh_order,
@@ -61,14 +78,33 @@ void render_shell(const ShellInputs& inputs, const PortalFrame& portal, int face
                            sun ? &*sun : nullptr, shell.cubemap);
     if (sun) sun_seen = sun_visible(scene, portal.centre, sun->direction);
   }
+  // 2b. Glazing, the continuous part (the sun's share below).
+  const std::vector<Vec3>& directions = cubemap_texel_directions(face_size);
+  const Vec3 outward = normalize(portal.outward);
+  if (inputs.glazing) {
+    for (std::size_t t = 0; t < shell.cubemap.size(); ++t) {
+      shell.cubemap[t] =
+          shell.cubemap[t] * glazing_transmittance(*inputs.glazing, dot(directions[t], outward));
+    }
+  }
   shell.sun_in_shell = sun && sun_seen && inputs.sun_disc;
   shell.sun_texel = 0;
   shell.sun_radiance = Rgb{};
   if (shell.sun_in_shell) {
     const SunDeposit d = deposit_sun(*sun, face_size, shell.cubemap);
+    double radiance = d.radiance;
+    if (inputs.glazing) {
+      // The disc through the glass at its own incidence: what the glass holds back, taken off.
+      radiance *= glazing_transmittance(*inputs.glazing, dot(sun->direction, outward));
+      const double held_back = d.radiance - radiance;
+      Rgb& l = shell.cubemap[d.texel];
+      l = {std::max(0.0, l.r - held_back), std::max(0.0, l.g - held_back),
+           std::max(0.0, l.b - held_back)};
+    }
     shell.sun_texel = d.texel;
-    shell.sun_radiance = Rgb{d.radiance, d.radiance, d.radiance} * inputs.tint;
+    shell.sun_radiance = Rgb{radiance, radiance, radiance} * inputs.tint;
   }
+  if (inputs.glazing && inputs.glazing->diffusing) diffuse_through_glass(face_size, outward, shell);
 
   // 3. Frosted glass.
   if (inputs.frost_deg > 0) {
@@ -81,7 +117,6 @@ void render_shell(const ShellInputs& inputs, const PortalFrame& portal, int face
   // tinted — a third of the work of 5 (every hour of `relight annual` makes a shell).
   shell.sh_order = sh_order;
   // Texels the SH leaves out: those behind the portal's plane, for sh_outward_half.
-  const std::vector<Vec3>& directions = cubemap_texel_directions(face_size);
   const auto left_out = [&](std::size_t t) {
     return inputs.sh_outward_half && dot(directions[t], portal.outward) <= 0;
   };

@@ -16,6 +16,12 @@
 //  the
 //     centre, k×k sub-rays per texel, shaded Lambertian under sun + R&H sky irradiance; the sun
 //     disc is deposited only when the ray from the centre toward it escapes the objects.
+//  2b. Glazing (math/glazing.h), when given: every texel × the panes' transmittance at its
+//     incidence on the glass (cos = direction · outward; 0 behind the glass), the sun disc ×
+//     the transmittance at its own. Diffusing glazing then spreads what it transmits evenly:
+//     every texel in front of the glass shows L_d = (1/π)·Σ L·T·cos·Ω, the flux per area through
+//     the glass as a Lambertian luminance (the sun disc included: it is never traced apart),
+//     and nothing behind.
 //  3. Frost (sources/portals/shell_frost.h): flux-preserving von Mises–Fisher blur in the portal
 //  frame.
 //  4. Tint: every texel × tint, exactly (the last change to the cubemap, so cubemap[i] is
@@ -34,6 +40,7 @@
 #include "light/environment.h"
 #include "light/exterior_objects.h"
 #include "math/cubemap.h"
+#include "math/glazing.h"
 #include "math/rgb.h"
 #include "sources/portals/shell_frost.h"
 
@@ -44,6 +51,7 @@ struct ShellInputs {
   Rgb tint{1, 1, 1};                         // window colour: multiplies the shell (≥ 0)
   double frost_deg = 0;  // frosted glass: angular standard deviation of the blur in degrees
                          // (sources/portals/shell_frost.h), 0 = clear
+  const Glazing* glazing = nullptr;          // the panes (math/glazing.h); null: an opening
   std::span<const ExteriorObject> exterior;  // dynamic exterior geometry, may be empty
   int exterior_subrays = 3;                  // k: k×k sub-rays per texel for the exterior
   // Project only the half of the shell in front of the portal (ω · outward > 0) onto SH: the
