@@ -27,6 +27,7 @@ import { StateStore, canonical } from './state.js';
 import { notice } from './ui.js';
 import { ViewPanel } from './view_panel.js';
 import { Viewer } from './viewer.js';
+import { SitePanel } from './site.js';
 import { WindowsPanel } from './windows.js';
 
 const $ = (id) => document.getElementById(id);
@@ -116,6 +117,7 @@ const luminairePanel = new LuminairePanel($('luminaires'), store, distributions,
   },
 });
 const editor = new DistributionEditor($('distribution'), store, distributions, requestDistribution);
+const sitePanel = new SitePanel($('site'), store);
 const windowsPanel = new WindowsPanel($('windows'), store);
 const emitterPanel = new EmitterPanel($('emitters'), store);
 const objectPanel = new ObjectPanel($('objects'), store, objectsView);
@@ -250,6 +252,7 @@ function onHello(hello) {
   layout.setScene(hello);
   sensors.setScene(hello);
   luminairePanel.setScene(hello);
+  sitePanel.setScene(hello);
   windowsPanel.setScene(hello);
   emitterMarkers.setScene(hello);
   emitterPanel.setScene(hello);

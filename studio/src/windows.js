@@ -1,10 +1,11 @@
 // The Windows panel: per portal (hello.portals) the glass tint (transmittance per channel,
 // 0..1), frosted glass (frost_deg 0..90, a von Mises–Fisher blur of the shell) and what
 // the window sees (docs/scene-format.md "Portals"): a uniform sky (luminance, cd/m²), a
-// CIE standard general sky (ISO 15469 types 1–15 or the traditional overcast; horizontal
-// illuminance or zenith luminance; ground albedo; the sun by place and local time
-// (latitude, longitude, UTC offset, date and time → "YYYY-MM-DDTHH:MM") or by angles, and
-// its illuminance) or an HDR map (file, rotate_deg, scale). Below, the exterior objects'
+// CIE standard general sky (ISO 15469 types 1–15 or the traditional overcast; as bright as the
+// sun's altitude makes it, with a turbidity, or by horizontal illuminance or zenith luminance;
+// ground albedo; the sun by date and local time at the project's site (hello.site), by its own
+// place (latitude, longitude, UTC offset, date and time → "YYYY-MM-DDTHH:MM") or by angles,
+// and its illuminance) or an HDR map (file, rotate_deg, scale). Below, the exterior objects'
 // placements (visible, translate, rotate_deg). Each change replaces the portal's
 // `environment` object as a whole in the state document. A scene with a top-level environment
 // (hello.environment: furniture under a sky or a captured map, lit through the visibility cuts)
@@ -32,6 +33,7 @@ const SKY_TYPES = [
 ];
 
 const clone = (x) => JSON.parse(JSON.stringify(x ?? null));
+const MUNICH = { latitude: 48.14, longitude: 11.58, utc_offset: 1 };
 const pad = (n) => String(n).padStart(2, '0');
 
 export class WindowsPanel {
@@ -53,6 +55,12 @@ export class WindowsPanel {
     if (!this.blocks.length) this.container.append(el('p', { class: 'hint', text: 'This scene has no windows (portals) and no environment.' }));
     if (hello.exterior?.length) this._exterior(hello.exterior);
     this.refresh();
+  }
+
+  // A sun by place and time: at the project's site (hello.site, docs/scene-format.md "Site") when
+  // the scene has one, its date and time alone; otherwise with a place of its own.
+  placeSun(datetime = '2026-03-21T12:00') {
+    return this.hello?.site ? { datetime } : { ...MUNICH, datetime };
   }
 
   entry(name) {
@@ -144,7 +152,7 @@ export class WindowsPanel {
     if (type === 'perez') {
       return this._setEnv(b.p, {
         type, direct_normal_irradiance: 600, diffuse_horizontal_irradiance: 120,
-        sun: { latitude: 48.14, longitude: 11.58, utc_offset: 1, datetime: '2026-03-21T12:00' },
+        sun: this.placeSun(),
       });
     }
     // A map needs a file first.
@@ -154,7 +162,7 @@ export class WindowsPanel {
 
   // Builds the environment form for env (rebuilt when the type or the sun mode changes).
   _form(b, env) {
-    const key = JSON.stringify([env.type, sunMode(env), env.zenith_luminance !== undefined, b.pendingMap]);
+    const key = JSON.stringify([env.type, sunMode(env), brightnessMode(env), siteSun(env), b.pendingMap]);
     b.env = clone(env);
     if (b.formKey === key) return this._fill(b);
     b.formKey = key;
@@ -185,8 +193,10 @@ export class WindowsPanel {
           b.env.sky_type = v === 'overcast' ? v : Number(v);
           // Skies that are not uniform in azimuth depend on where the sun is: give one.
           if (!b.env.sun && !['overcast', '1', '3', '5'].includes(v)) {
-            b.env.sun = { latitude: 48.14, longitude: 11.58, utc_offset: 1, datetime: '2026-03-21T12:00' };
-            b.env.sun_illuminance ??= Number(v) >= 11 ? 70000 : Number(v) >= 6 ? 30000 : 0;
+            b.env.sun = this.placeSun();
+            if (b.env.horizontal_illuminance !== undefined || b.env.zenith_luminance !== undefined) {
+              b.env.sun_illuminance ??= Number(v) >= 11 ? 70000 : Number(v) >= 6 ? 30000 : 0;
+            }
           }
           commit();
         },
@@ -195,28 +205,35 @@ export class WindowsPanel {
       f.append(row('Sky type', sky, 'Sky luminance distribution'));
       const by = select(
         [
+          ['s', "by the sun's altitude"],
           ['h', 'horizontal illuminance'],
           ['z', 'zenith luminance'],
         ],
         {
-          title: 'Give the sky\'s brightness as its horizontal illuminance (lx, without the sun) or its zenith luminance (cd/m²)',
-          value: env.zenith_luminance !== undefined ? 'z' : 'h',
+          title: "The sky's brightness: by the sun's altitude (the sky and sun of a day at the site: dark at night), or fixed as its horizontal illuminance (lx, without the sun) or its zenith luminance (cd/m²)",
+          value: brightnessMode(env),
+          testid: `sky-brightness-${b.i}`,
           onChange: (v) => {
             const val = b.env.horizontal_illuminance ?? b.env.zenith_luminance;
             delete b.env.horizontal_illuminance;
             delete b.env.zenith_luminance;
             if (v === 'z') b.env.zenith_luminance = val ?? 3000;
-            else b.env.horizontal_illuminance = val ?? 10000;
+            else if (v === 'h') b.env.horizontal_illuminance = val ?? 10000;
+            else {
+              b.env.sun ??= this.placeSun(); // the altitude needs a sun
+              delete b.env.sun_illuminance; // the model's
+            }
             commit();
           },
         },
       );
       f.append(row('Brightness', by));
       if (env.zenith_luminance !== undefined) num('zenith_luminance', 'Zenith', { min: 0, unit: 'cd/m²' }, 'Luminance of the sky at the zenith, cd/m²');
-      else num('horizontal_illuminance', 'Sky', { min: 0, unit: 'lx' }, 'Diffuse horizontal illuminance of the sky (without the sun), lx; 10000 lx is a bright overcast day');
+      else if (env.horizontal_illuminance !== undefined) num('horizontal_illuminance', 'Sky', { min: 0, unit: 'lx' }, 'Diffuse horizontal illuminance of the sky (without the sun), lx; 10000 lx is a bright overcast day');
+      else num('linke_turbidity', 'Turbidity', { min: 1, max: 10, step: 0.1 }, 'Linke turbidity of the atmosphere (1 very clean … 10 hazy; 3 typical): how much the air dims the sun');
       num('ground_albedo', 'Albedo', { min: 0, max: 1, step: 0.01 }, 'Reflectance of the ground below the horizon (Lambertian), 0..1; default 0.2');
       this._sunForm(b, env, f, num, commit, true);
-      if (sunMode(env) !== 'none') num('sun_illuminance', 'Sun disc', { min: 0, unit: 'lx' }, 'Illuminance of the sun normal to its direction, lx (0 = no sun disc; clear sky ≈ 70000–100000)');
+      if (sunMode(env) !== 'none') num('sun_illuminance', 'Sun disc', { min: 0, unit: 'lx' }, "Illuminance of the sun normal to its direction, lx (0 = no sun disc; clear sky ≈ 70000–100000; empty with a sky by the sun's altitude: the model's)");
     } else if (env.type === 'perez') {
       num('direct_normal_irradiance', 'Direct', { min: 0, max: 1500, unit: 'W/m²' }, 'Direct normal irradiance of the weather record, W/m² (clear sky ≈ 600–900)');
       num('diffuse_horizontal_irradiance', 'Diffuse', { min: 0, max: 1500, unit: 'W/m²' }, 'Diffuse horizontal irradiance of the weather record, W/m² (overcast ≈ 50–300)');
@@ -261,9 +278,9 @@ export class WindowsPanel {
             delete b.env.sun;
             delete b.env.sun_illuminance; // a sun disc needs a sun position
           }
-          if (m === 'place') b.env.sun = { latitude: 48.14, longitude: 11.58, utc_offset: 1, datetime: '2026-03-21T12:00' };
+          if (m === 'place') b.env.sun = this.placeSun();
           if (m === 'angles') b.env.sun = { azimuth_deg: 180, altitude_deg: 35 };
-          if (allowNone && m !== 'none' && b.env.sun_illuminance === undefined) b.env.sun_illuminance = 70000;
+          if (allowNone && m !== 'none' && b.env.sun_illuminance === undefined && brightnessMode(b.env) !== 's') b.env.sun_illuminance = 70000;
           commit();
         },
       },
@@ -271,9 +288,13 @@ export class WindowsPanel {
     f.append(row('Sun', mode, 'Sun position'));
     const sun = () => b.env.sun;
     if (sunMode(env) === 'place') {
-      num('latitude', 'Latitude', { min: -90, max: 90, unit: '°' }, 'Latitude in degrees, north positive', sun);
-      num('longitude', 'Longitude', { min: -180, max: 180, unit: '°' }, 'Longitude in degrees, east positive', sun);
-      num('utc_offset', 'UTC offset', { min: -14, max: 14, unit: 'h' }, 'Local time minus UTC, hours (e.g. 1 for CET, 2 for CEST)', sun);
+      if (siteSun(env)) {
+        f.append(row('Place', el('span', { class: 'hint', text: "the project's site (Site panel)" }), 'A sun by date and time alone stands at the site'));
+      } else {
+        num('latitude', 'Latitude', { min: -90, max: 90, unit: '°' }, 'Latitude in degrees, north positive', sun);
+        num('longitude', 'Longitude', { min: -180, max: 180, unit: '°' }, 'Longitude in degrees, east positive', sun);
+        num('utc_offset', 'UTC offset', { min: -14, max: 14, unit: 'h' }, 'Local time minus UTC, hours (e.g. 1 for CET, 2 for CEST)', sun);
+      }
       const date = el('input', { type: 'date', title: 'Local date', dataset: { testid: `sun-date-${b.i}` } });
       const time = el('input', { type: 'time', title: 'Local time (HH:MM)', dataset: { testid: `sun-time-${b.i}` } });
       const scrub = el('input', { type: 'range', min: 0, max: 1439, step: 5, title: 'Time of day: drag to move the sun through the day', class: 'time-slider', dataset: { testid: `sun-time-slider-${b.i}` } });
@@ -314,7 +335,8 @@ export class WindowsPanel {
       put('horizontal_illuminance', env.horizontal_illuminance);
       put('zenith_luminance', env.zenith_luminance);
       put('ground_albedo', env.ground_albedo ?? 0.2);
-      put('sun_illuminance', env.sun_illuminance ?? 0);
+      put('linke_turbidity', env.linke_turbidity ?? 3);
+      put('sun_illuminance', env.sun_illuminance ?? (brightnessMode(env) === 's' ? '' : 0));
     } else if (env.type === 'perez') {
       put('direct_normal_irradiance', env.direct_normal_irradiance);
       put('diffuse_horizontal_irradiance', env.diffuse_horizontal_irradiance);
@@ -399,6 +421,17 @@ export class WindowsPanel {
       if (document.activeElement !== r.rot.input) r.rot.input.value = String(e.rotate_deg ?? 0);
     }
   }
+}
+
+// How a CIE sky's brightness is given: 's' by the sun's altitude (neither key), 'h', 'z'.
+function brightnessMode(env) {
+  if (env.zenith_luminance !== undefined) return 'z';
+  return env.horizontal_illuminance !== undefined ? 'h' : 's';
+}
+
+// A sun by date and time alone: at the project's site.
+function siteSun(env) {
+  return !!env.sun && env.sun.datetime !== undefined && env.sun.latitude === undefined;
 }
 
 function sunMode(env) {
