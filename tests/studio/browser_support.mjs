@@ -2,11 +2,12 @@
 // a closed network needs), the studio page opened on a server, and measurements of the
 // viewport's pixels (mean display value, centroids of the brightest pixels and of where one
 // image is much brighter than another).
+import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 
-import { requireStudio } from './studio_support.mjs';
+import { connect, requireStudio, startServer, stopServer } from './studio_support.mjs';
 
 const { chromium } = requireStudio('playwright-core');
 
@@ -41,6 +42,23 @@ export async function openStudio(url, { viewport = { width: 1100, height: 700 } 
     await close();
     throw e;
   }
+}
+
+// A real `relight serve` (startServer's arguments), a WebSocket watcher on it and the studio in
+// Chromium. Returns {server, watcher, studio, page, close}; close() takes down what was opened,
+// in reverse order, and asserts that the server exits cleanly.
+export async function openSession(serverArgs = [], serverOptions = {}) {
+  const session = {};
+  session.close = async () => {
+    session.watcher?.close();
+    await session.studio?.close();
+    if (session.server) assert.equal(await stopServer(session.server), 0, session.server.stderr());
+  };
+  session.server = await startServer(serverArgs, serverOptions);
+  session.watcher = await connect(session.server.ws);
+  session.studio = await openStudio(session.server.url);
+  session.page = session.studio.page;
+  return session;
 }
 
 // Mean display value of the viewport's pixels (luminance of the 8-bit sRGB values, and per

@@ -13,7 +13,7 @@ import path from 'node:path';
 import zlib from 'node:zlib';
 
 import * as browser from './browser_support.mjs';
-import { connect, mean, nextStateAndFrame, relightBinary, startServer, stopServer } from './studio_support.mjs';
+import { mean, nextStateAndFrame, relightBinary } from './studio_support.mjs';
 
 const kLuminance = 2000;
 
@@ -54,20 +54,16 @@ function shot(width, height, x) {
   return png(width, height, rgb);
 }
 
-let server, studio, page, watcher, dir;
+let session, studio, page, watcher, dir;
 
 test.before(async () => {
-  server = await startServer();
-  watcher = await connect(server.ws);
-  studio = await browser.openStudio(server.url);
-  page = studio.page;
+  session = await browser.openSession();
+  ({ watcher, studio, page } = session);
   dir = fs.mkdtempSync(path.join(os.tmpdir(), 'relight-capture-'));
 });
 
 test.after(async () => {
-  watcher?.close();
-  await studio?.close();
-  if (server) assert.equal(await stopServer(server), 0, server.stderr());
+  await session?.close();
   if (dir) fs.rmSync(dir, { recursive: true, force: true });
 });
 

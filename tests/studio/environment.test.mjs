@@ -14,8 +14,7 @@ import os from 'node:os';
 import path from 'node:path';
 
 import * as browser from './browser_support.mjs';
-import { connect, geometryPositions, mean, nextStateAndFrame, relightBinary, startServer,
-         stopServer } from './studio_support.mjs';
+import { geometryPositions, mean, nextStateAndFrame, relightBinary } from './studio_support.mjs';
 
 const sky = (azimuth) => ({ type: 'cie_sky', sky_type: 12, horizontal_illuminance: 3000,
                            sun: { azimuth_deg: azimuth, altitude_deg: 40 }, sun_illuminance: 10000 });
@@ -29,7 +28,7 @@ const kScene = {
                 cuts: { directions: 4096, sphere_count: 8, sphere_points: 8 } },
 };
 
-let dir, server, studio, page, watcher, floor;
+let dir, session, studio, page, watcher, floor;
 
 test.before(async () => {
   dir = fs.mkdtempSync(path.join(os.tmpdir(), 'relight-environment-'));
@@ -37,16 +36,12 @@ test.before(async () => {
   const rlt = path.join(dir, 'showroom.rlt');
   fs.writeFileSync(scene, JSON.stringify(kScene, null, 2));
   execFileSync(relightBinary, ['precompute', scene, '-o', rlt, '--no-progress'], { stdio: 'pipe' });
-  server = await startServer([], { scene: rlt });
-  watcher = await connect(server.ws);
-  studio = await browser.openStudio(server.url);
-  page = studio.page;
+  session = await browser.openSession([], { scene: rlt });
+  ({ watcher, studio, page } = session);
 });
 
 test.after(async () => {
-  watcher?.close();
-  await studio?.close();
-  if (server) assert.equal(await stopServer(server), 0, server.stderr());
+  await session?.close();
   if (dir) fs.rmSync(dir, { recursive: true, force: true });
 });
 

@@ -17,7 +17,7 @@ import os from 'node:os';
 import path from 'node:path';
 
 import * as browser from './browser_support.mjs';
-import { connect, decodeFrame, mean, relightBinary, startServer, stopServer } from './studio_support.mjs';
+import { decodeFrame, mean, relightBinary } from './studio_support.mjs';
 
 const kScene = {
   materials: { room: { albedo: [0.5, 0.5, 0.5] }, panel: { albedo: [0.8, 0.8, 0.8] } },
@@ -33,7 +33,7 @@ const kScene = {
   precompute: { max_edge: 0.3, gather_rays: 64, sensor_gather_rays: 256, sh_order: 4 },
 };
 
-let dir, server, studio, page, watcher;
+let dir, session, studio, page, watcher;
 
 test.before(async () => {
   dir = fs.mkdtempSync(path.join(os.tmpdir(), 'relight-materials-'));
@@ -41,16 +41,12 @@ test.before(async () => {
   const rlt = path.join(dir, 'panel-room.rlt');
   fs.writeFileSync(scene, JSON.stringify(kScene, null, 2));
   execFileSync(relightBinary, ['precompute', scene, '-o', rlt, '--no-progress'], { stdio: 'pipe' });
-  server = await startServer([], { scene: rlt });
-  watcher = await connect(server.ws);
-  studio = await browser.openStudio(server.url);
-  page = studio.page;
+  session = await browser.openSession([], { scene: rlt });
+  ({ watcher, studio, page } = session);
 });
 
 test.after(async () => {
-  watcher?.close();
-  await studio?.close();
-  if (server) assert.equal(await stopServer(server), 0, server.stderr());
+  await session?.close();
   if (dir) fs.rmSync(dir, { recursive: true, force: true });
 });
 

@@ -7,21 +7,17 @@ import test from 'node:test';
 import assert from 'node:assert/strict';
 
 import * as browser from './browser_support.mjs';
-import { connect, mean, nextStateAndFrame, startServer, stopServer } from './studio_support.mjs';
+import { mean, nextStateAndFrame } from './studio_support.mjs';
 
-let server, studio, page, watcher;
+let session, studio, page, watcher;
 
 test.before(async () => {
-  server = await startServer();
-  watcher = await connect(server.ws);
-  studio = await browser.openStudio(server.url);
-  page = studio.page;
+  session = await browser.openSession();
+  ({ watcher, studio, page } = session);
 });
 
 test.after(async () => {
-  watcher?.close();
-  await studio?.close();
-  if (server) assert.equal(await stopServer(server), 0, server.stderr());
+  await session?.close();
 });
 
 const testid = (id) => page.locator(`[data-testid="${id}"]`);
