@@ -7,6 +7,7 @@
 #include <cctype>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 #include "common/input_error.h"
 
@@ -328,14 +329,14 @@ Glazing parse_glazing(const JsonNode& node) {
   const int panes = node.has("panes") ? node.at("panes").integer_in(1, kMaxPanes) : 1;
   const bool diffusing = node.has("diffusing") && node.at("diffusing").boolean();
   const JsonNode t = node.at("visible_transmittance");
-  const double max = max_glazing_transmittance(panes);
   const double value = t.number();
-  if (!(value > 0) || value > max) {
+  try {
+    return make_glazing(value, panes, diffusing);
+  } catch (const std::invalid_argument&) {  // more than the clear panes can transmit, or 0
     t.fail("uncoated glass of " + std::to_string(panes) + " pane" + (panes > 1 ? "s" : "") +
-           " transmits more than 0 and at most " + format_number(max) +
+           " transmits more than 0 and at most " + format_number(max_glazing_transmittance(panes)) +
            " at normal incidence, got " + format_number(value));
   }
-  return make_glazing(value, panes, diffusing);
 }
 
 double parse_frost_deg(const JsonNode& node) {

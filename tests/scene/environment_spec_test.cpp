@@ -3,8 +3,11 @@
 
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "common/input_error.h"
 #include "scene/environment_spec.h"
+#include "scene/json_node.h"
 #include "support/temp_dir.h"
 
 namespace relight {
@@ -238,6 +241,28 @@ TEST(EnvironmentSpec, SkyTypesThatNeedTheSun) {
     const bool expected = !(t == 0 || t == 1 || t == 3 || t == 5);
     EXPECT_EQ(sky_type_needs_sun(t), expected) << t;
   }
+}
+
+TEST(EnvironmentSpec, GlazingGlassCannotHaveIsRefusedWithTheMaximumAndThePath) {
+  const auto message = [](const std::string& text) {
+    const nlohmann::json root = nlohmann::json::parse(text);
+    try {
+      parse_glazing(JsonNode(root, "scene.json", "/").at("g"));
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(message(R"({"g": {"visible_transmittance": 0.95}})"),
+            "scene.json:/g/visible_transmittance: uncoated glass of 1 pane transmits more than 0 "
+            "and at most 0.918318 at normal incidence, got 0.95");
+  EXPECT_EQ(message(R"({"g": {"visible_transmittance": 0, "panes": 2}})"),
+            "scene.json:/g/visible_transmittance: uncoated glass of 2 panes transmits more than 0 "
+            "and at most 0.848972 at normal incidence, got 0");
+  EXPECT_NE(message(R"({"g": {"visible_transmittance": 0.7, "panes": 4}})").find("/g/panes"),
+            std::string::npos);
+  EXPECT_EQ(message(R"({"g": {"visible_transmittance": 0.7, "panes": 2, "diffusing": true}})"),
+            "accepted");
 }
 
 }  // namespace
