@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 #include <stdexcept>
 
@@ -299,6 +300,45 @@ Site parse_site(const JsonNode& node) {
   if (const auto e = node.find("elevation_m")) site.elevation_m = number_in(*e, -500, 9000);
   if (const auto n = node.find("north_deg")) site.north_deg = number_in(*n, -360, 360);
   return site;
+}
+
+namespace {
+
+nlohmann::json sun_json(const SunSpec& sun) {
+  if (sun.placement == SunPlacement::kAngles) {
+    return {{"azimuth_deg", sun.azimuth_deg}, {"altitude_deg", sun.altitude_deg}};
+  }
+  const CivilDateTime& t = sun.local_time;
+  char text[40];
+  std::snprintf(text, sizeof text, "%04d-%02d-%02dT%02d:%02d", t.year, t.month, t.day, t.hour,
+                t.minute);
+  std::string datetime = text;
+  if (t.second != 0) {
+    std::snprintf(text, sizeof text, ":%06.3f", t.second);
+    datetime += text;
+  }
+  nlohmann::json out = {{"datetime", datetime}};
+  if (!sun.place_from_site) {
+    out["latitude"] = sun.latitude_deg;
+    out["longitude"] = sun.longitude_deg;
+    out["utc_offset"] = sun.utc_offset_hours;
+  }
+  return out;
+}
+
+}  // namespace
+
+nlohmann::json perez_sky_json(const EnvironmentSpec& sky) {
+  if (sky.type != EnvironmentType::kPerezSky || sky.sun.placement == SunPlacement::kNone) {
+    throw std::logic_error("perez_sky_json: not a Perez sky with a sun");
+  }
+  nlohmann::json out = {{"type", "perez"},
+                        {"direct_normal_irradiance", sky.direct_normal_irradiance},
+                        {"diffuse_horizontal_irradiance", sky.diffuse_horizontal_irradiance},
+                        {"ground_albedo", sky.ground_albedo},
+                        {"sun", sun_json(sky.sun)}};
+  if (sky.dew_point_c) out["dew_point_c"] = *sky.dew_point_c;
+  return out;
 }
 
 void apply_site(EnvironmentSpec& spec, const Site& site) {

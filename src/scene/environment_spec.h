@@ -166,6 +166,12 @@ Site parse_site(const JsonNode& node);
 // site's elevation and north.
 void apply_site(EnvironmentSpec& spec, const Site& site);
 
+// The JSON object of a Perez sky spec, in the form parse_environment reads back into the same
+// sky (its site-given elevation and north come from the document it is put in): how the studio
+// receives each hour of a day from weather data as a lighting state's environment. Pinned by
+// EnvironmentSpec.PerezSkyJsonReadsBackAsTheSameSky.
+nlohmann::json perez_sky_json(const EnvironmentSpec& sky);
+
 // True for the CIE standard sky types whose luminance distribution depends on the sun's
 // position (an indicatrix with c != 0 or e != 0): 2, 4, 6..15.
 bool sky_type_needs_sun(int sky_type);

@@ -1,8 +1,11 @@
 #include "serve/studio_messages.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 
 #include "common/input_error.h"
+#include "light/environment.h"
 #include "scene/json_node.h"
 
 namespace relight {
@@ -14,6 +17,27 @@ nlohmann::json vec3_json(Vec3 v) {
 }
 nlohmann::json rgb_json(Rgb c) {
   return {c.r, c.g, c.b};
+}
+
+// "MM-DD": the day of the weather file to scrub; its records in hour order.
+WeatherDayRequest weather_day_request(const JsonNode& weather, const JsonNode& date) {
+  WeatherDayRequest r;
+  r.date = date.string();
+  int month = 0, day = 0;
+  char tail = 0;
+  if (std::sscanf(r.date.c_str(), "%2d-%2d%c", &month, &day, &tail) != 2 || r.date.size() != 5 ||
+      month < 1 || month > 12 || day < 1 || day > days_in_month(2000, month)) {
+    date.fail("expected a day of the year \"MM-DD\", got \"" + r.date + "\"");
+  }
+  WeatherFile file = parse_epw(weather.string(), weather.where());
+  r.location = file.location;
+  for (WeatherRecord& record : file.records) {
+    if (record.month == month && record.day == day) r.records.push_back(record);
+  }
+  if (r.records.empty()) date.fail("the weather file has no records on " + r.date);
+  std::stable_sort(r.records.begin(), r.records.end(),
+                   [](const WeatherRecord& a, const WeatherRecord& b) { return a.hour < b.hour; });
+  return r;
 }
 
 std::optional<std::uint32_t> read_seq(const JsonNode& root) {
@@ -102,6 +126,9 @@ ClientMessage parse_client_message(const std::string& text, const Scene& scene,
       r.period = *period;
     }
     m.request = std::move(r);
+  } else if (type == "weather_day") {
+    root.expect_keys({"type", "seq", "weather", "date"});
+    m.request = weather_day_request(root.at("weather"), root.at("date"));
   } else if (type == "upload") {
     root.expect_keys({"type", "seq", "name", "text"});
     m.request = UploadRequest{root.at("name").string(), root.at("text").string()};
@@ -115,8 +142,8 @@ ClientMessage parse_client_message(const std::string& text, const Scene& scene,
     m.request = std::move(r);
   } else {
     root.at("type").fail("unknown message type \"" + type +
-                         "\" (expected state, pick, distribution, ping, annual, optimize, view, "
-                         "upload or export_scene)");
+                         "\" (expected state, pick, distribution, ping, annual, weather_day, "
+                         "optimize, view, upload or export_scene)");
   }
   return m;
 }
@@ -128,6 +155,33 @@ nlohmann::json annual_progress_message(std::optional<std::uint32_t> seq, std::si
           {"stage", stage},
           {"done", done},
           {"total", total}};
+}
+
+nlohmann::json weather_day_message(std::optional<std::uint32_t> seq, const WeatherDayRequest& r) {
+  nlohmann::json hours = nlohmann::json::array();
+  for (const WeatherRecord& record : r.records) {
+    // The JSON carries no north: the document it is put in turns it by its site.
+    const EnvironmentSpec sky = record_sky(r.location, record, 0);
+    const double altitude = degrees(std::asin(std::clamp(sun_direction(sky.sun).y, -1.0, 1.0)));
+    char time[16];
+    std::snprintf(time, sizeof time, "%02d:30", record.hour - 1);
+    hours.push_back({{"hour", record.hour},
+                     {"time", time},
+                     {"sun_altitude_deg", altitude},
+                     {"direct_normal_irradiance", record.direct_normal_irradiance},
+                     {"diffuse_horizontal_irradiance", record.diffuse_horizontal_irradiance},
+                     {"environment", perez_sky_json(sky)}});
+  }
+  const WeatherLocation& at = r.location;
+  return {{"type", "weather_day"},
+          {"seq", seq_json(seq)},
+          {"weather",
+           {{"city", at.city},
+            {"latitude", at.latitude_deg},
+            {"longitude", at.longitude_deg},
+            {"time_zone", at.time_zone_hours}}},
+          {"date", r.date},
+          {"hours", std::move(hours)}};
 }
 
 nlohmann::json annual_message(std::optional<std::uint32_t> seq, const Scene& scene,

@@ -63,6 +63,14 @@ struct AnnualRequest {
   std::string occupied = "08:00-18:00";  // as sent, for the reply
 };
 
+// The hours of one day of a weather file, for the studio to scrub (`weather_day`): the file's
+// place and the day's records in hour order, chosen and checked here.
+struct WeatherDayRequest {
+  WeatherLocation location;
+  std::string date;  // "MM-DD", as sent
+  std::vector<WeatherRecord> records;
+};
+
 // Inverse design (`relight optimize`) from the state shown now: the targets parsed and checked
 // here, and whether the windows' daylight is kept.
 struct OptimizeRequest {
@@ -76,7 +84,7 @@ inline constexpr std::size_t kMaxClientMessageBytes = std::size_t{8} << 20;
 struct ClientMessage {
   std::optional<std::uint32_t> seq;
   std::variant<StateRequest, PickRequest, DistributionRequest, PingRequest, AnnualRequest,
-               OptimizeRequest, ViewRequest, UploadRequest, ExportSceneRequest>
+               WeatherDayRequest, OptimizeRequest, ViewRequest, UploadRequest, ExportSceneRequest>
       request;
 };
 
@@ -101,6 +109,11 @@ nlohmann::json annual_progress_message(std::optional<std::uint32_t> seq, std::si
                                        std::size_t total, const char* stage);
 // Its result: the weather file's place, the hours, and per sensor set the metrics of `relight
 // annual` with one array per metric over the set's points.
+// Each hour of the day as the Perez sky `relight annual` lights the windows with (record_sky),
+// in the lighting-state form a portal's or the scene's environment takes, with the sun's
+// altitude at the hour's evaluation time (h − 30 min).
+nlohmann::json weather_day_message(std::optional<std::uint32_t> seq, const WeatherDayRequest& r);
+
 nlohmann::json annual_message(std::optional<std::uint32_t> seq, const Scene& scene,
                               const WeatherFile& weather, const std::string& occupied,
                               const AnnualHours& hours, const AnnualDaylight& year, double seconds);

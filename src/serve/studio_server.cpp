@@ -491,6 +491,12 @@ struct StudioServer::Impl {
     });
   }
 
+  // One day of a weather file as each hour's sky, for the client to scrub: answered at once
+  // (the skies are parsed, not solved; each hour the client shows is an ordinary state).
+  void handle(ConnectionId id, std::optional<std::uint32_t> seq, const WeatherDayRequest& r) {
+    send_json(id, weather_day_message(seq, r));
+  }
+
   // The studio's annual panel: `relight annual` over every sensor set with the state shown now,
   // daylight alone (luminaires and emitters off); progress at most ten times a second.
   void run_annual(ConnectionId id, std::optional<std::uint32_t> seq, const AnnualRequest& r,

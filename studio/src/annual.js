@@ -20,11 +20,13 @@ const MAPS = [
 const percent = (v) => `${(100 * v).toFixed(1)}%`;
 
 export class AnnualPanel {
-  // send(message) → seq or null; sensors: the Sensors of the view (its points are coloured).
-  constructor(panel, send, sensors) {
+  // send(message) → seq or null; sensors: the Sensors of the view (its points are coloured);
+  // projectWeather() → the weather File chosen elsewhere (the Site panel's day), or null.
+  constructor(panel, send, sensors, projectWeather) {
     this.panel = panel;
     this.send = send;
     this.sensors = sensors;
+    this.projectWeather = projectWeather;
     this.seq = null; // of the run in progress
     this.result = null;
     this._build();
@@ -38,7 +40,7 @@ export class AnnualPanel {
     this.resultBox.innerHTML = '';
     this.mapSelect.value = '';
     this.sensors.setMetric(null);
-    this._updateButton();
+    this.updateRun();
   }
 
   _build() {
@@ -49,7 +51,7 @@ export class AnnualPanel {
       title: 'An EnergyPlus weather file (.epw): its location, time zone and hourly irradiance',
       dataset: { testid: 'annual-weather' },
     });
-    this.file.addEventListener('change', () => this._updateButton());
+    this.file.addEventListener('change', () => this.updateRun());
     this.occupied = el('input', {
       type: 'text',
       value: '08:00-18:00',
@@ -79,15 +81,20 @@ export class AnnualPanel {
       row('Map', this.mapSelect),
       this.legend,
     );
-    this._updateButton();
+    this.updateRun();
   }
 
-  _updateButton() {
-    this.runButton.disabled = this.seq !== null || !this.file.files?.length || this.hasWindows === false;
+  // The weather file chosen here, else the project's (chosen in the Site panel), or null.
+  weatherFile() {
+    return this.file.files?.[0] ?? null;
+  }
+
+  updateRun() {
+    this.runButton.disabled = this.seq !== null || !(this.weatherFile() ?? this.projectWeather()) || this.hasWindows === false;
   }
 
   async run() {
-    const f = this.file.files?.[0];
+    const f = this.weatherFile() ?? this.projectWeather();
     if (!f) return;
     const weather = await f.text();
     const seq = this.send({ type: 'annual', weather, occupied: this.occupied.value.trim() });
@@ -98,7 +105,7 @@ export class AnnualPanel {
     this.seq = seq;
     this.progress.removeAttribute('value'); // indeterminate while the server prepares
     this.progressText.textContent = 'preparing…';
-    this._updateButton();
+    this.updateRun();
   }
 
   // annual_progress from the server.
@@ -117,7 +124,7 @@ export class AnnualPanel {
     this.seq = null;
     this.progress.value = 0;
     this.progressText.textContent = 'failed';
-    this._updateButton();
+    this.updateRun();
     return true;
   }
 
@@ -129,7 +136,7 @@ export class AnnualPanel {
     this.progress.max = 1;
     this.progress.value = 1;
     this.progressText.textContent = `${msg.hours} hours in ${msg.seconds.toFixed(1)} s`;
-    this._updateButton();
+    this.updateRun();
     const w = msg.weather;
     const box = this.resultBox;
     box.innerHTML = '';

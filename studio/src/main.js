@@ -28,6 +28,7 @@ import { notice } from './ui.js';
 import { ViewPanel } from './view_panel.js';
 import { Viewer } from './viewer.js';
 import { SitePanel } from './site.js';
+import { WeatherDay } from './weather_day.js';
 import { WindowsPanel } from './windows.js';
 
 const $ = (id) => document.getElementById(id);
@@ -118,25 +119,21 @@ const luminairePanel = new LuminairePanel($('luminaires'), store, distributions,
 });
 const editor = new DistributionEditor($('distribution'), store, distributions, requestDistribution);
 const sitePanel = new SitePanel($('site'), store);
+const weatherDay = new WeatherDay(
+  $('weather-day'),
+  store,
+  sendMessage,
+  { projectWeather: () => annualPanel.weatherFile(), fileChosen: () => annualPanel.updateRun() },
+);
 const windowsPanel = new WindowsPanel($('windows'), store);
 const emitterPanel = new EmitterPanel($('emitters'), store);
 const objectPanel = new ObjectPanel($('objects'), store, objectsView);
 objectsView.onSelect = (i) => objectPanel.setSelected(i);
 const materialPanel = new MaterialPanel($('material'), store);
-const annualPanel = new AnnualPanel(
-  $('annual'),
-  (message) => {
-    const seq = connection.nextSeq();
-    return connection.send({ ...message, seq }) ? seq : null;
-  },
-  sensors,
-);
+const annualPanel = new AnnualPanel($('annual'), sendMessage, sensors, () => weatherDay.weatherFile());
 const optimizePanel = new OptimizePanel(
   $('optimize'),
-  (message) => {
-    const seq = connection.nextSeq();
-    return connection.send({ ...message, seq }) ? seq : null;
-  },
+  sendMessage,
   // The result becomes the lighting state as a loaded state file does (sent, panels refreshed).
   { applyState: (doc) => store.replace(doc), stateShown: () => stateShown() },
 );
@@ -205,11 +202,18 @@ function onText(msg) {
     case 'annual':
       api.annual = { ...msg, progress_messages: api.annualProgress };
       return annualPanel.onResult(msg);
+    case 'weather_day':
+      api.weatherDay = msg;
+      return weatherDay.onDay(msg);
     case 'optimized':
       api.optimized = msg;
       return optimizePanel.onResult(msg);
     case 'error': {
       api.errors.push(msg.message);
+      if (weatherDay.onError(msg)) {
+        notice(`Weather: ${msg.message}`, 'error');
+        return;
+      }
       if (annualPanel.onError(msg)) {
         notice(`Annual: ${msg.message}`, 'error');
         return;
@@ -253,6 +257,7 @@ function onHello(hello) {
   sensors.setScene(hello);
   luminairePanel.setScene(hello);
   sitePanel.setScene(hello);
+  weatherDay.setScene(hello);
   windowsPanel.setScene(hello);
   emitterMarkers.setScene(hello);
   emitterPanel.setScene(hello);

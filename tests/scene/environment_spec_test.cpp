@@ -116,6 +116,36 @@ TEST(EnvironmentSpec, PerezSkyFromAWeatherRecord) {
   EXPECT_NE(s, no_dew);
 }
 
+TEST(EnvironmentSpec, PerezSkyJsonReadsBackAsTheSameSky) {
+  const std::string place = R"({"env": {"type": "perez", "direct_normal_irradiance": 640,
+      "diffuse_horizontal_irradiance": 120.5, "dew_point_c": -3.5, "ground_albedo": 0.31,
+      "sun": {"latitude": 41.98, "longitude": -87.92, "utc_offset": -6,
+              "datetime": "1988-07-21T13:30:15.5"}}})";
+  const std::string angles = R"({"env": {"type": "perez", "direct_normal_irradiance": 0,
+      "diffuse_horizontal_irradiance": 80, "sun": {"azimuth_deg": 120, "altitude_deg": 20}}})";
+  for (const std::string& text : {place, angles}) {
+    EnvironmentSpec sky = parse(text);
+    const json back = {{"env", perez_sky_json(sky)}};
+    EnvironmentSpec again = parse(back.dump());
+    sky.where = again.where = "";
+    EXPECT_EQ(again, sky) << back.dump();
+  }
+  const Site site{48.14, 11.58, 1, 520, 30};
+  const json doc = json::parse(R"({"env": {"type": "perez", "direct_normal_irradiance": 500,
+      "diffuse_horizontal_irradiance": 90, "sun": {"datetime": "2026-06-21T12:00"}}})");
+  const EnvironmentSpec at_site =
+      parse_environment(JsonNode(doc, "s.json", "/").at("env"), ".", true, &site);
+  const json back = {{"env", perez_sky_json(at_site)}};
+  EXPECT_FALSE(back["env"]["sun"].contains("latitude")) << back.dump();
+  EnvironmentSpec again =
+      parse_environment(JsonNode(back, "s.json", "/").at("env"), ".", true, &site);
+  again.where = at_site.where;
+  EXPECT_EQ(again, at_site);
+  EnvironmentSpec cie = at_site;
+  cie.type = EnvironmentType::kCieSky;
+  EXPECT_THROW(perez_sky_json(cie), std::logic_error);
+}
+
 TEST(EnvironmentSpec, ErrorsNameTheJsonPath) {
   struct Case {
     const char* text;

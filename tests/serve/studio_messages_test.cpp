@@ -8,6 +8,7 @@
 #include "common/input_error.h"
 #include "runtime/lighting_state.h"
 #include "serve/studio_messages.h"
+#include "support/synthetic_epw.h"
 #include "tiny_studio_room.h"
 
 namespace relight {
@@ -81,6 +82,50 @@ TEST(StudioMessages, MalformedMessagesNameWhereAndKeepTheirSeq) {
             std::string::npos);
   EXPECT_NE(refusal(R"({"type":"state","state":[]})").first.find("/state"), std::string::npos);
   EXPECT_NE(refusal(R"({"type":"ping","extra":1})").first.find("extra"), std::string::npos);
+}
+
+// A day of a weather file: its 24 records in hour order, each hour the same Perez sky as
+// `relight annual` lights the windows with (record_sky), in the state form that reads back
+// into it, with the sun's altitude at h − 30 min (Munich, 22 June: about 65° at 12:30 CET,
+// below the horizon at 00:30); a bad date or record is refused with its path.
+TEST(StudioMessages, WeatherDayGivesEachHourTheAnnualSky) {
+  const std::string epw = testing::synthetic_epw();
+  const nlohmann::json message = {
+      {"type", "weather_day"}, {"seq", 9}, {"weather", epw}, {"date", "06-22"}};
+  const ClientMessage m = parse(message.dump());
+  ASSERT_TRUE(std::holds_alternative<WeatherDayRequest>(m.request));
+  const WeatherDayRequest& r = std::get<WeatherDayRequest>(m.request);
+  ASSERT_EQ(r.records.size(), 24u);
+  for (std::size_t h = 0; h < 24; ++h) EXPECT_EQ(r.records[h].hour, static_cast<int>(h) + 1);
+  const nlohmann::json reply = weather_day_message(9, r);
+  EXPECT_EQ(reply["seq"], 9);
+  EXPECT_EQ(reply["date"], "06-22");
+  ASSERT_EQ(reply["hours"].size(), 24u);
+  const nlohmann::json& noon = reply["hours"][12];
+  EXPECT_EQ(noon["hour"], 13);
+  EXPECT_EQ(noon["time"], "12:30");
+  EXPECT_NEAR(noon["sun_altitude_deg"].get<double>(), 65, 1.5);
+  EXPECT_LT(reply["hours"][0]["sun_altitude_deg"].get<double>(), 0);
+  EXPECT_EQ(noon["direct_normal_irradiance"], r.records[12].direct_normal_irradiance);
+  const nlohmann::json doc = {{"env", noon["environment"]}};
+  EnvironmentSpec back = parse_environment(JsonNode(doc, "reply", "/").at("env"), ".");
+  EnvironmentSpec sky = record_sky(r.location, r.records[12], 0);
+  back.where = sky.where = "";
+  EXPECT_EQ(back, sky);
+
+  const auto refused = [&](const std::string& date) {
+    return refusal(nlohmann::json{{"type", "weather_day"}, {"weather", epw}, {"date", date}}.dump())
+        .first;
+  };
+  EXPECT_NE(refused("13-01").find("message:/date: expected a day of the year"), std::string::npos);
+  EXPECT_NE(refused("02-30").find("message:/date"), std::string::npos);
+  EXPECT_NE(refused("6-22").find("message:/date"), std::string::npos);
+  std::string bad = epw;
+  bad.replace(bad.find("\n", bad.find("DATA PERIODS")) + 1, 4, "year");
+  EXPECT_NE(
+      refusal(nlohmann::json{{"type", "weather_day"}, {"weather", bad}, {"date", "06-22"}}.dump())
+          .first.find("message:/weather:9"),
+      std::string::npos);
 }
 
 // A client's eye for glossy shading (RLGV): three finite numbers, else refused at /eye.

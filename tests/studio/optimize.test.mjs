@@ -20,7 +20,7 @@ import path from 'node:path';
 // JSON with sorted keys (the server re-serialises documents; compare by content): the studio's own.
 import { canonical } from '../../studio/src/state.js';
 import * as browser from './browser_support.mjs';
-import { connect, relightBinary, startServer, stopServer, studioScene } from './studio_support.mjs';
+import { connect, probeSensors, relightBinary, startServer, stopServer, studioScene } from './studio_support.mjs';
 
 let server, studio, page, dir, hello, observer;
 
@@ -69,12 +69,7 @@ function cliOptimize(targets, start, { daylight = false } = {}) {
 
 // `relight probe` with a state file: the lux column of its CSV, sensor points in scene order.
 function cliProbe(stateFile) {
-  const csv = path.join(dir, `probe-${++runs}.csv`);
-  const r = spawnSync(relightBinary, ['probe', studioScene, '--state', stateFile, '-o', csv], { encoding: 'utf8' });
-  assert.equal(r.status, 0, r.stderr);
-  const [header, ...rows] = fs.readFileSync(csv, 'utf8').trim().split('\n');
-  const lux = header.split(',').indexOf('lux');
-  return rows.map((l) => Number(l.split(',')[lux]));
+  return probeSensors(studioScene, stateFile, path.join(dir, `probe-${++runs}.csv`));
 }
 
 // Sets the studio's lighting state and waits until its frame is on screen.

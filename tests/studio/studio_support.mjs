@@ -2,7 +2,7 @@
 // WebSocket (the `ws` package from studio/node_modules), decode its binary messages
 // (docs/studio-protocol.md) and read the server's memory.
 import assert from 'node:assert/strict';
-import { spawn } from 'node:child_process';
+import { spawn, spawnSync } from 'node:child_process';
 import { createRequire } from 'node:module';
 import fs from 'node:fs';
 import path from 'node:path';
@@ -184,6 +184,15 @@ export function decodeObjects(buf) {
   }
   if (at !== buf.length) throw new Error(`RLOB: ${buf.length} bytes, the layout gives ${at}`);
   return { version, objects };
+}
+
+// The sensors' lux that `relight probe RLT --state STATE_FILE` writes (into `csv`).
+export function probeSensors(rlt, stateFile, csv) {
+  const r = spawnSync(relightBinary, ['probe', rlt, '--state', stateFile, '-o', csv], { encoding: 'utf8' });
+  if (r.status !== 0) throw new Error(`relight probe exited ${r.status}: ${r.stderr}`);
+  const [header, ...rows] = fs.readFileSync(csv, 'utf8').trim().split('\n');
+  const lux = header.split(',').indexOf('lux');
+  return rows.map((l) => Number(l.split(',')[lux]));
 }
 
 export const mean = (values) => values.reduce((a, b) => a + b, 0) / values.length;
