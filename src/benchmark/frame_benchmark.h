@@ -44,6 +44,7 @@ struct BenchOptions {
   bool aim = false;
   bool layout = false;   // move the first luminaire and add one (benchmark/layout_benchmark.h)
   std::string optimize;  // TARGETS.json: time `relight optimize` instead
+  bool edits = false;    // every kind of edit, shown as the studio shows it (edits_benchmark.h)
 };
 
 // Times the frames `options` ask for and returns the one JSON line `relight bench` prints

@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "benchmark/edits_benchmark.h"
 #include "benchmark/frame_benchmark.h"
 #include "cli/commands.h"
 
@@ -34,9 +35,17 @@ void add_bench_command(CLI::App& app, Action& action) {
                 "move the first luminaire 20 cm and add one each frame (first and converged)");
   cmd->add_option("--optimize", args->optimize,
                   "time relight optimize with these targets (TARGETS.json) against a relight");
+  cmd->add_flag("--edits", args->edits,
+                "time every kind of edit the scene allows, first and converged frames: one "
+                "JSON line per edit, then a summary");
   cmd->callback([args, &action] {
     action = [args] {
-      std::cout << run_bench(*args).dump() << "\n";
+      if (args->edits) {
+        for (const nlohmann::ordered_json& line : run_edits_bench(*args))
+          std::cout << line.dump() << "\n";
+      } else {
+        std::cout << run_bench(*args).dump() << "\n";
+      }
       return 0;
     };
   });

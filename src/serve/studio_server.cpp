@@ -18,6 +18,7 @@
 #include "render/relit_scene_image.h"
 #include "runtime/annual_daylight.h"
 #include "runtime/luminaire_profile.h"
+#include "runtime/progressive_frames.h"
 #include "runtime/relit_scene.h"
 #include "runtime/scene_export.h"
 #include "scene/json_node.h"
@@ -142,8 +143,8 @@ struct StudioServer::Impl {
   }
 
   // Relights with `state` (the worker's relighter) and makes the frame.
-  std::shared_ptr<const FrameValues> relight_values(const LightingState& state) {
-    relit->apply(state);
+  // The per-vertex values of the light `relit` holds.
+  std::shared_ptr<const FrameValues> frame_values() const {
     auto values = std::make_shared<FrameValues>();
     compute_frame_values(transfer(), vertex_portal, relit->irradiance(), relit->window_radiance(),
                          relit->vertex_albedo(), *values);
@@ -183,29 +184,18 @@ struct StudioServer::Impl {
         continue;
       }
       try {
-        // A first frame never waits for a bounce: a material edit shows its light reflected
-        // once (runtime/relighter.h set_material_bounces), a luminaire moved or added its exact
-        // direct light with the nearest stored luminaire's interreflection (set_layout_bounce).
-        // When that frame is not the converged light, the converged frame follows; the state
-        // messages say which is which.
-        relit->relighter().set_layout_bounce(false);
-        bool converged = false;
-        if (relit->state().materials != p.state.materials) {
-          relit->set_material_bounces(0);
-          show(p, shown_document, frame_number, false);
-          relit->set_material_bounces(-1);
-        } else {
-          converged = show(p, shown_document, frame_number, true);
-        }
-        relit->relighter().set_layout_bounce(true);
-        if (!converged) show(p, shown_document, frame_number, true);
+        // The first frame, then the converged one when they differ (runtime/
+        // progressive_frames.h); the state messages say which is which.
+        auto start = std::chrono::steady_clock::now();
+        show_progressively(*relit, p.state, [&](bool converged) {
+          show(p, shown_document, frame_number, converged, start);
+          start = std::chrono::steady_clock::now();
+        });
         last_good = std::move(p.state);
         std::lock_guard lock(mutex);
         for (const auto& [id, eye] : eyes) views_due.insert(id);
       } catch (const std::exception& e) {  // e.g. a map file that cannot be read
         send_json(p.client, error_message(p.seq, e.what()));
-        relit->set_material_bounces(-1);
-        relit->relighter().set_layout_bounce(true);
         try {
           relit->apply(last_good);
         } catch (const std::exception&) {  // it lit before: cannot fail again
@@ -214,15 +204,12 @@ struct StudioServer::Impl {
     }
   }
 
-  // Relights with a pending state and sends every client the state (with "final": false for
-  // a first, approximate frame: `final` false, or a moved or added luminaire's bounce left
-  // out), the frame and the profiles of distributions that changed. Returns whether the
-  // frame was final. Everything slow happens outside the mutex.
-  bool show(const PendingState& p, nlohmann::json& shown_document, std::uint32_t& frame_number,
-            bool final) {
-    const auto start = std::chrono::steady_clock::now();
-    const std::shared_ptr<const FrameValues> values = relight_values(p.state);
-    final = final && relit->relighter().layout_converged();
+  // Sends every client the pending state just relit (with "final": false for a first,
+  // approximate frame), its frame, timed from `start`, and the profiles of distributions that
+  // changed. Everything slow happens outside the mutex.
+  void show(const PendingState& p, nlohmann::json& shown_document, std::uint32_t& frame_number,
+            bool final, std::chrono::steady_clock::time_point start) {
+    const std::shared_ptr<const FrameValues> values = frame_values();
     const std::chrono::duration<float, std::milli> ms = std::chrono::steady_clock::now() - start;
     const std::uint32_t number = frame_number + 1;
     const auto frame =
@@ -263,7 +250,6 @@ struct StudioServer::Impl {
       transport->send(c, *frame, true, true);
       for (const std::string& m : profiles) transport->send(c, m, false, true);
     }
-    return final;
   }
 
   // Sends client `id` its glossy vertices' luminance toward `eye` under the state shown
@@ -598,7 +584,8 @@ StudioServer::StudioServer(const fs::path& rlt, const StudioOptions& options)
   s.picker = &s.relit->mesh_tracer();  // built here: picks run on the network thread
   const LightingState initial = default_lighting_state(t.scene);
   const auto start = std::chrono::steady_clock::now();
-  std::shared_ptr<const FrameValues> values = s.relight_values(initial);
+  s.relit->apply(initial);
+  std::shared_ptr<const FrameValues> values = s.frame_values();
   const std::chrono::duration<float, std::milli> ms = std::chrono::steady_clock::now() - start;
   s.shown = {
       std::make_shared<const std::string>(encode_frame(1, std::nullopt, ms.count(), *values)),

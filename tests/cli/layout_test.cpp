@@ -5,9 +5,13 @@
 // worst: the fresh one's interreflection is the SH series of each distribution, the run time's the
 // distribution itself) and with `relight reference --state` (2 % mean, 8 % worst at 4096 paths
 // per sensor), which places them as the state does.
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
+#include <map>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -267,6 +271,54 @@ TEST(Layout, BenchLayoutPrintsFirstAndConvergedFrames) {
   EXPECT_GT(j["receivers"].get<int>(), 0);
   expect_input_error(run_relight("bench '" + room.rlt.string() + "' --layout --aim --frames 1"),
                      room.rlt.string() + ": --layout moves and adds luminaires alone");
+}
+
+// `relight bench --edits`: one line per edit the room allows (two luminaires of different
+// distributions, no window, object or emitter), first and converged frames as the studio shows
+// them: a dimmer's first frame is its converged one; a moved luminaire's and a repainted wall's
+// first frames differ from the converged ones by less than the 10% a first frame may.
+TEST(Layout, BenchEditsTimesEveryEditTheRoomAllows) {
+  LayoutRoom room;
+  const auto r = run_relight("bench '" + room.rlt.string() + "' --edits --frames 2");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::map<std::string, nlohmann::json> edits;
+  nlohmann::json summary;
+  std::istringstream lines(r.out);
+  for (std::string line; std::getline(lines, line);) {
+    const nlohmann::json j = nlohmann::json::parse(line);
+    if (j.contains("edit")) {
+      edits[j["edit"]] = j;
+    } else {
+      summary = j;
+    }
+  }
+  const std::vector<std::string> expected = {"aim",
+                                             "colour_temperature",
+                                             "dimmer",
+                                             "distribution_swap",
+                                             "luminaire_move",
+                                             "material_albedo",
+                                             "material_roughness"};
+  std::vector<std::string> names;
+  for (const auto& [name, j] : edits) names.push_back(name);
+  EXPECT_EQ(names, expected) << r.out;
+  double worst_first = 0;
+  for (const auto& [name, j] : edits) {
+    EXPECT_EQ(j["frames"], 2) << name;
+    EXPECT_GT(j["receivers"].get<int>(), 0) << name;
+    EXPECT_GT(j["first_ms"].get<double>(), 0) << name;
+    EXPECT_GE(j["converged_ms"].get<double>(), j["first_ms"].get<double>()) << name;
+    EXPECT_LT(j["first_error"].get<double>(), 0.1) << name;
+    worst_first = std::max(worst_first, j["first_ms"].get<double>());
+  }
+  EXPECT_EQ(edits["dimmer"]["first_error"], 0.0);
+  EXPECT_EQ(edits["dimmer"]["first_ms"], edits["dimmer"]["converged_ms"]);
+  EXPECT_GT(edits["luminaire_move"]["first_error"].get<double>(), 0);
+  EXPECT_GT(edits["material_albedo"]["first_error"].get<double>(), 0);
+  EXPECT_EQ(summary["edits"], expected.size());
+  EXPECT_EQ(summary["worst_first_ms"], worst_first);
+  expect_input_error(run_relight("bench '" + room.rlt.string() + "' --edits --aim --frames 1"),
+                     room.rlt.string() + ": --edits times every kind of edit itself");
 }
 
 }  // namespace
