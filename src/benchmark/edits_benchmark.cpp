@@ -27,9 +27,10 @@ struct Edit {
   std::function<void(LightingState&, int)> step;
 };
 
-bool has_sun_by_time(const EnvironmentSpec& e) {
+// A sky with a sun, by place and time (moved a minute a frame) or by angles (a quarter degree).
+bool has_sun(const EnvironmentSpec& e) {
   return (e.type == EnvironmentType::kCieSky || e.type == EnvironmentType::kPerezSky) &&
-         e.sun.placement == SunPlacement::kPlaceAndTime;
+         e.sun.placement != SunPlacement::kNone;
 }
 
 // Every environment of the state: the portals' and the top-level one.
@@ -108,10 +109,10 @@ std::vector<Edit> edits_of(const RelitScene& relit, const LightingState& home) {
          LuminaireState& l = s.luminaires.front();
          l.position = l.position + step_toward_middle(bounds, l.position);
        }},
-      {"sky_time", [](const LightingState& s) { return any_environment(s, has_sun_by_time); },
+      {"sky_time", [](const LightingState& s) { return any_environment(s, has_sun); },
        [](LightingState& s, int i) {
          for_each_environment(s, [&](EnvironmentSpec& e) {
-           if (has_sun_by_time(e)) advance_sky(e, i);
+           if (has_sun(e)) advance_sky(e, i);
          });
        }},
       {"sky_type",

@@ -2,8 +2,8 @@
 // `frames` times along a path (benchmark/edit_paths.h), shown as the studio shows it
 // (runtime/progressive_frames.h): a first frame, then the converged one when they differ.
 // Edits: dimmer, aim, colour_temperature, distribution_swap (when two luminaires differ),
-// luminaire_move, sky_time (a sun by place and time, a minute a frame), sky_type (a CIE sky),
-// environment_rotation (a map), object_dragged, objects_moving, emitter_moved,
+// luminaire_move, sky_time (a sun by place and time a minute a frame, by angles 0.25°), sky_type (a
+// CIE sky), environment_rotation (a map), object_dragged, objects_moving, emitter_moved,
 // material_albedo, material_roughness. Each starts from the scene's own state.
 #pragma once
 
