@@ -96,6 +96,7 @@ void run_reference(const Scene& scene_file, const ReferenceRequest& request) {
     const PinholeCamera pinhole = make_pinhole_camera(*camera, request.width, request.height);
     ReferenceStats stats;
     const ReferenceImages images = reference_render(pinhole, ref, settings, &stats);
+    warn_back_sides(*camera, images.back_side_pixels, images.luminance.pixels.size());
     print_rate("image", stats);
     for (const ImageOutput& out : request.images) {
       const bool lux =

@@ -40,6 +40,7 @@ int run_render(const RenderArgs& args) {
       t.bounds());
   const ShadedImages images =
       render_relit_scene(relit, camera, args.view.width, args.view.height, args.direct == "pixel");
+  warn_back_sides(camera, images.back_side_pixels, images.luminance.pixels.size());
   const bool lux = display.false_color && display.false_color->quantity == Quantity::kIlluminance;
   const DisplayReport report =
       write_image(args.view.output, lux ? images.illuminance : images.luminance, display);

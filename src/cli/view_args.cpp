@@ -1,5 +1,7 @@
 #include "cli/view_args.h"
 
+#include <cstdio>
+
 #include <CLI/CLI.hpp>
 
 #include "common/input_error.h"
@@ -45,6 +47,15 @@ Camera choose_camera(const Scene& scene, const std::optional<std::string>& name,
     return *c;
   }
   return scene.cameras.empty() ? default_camera(bounds) : scene.cameras.front();
+}
+
+void warn_back_sides(const Camera& camera, std::size_t back_side_pixels, std::size_t pixels) {
+  if (pixels == 0 || 2 * back_side_pixels <= pixels) return;
+  std::fprintf(stderr,
+               "warning: camera \"%s\": %.0f%% of the pixels see only the back of surfaces "
+               "(black): is the eye inside an object, or outside the room? (eye %g, %g, %g)\n",
+               camera.name.c_str(), 100.0 * static_cast<double>(back_side_pixels) / pixels,
+               camera.eye.x, camera.eye.y, camera.eye.z);
 }
 
 }  // namespace relight

@@ -2,6 +2,7 @@
 // and size, the output file and how a PNG displays physical values.
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string>
 
@@ -29,5 +30,8 @@ DisplayOptions display_options(const ViewArgs& args);
 // else one looking into `bounds`.
 Camera choose_camera(const Scene& scene, const std::optional<std::string>& name,
                      const Bounds& bounds);
+// Warns on stderr when most of an image's pixels see only the back of surfaces (black): the
+// eye is inside an object, or outside the room behind a wall.
+void warn_back_sides(const Camera& camera, std::size_t back_side_pixels, std::size_t pixels);
 
 }  // namespace relight

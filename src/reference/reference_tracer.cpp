@@ -130,14 +130,19 @@ struct SurfaceHit {
   std::int32_t mirror = -1;                 // its near-mirror plane, or −1
 };
 
-// The first front-facing opaque surface along the ray; false for misses and back faces.
-bool trace_surface(PathContext& ctx, const Ray& ray, SurfaceHit& out) {
+// The first front-facing opaque surface along the ray; false for misses and back faces (with
+// `back_side`, set when the ray met the back of a surface).
+bool trace_surface(PathContext& ctx, const Ray& ray, SurfaceHit& out, bool* back_side = nullptr) {
   const ReferenceScene& ref = ctx.ref;
   ++ctx.rays;
   const RayHit hit = ref.traced.opaque.intersect(ray);
+  if (back_side != nullptr) *back_side = false;
   if (!hit.hit()) return false;
   const Vec3 n = geometric_normal(ref.mesh, hit.triangle);
-  if (dot(n, ray.direction) >= 0) return false;  // back sides absorb
+  if (dot(n, ray.direction) >= 0) {  // back sides absorb
+    if (back_side != nullptr) *back_side = true;
+    return false;
+  }
   const std::int32_t glossy =
       hit.triangle < ref.triangle_glossy.size() ? ref.triangle_glossy[hit.triangle] : -1;
   // The base colour times the texture at the point, at full resolution (scene/surface_texture.h).
@@ -525,6 +530,7 @@ ReferenceImages reference_render(const PinholeCamera& camera, const ReferenceSce
   constexpr std::uint64_t kPixelStreams = std::uint64_t{1} << 40;
   const ExteriorView view{ref.mesh, ref.traced, ref.portals};
   std::atomic<std::uint64_t> rays{0};
+  std::atomic<std::size_t> back_side_pixels{0};
   Progress progress("reference image", static_cast<std::uint64_t>(h), settings.progress);
   tbb::parallel_for(tbb::blocked_range<int>(0, h), [&](const tbb::blocked_range<int>& rows) {
     for (int y = rows.begin(); y != rows.end(); ++y) {
@@ -532,12 +538,17 @@ ReferenceImages reference_render(const PinholeCamera& camera, const ReferenceSce
         const std::size_t index = static_cast<std::size_t>(y) * w + x;
         PathContext ctx = path_context(ref, settings, kPixelStreams + index);
         Rgb e_sum, l_sum;
-        int covered = 0, exterior = 0;
+        int covered = 0, exterior = 0, back_sides = 0;
         for (int s = 0; s < settings.spp; ++s) {
           const double jx = ctx.rng.next_double(), jy = ctx.rng.next_double();
           const Ray ray{camera.eye, normalize(camera.direction(x + jx, y + jy))};
           SurfaceHit hit;
-          if (!trace_surface(ctx, ray, hit)) {
+          bool back_side = false;
+          if (!trace_surface(ctx, ray, hit, &back_side)) {
+            if (back_side) {  // the back of a surface, nearer than any window: black
+              ++back_sides;
+              continue;
+            }
             // Looking out through a portal: the environment, sun disc included.
             const std::int32_t p = escape_portal(view, ray, ctx.rays);
             if (p == kNoPortal) {
@@ -577,8 +588,9 @@ ReferenceImages reference_render(const PinholeCamera& camera, const ReferenceSce
         // Pixels partly covering the background average over all samples (black there);
         // illuminance is that of the surfaces seen.
         out.luminance.pixels[index] =
-            covered + exterior == 0 ? Rgb{nan, nan, nan} : l_sum / settings.spp;
+            covered + exterior + back_sides == 0 ? Rgb{nan, nan, nan} : l_sum / settings.spp;
         out.illuminance.pixels[index] = covered == 0 ? Rgb{nan, nan, nan} : e_sum / covered;
+        if (back_sides == settings.spp) ++back_side_pixels;
         rays += ctx.rays;
       }
       progress.advance();
@@ -586,6 +598,7 @@ ReferenceImages reference_render(const PinholeCamera& camera, const ReferenceSce
   });
   progress.finish();
   if (stats) *stats = {rays.load(), progress.seconds()};
+  out.back_side_pixels = back_side_pixels.load();
   return out;
 }
 

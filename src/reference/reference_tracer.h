@@ -124,9 +124,10 @@ std::vector<Rgb> reference_sensor_illuminance(const Scene& scene, const Referenc
                                               ReferenceStats* stats = nullptr);
 
 struct ReferenceImages {
-  Image luminance;    // cd/m² per channel (the environment through portals); NaN where
-                      // neither a front surface nor the exterior is seen
+  Image luminance;    // cd/m² per channel (the environment through portals); black where only
+                      // the back of surfaces is seen, NaN where nothing is
   Image illuminance;  // lux per channel at the seen surface; NaN where none is seen
+  std::size_t back_side_pixels = 0;  // pixels every sample of which met the back of a surface
 };
 
 ReferenceImages reference_render(const PinholeCamera& camera, const ReferenceScene& ref,

@@ -1,12 +1,14 @@
 #include "render/vertex_shading.h"
-#include "material/lambert.h"
 
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+
+#include "material/lambert.h"
 
 namespace relight {
 
@@ -30,7 +32,10 @@ RaySample shade_hit(const VertexShadingInput& in, Vec3 origin, Vec3 dir, const R
   const Triangle& t = in.triangles[hit.triangle];
   const Vec3 a = in.positions[t[0]], b = in.positions[t[1]], c = in.positions[t[2]];
   const Vec3 face = cross(b - a, c - a);
-  if (dot(face, dir) >= 0) return out;  // back faces absorb: black
+  if (dot(face, dir) >= 0) {  // back faces absorb: black
+    out.back_side = true;
+    return out;
+  }
   const std::array<double, 3> bary{1 - hit.u - hit.v, hit.u, hit.v};
   Rgb e, albedo;
   for (std::size_t k = 0; k < 3; ++k) {
@@ -109,6 +114,7 @@ ShadedImages shade_vertices(const PinholeCamera& camera, const VertexShadingInpu
   const double nan = std::numeric_limits<double>::quiet_NaN();
   ShadedImages out{make_image(w, h), make_image(w, h)};
   const int spp = samples_per_axis * samples_per_axis;
+  std::atomic<std::size_t> back_side_pixels{0};
   if (!hits.empty() && hits.size() != static_cast<std::size_t>(w) * h * spp) {
     throw std::invalid_argument("shade_vertices: hits of other rays");
   }
@@ -116,7 +122,7 @@ ShadedImages shade_vertices(const PinholeCamera& camera, const VertexShadingInpu
     for (int y = rows.begin(); y != rows.end(); ++y) {
       for (int x = 0; x < w; ++x) {
         Rgb l_sum, e_sum;
-        int covered = 0, escaped = 0;
+        int covered = 0, escaped = 0, back_sides = 0;
         for (int s = 0; s < spp; ++s) {
           const Vec3 dir = primary_direction(camera, x, y, s, samples_per_axis);
           const RaySample sample =
@@ -125,17 +131,20 @@ ShadedImages shade_vertices(const PinholeCamera& camera, const VertexShadingInpu
                                        hits[(static_cast<std::size_t>(y) * w + x) * spp + s]);
           l_sum += sample.luminance;
           if (sample.background) ++escaped;
+          if (sample.back_side) ++back_sides;
           if (!sample.surface) continue;
           e_sum += sample.illuminance;
           ++covered;
         }
         Rgb& lum = out.luminance.at(x, y);
         Rgb& ill = out.illuminance.at(x, y);
-        lum = covered + escaped == 0 ? Rgb{nan, nan, nan} : l_sum / spp;
+        lum = covered + escaped + back_sides == 0 ? Rgb{nan, nan, nan} : l_sum / spp;
         ill = covered == 0 ? Rgb{nan, nan, nan} : e_sum / covered;
+        if (back_sides == spp) ++back_side_pixels;
       }
     }
   });
+  out.back_side_pixels = back_side_pixels.load();
   return out;
 }
 

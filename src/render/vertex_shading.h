@@ -50,6 +50,7 @@ struct VertexShadingInput {
 // hit without a background).
 struct RaySample {
   bool surface = false, background = false;
+  bool back_side = false;  // the back of a surface: it absorbs, and shows black
   Rgb luminance, illuminance;
 };
 RaySample shade_ray(const VertexShadingInput& input, Vec3 origin, Vec3 dir);
@@ -57,8 +58,10 @@ RaySample shade_ray(const VertexShadingInput& input, Vec3 origin, Vec3 dir);
 RaySample shade_hit(const VertexShadingInput& input, Vec3 origin, Vec3 dir, const RayHit& hit);
 
 struct ShadedImages {
-  Image luminance;    // cd/m² per channel; NaN where no front surface (or background) is seen
-  Image illuminance;  // lux per channel; NaN likewise
+  Image luminance;    // cd/m² per channel; black where only the back of surfaces is seen, NaN
+                      // where nothing is (no surface, no background)
+  Image illuminance;  // lux per channel; NaN where no front surface is seen
+  std::size_t back_side_pixels = 0;  // pixels every sample of which met the back of a surface
 };
 
 // `samples_per_axis`² stratified primary rays per pixel. With `hits` (trace_primary's of the
