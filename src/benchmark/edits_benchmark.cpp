@@ -63,6 +63,11 @@ Vec3 step_toward_middle(const Bounds& b, Vec3 p) {
   return {0, 0, middle.z >= p.z ? 0.02 : -0.02};
 }
 
+// A drag of `step` a frame, ten frames one way and ten back, so a long run stays where it began.
+double back_and_forth(int frame, double step) {
+  return (frame / 10) % 2 == 0 ? step : -step;
+}
+
 bool same_distribution(const DistributionSpec& a, const DistributionSpec& b) {
   return a.type == b.type && a.candela == b.candela && a.exponent == b.exponent &&
          a.cutoff_deg == b.cutoff_deg && a.gamma_deg == b.gamma_deg &&
@@ -136,18 +141,20 @@ std::vector<Edit> edits_of(const RelitScene& relit, const LightingState& home) {
          });
        }},
       {"object_dragged", [](const LightingState& s) { return !s.objects.empty(); },
-       [](LightingState& s, int) { s.objects.front().translate.x += 0.02; }},
+       [](LightingState& s, int i) { s.objects.front().translate.x += back_and_forth(i, 0.02); }},
       {"objects_moving", [](const LightingState& s) { return s.objects.size() > 1; },
-       [](LightingState& s, int) {
-         // Each along its own circle of 0.3 m radius: a 2 cm step and a 2° turn a frame.
-         for (MovablePlacement& o : s.objects) {
-           const double a = std::atan2(o.translate.z, o.translate.x + 0.3) + 0.02 / 0.3;
-           o.translate = Vec3{0.3 * (std::cos(a) - 1), o.translate.y, 0.3 * std::sin(a)};
-           o.rotate_deg += 2;
+       [start = home.objects](LightingState& s, int i) {
+         // Each along a circle of 0.3 m radius from where the scene put it: a 2 cm step and a
+         // 2° turn a frame.
+         const double a = (i + 1) * (0.02 / 0.3);
+         for (std::size_t k = 0; k < s.objects.size(); ++k) {
+           s.objects[k].translate =
+               start[k].translate + Vec3{0.3 * (std::cos(a) - 1), 0, 0.3 * std::sin(a)};
+           s.objects[k].rotate_deg = start[k].rotate_deg + 2.0 * (i + 1);
          }
        }},
       {"emitter_moved", [](const LightingState& s) { return !s.emitters.empty(); },
-       [](LightingState& s, int) { s.emitters.front().translate.x += 0.01; }},
+       [](LightingState& s, int i) { s.emitters.front().translate.x += back_and_forth(i, 0.01); }},
       {"material_albedo",
        [material](const LightingState& s) { return material < s.materials.size(); },
        [material](LightingState& s, int i) {

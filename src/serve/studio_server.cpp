@@ -142,8 +142,7 @@ struct StudioServer::Impl {
     transport->send(to, text_of(message), false);
   }
 
-  // Relights with `state` (the worker's relighter) and makes the frame.
-  // The per-vertex values of the light `relit` holds.
+  // The frame's per-vertex values of the light `relit` holds.
   std::shared_ptr<const FrameValues> frame_values() const {
     auto values = std::make_shared<FrameValues>();
     compute_frame_values(transfer(), vertex_portal, relit->irradiance(), relit->window_radiance(),
