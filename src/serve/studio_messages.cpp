@@ -19,6 +19,14 @@ nlohmann::json rgb_json(Rgb c) {
   return {c.r, c.g, c.b};
 }
 
+// Where a weather file stands, as the replies that read one give it.
+nlohmann::json weather_location_json(const WeatherLocation& at) {
+  return {{"city", at.city},
+          {"latitude", at.latitude_deg},
+          {"longitude", at.longitude_deg},
+          {"time_zone", at.time_zone_hours}};
+}
+
 // "MM-DD": the day of the weather file to scrub; its records in hour order.
 WeatherDayRequest weather_day_request(const JsonNode& weather, const JsonNode& date) {
   WeatherDayRequest r;
@@ -172,14 +180,9 @@ nlohmann::json weather_day_message(std::optional<std::uint32_t> seq, const Weath
                      {"diffuse_horizontal_irradiance", record.diffuse_horizontal_irradiance},
                      {"environment", perez_sky_json(sky)}});
   }
-  const WeatherLocation& at = r.location;
   return {{"type", "weather_day"},
           {"seq", seq_json(seq)},
-          {"weather",
-           {{"city", at.city},
-            {"latitude", at.latitude_deg},
-            {"longitude", at.longitude_deg},
-            {"time_zone", at.time_zone_hours}}},
+          {"weather", weather_location_json(r.location)},
           {"date", r.date},
           {"hours", std::move(hours)}};
 }
@@ -216,15 +219,11 @@ nlohmann::json annual_message(std::optional<std::uint32_t> seq, const Scene& sce
                     {"udi_exceeded", std::move(exceeded)},
                     {"ase_hours", std::move(ase_hours)}});
   }
-  const WeatherLocation& at = weather.location;
+  nlohmann::json place = weather_location_json(weather.location);
+  place["records"] = weather.records.size();
   return {{"type", "annual"},
           {"seq", seq_json(seq)},
-          {"weather",
-           {{"city", at.city},
-            {"latitude", at.latitude_deg},
-            {"longitude", at.longitude_deg},
-            {"time_zone", at.time_zone_hours},
-            {"records", weather.records.size()}}},
+          {"weather", std::move(place)},
           {"occupied", occupied},
           {"occupied_hours", hours.occupied},
           {"hours", hours.hours.size()},

@@ -9,7 +9,7 @@ import test from 'node:test';
 import assert from 'node:assert/strict';
 
 import * as browser from './browser_support.mjs';
-import { mean, nextStateAndFrame } from './studio_support.mjs';
+import { frameWhen, mean } from './studio_support.mjs';
 
 let session, studio, page, watcher;
 
@@ -25,12 +25,7 @@ test.after(async () => {
 const testid = (id) => page.locator(`[data-testid="${id}"]`);
 
 // The work plane's mean once a frame shows a state for which `done(state)` holds.
-async function readingWhen(done) {
-  for (;;) {
-    const { state, frame } = await nextStateAndFrame(watcher);
-    if (done(state.state)) return mean(Array.from(frame.sensors));
-  }
-}
+const readingWhen = async (done) => mean((await frameWhen(watcher, done)).sensors);
 
 async function setState(edit) {
   await page.evaluate((code) => {

@@ -203,3 +203,12 @@ export async function nextStateAndFrame(client) {
   const frame = decodeFrame((await client.next((m) => m.binary && m.tag === 'RLFR')).data);
   return { state, frame };
 }
+
+// The lighting state and the sensors' lux of the first frame a client gets that shows a state
+// for which `done(state)` holds.
+export async function frameWhen(client, done) {
+  for (;;) {
+    const { state, frame } = await nextStateAndFrame(client);
+    if (done(state.state)) return { state: state.state, sensors: Array.from(frame.sensors) };
+  }
+}

@@ -17,7 +17,7 @@ import os from 'node:os';
 import path from 'node:path';
 
 import * as browser from './browser_support.mjs';
-import { mean, nextStateAndFrame, probeSensors, relightBinary, studioDir, studioScene } from './studio_support.mjs';
+import { frameWhen, mean, probeSensors, relightBinary, studioDir, studioScene } from './studio_support.mjs';
 
 const shared = process.env.RELIGHT_SHARED_DIR ?? path.resolve(studioDir, '../../shared');
 const weatherFile = path.join(shared, 'data/weather/USA_IL_Chicago-OHare.Intl.AP.725300_TMY3.epw');
@@ -39,15 +39,6 @@ test.after(async () => {
 
 const testid = (id) => page.locator(`[data-testid="${id}"]`);
 
-// The state and the work plane's sensors of the first frame showing a state for which
-// `done(state)` holds.
-async function frameWhen(done) {
-  for (;;) {
-    const { state, frame } = await nextStateAndFrame(watcher);
-    if (done(state.state)) return { state: state.state, sensors: Array.from(frame.sensors) };
-  }
-}
-
 test('a day of the TMY3 file scrubbed hour by hour reads as relight probe', { skip }, async () => {
   const hello = await watcher.nextJson('hello');
   const name = hello.portals[0].name;
@@ -63,7 +54,7 @@ test('a day of the TMY3 file scrubbed hour by hour reads as relight probe', { sk
   for (const index of [3, 7, 12, 18]) {
     const hour = day.hours[index];
     await testid('weather-hour').fill(String(index));
-    const shown = await frameWhen((s) => s.portals?.[name]?.environment?.sun?.datetime === hour.environment.sun.datetime);
+    const shown = await frameWhen(watcher, (s) => s.portals?.[name]?.environment?.sun?.datetime === hour.environment.sun.datetime);
     assert.deepEqual(shown.state.portals[name].environment, hour.environment);
     assert.match(await testid('weather-readout').textContent(), new RegExp(`06-21 ${hour.time}`));
     const stateFile = path.join(dir, `hour-${index}.json`);
