@@ -1,5 +1,6 @@
-// `relight info SCENE.json`: counts (triangles, vertices after preparation, luminaires,
-// sensors) and the bounding box, after full validation of the scene and its files.
+// `relight info SCENE.json [--ranks K]`: counts (triangles, vertices after preparation, luminaires,
+// sensors) and the bounding box, after full validation of the scene and its files, and the
+// precompute's predicted peak memory ("memory estimate: N MB (its parts)", and a rank's of K).
 // `relight info FILE.ies|FILE.ldt`: the photometric file's summary as one JSON line
 // (light/photometry_summary.h).
 #include <cstdio>
@@ -9,22 +10,52 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.h"
+#include "engine/receivers.h"
 #include "light/luminaire_frame.h"
 #include "light/photometry_summary.h"
 #include "scene/scene_loader.h"
+#include "sources/objects/object_mesh.h"
 #include "sources/portals/portal_geometry.h"
+#include "sources/precompute.h"
 #include "trace/traced_scene.h"
 
 namespace relight {
 
+namespace {
+
+// The precompute's predicted peak (sources/precompute_memory.h), measured as `relight precompute`
+// would measure it: this process holds the same scene, mesh, receivers and Embree scenes.
+void print_memory_estimate(const Scene& scene, const PreparedMesh& mesh, int ranks) {
+  const Receivers receivers = make_receivers(scene, mesh);
+  const TracedScene traced = build_traced_scene(mesh, scene.materials);
+  const std::vector<Vec3> ray_points = receiver_ray_points(receivers, mesh);
+  std::vector<ObjectMesh> objects;
+  for (const MovableObject& o : scene.objects) objects.push_back(prepare_object(scene, o));
+  const PrecomputePrediction predicted =
+      predict_precompute(scene, mesh, receivers, ray_points, objects, traced, 1);
+  std::cout << "memory estimate: " << memory_summary(predicted.memory) << "\n";
+  if (ranks > 1) {
+    const PrecomputeMemory rank = predict_precompute_memory(
+        scene, receivers, predicted.gather, predicted.cuts.bytes + predicted.cuts.window,
+        predicted.memory.resident, ranks);
+    std::cout << "memory estimate: " << memory_summary(rank) << " a rank of " << ranks << "\n";
+  }
+}
+
+}  // namespace
+
 void add_info_command(CLI::App& app, Action& action) {
   auto scene_file = std::make_shared<std::string>();
+  auto ranks = std::make_shared<int>(1);
   CLI::App* cmd = app.add_subcommand(
       "info", "Validate a scene and print its counts and bounds, or summarize an IES/LDT file");
   cmd->add_option("file", *scene_file, "scene JSON file, or a photometric file (.ies, .ldt)")
       ->required();
-  cmd->callback([scene_file, &action] {
-    action = [scene_file] {
+  cmd->add_option("--ranks", *ranks,
+                  "also predict the memory of each of this many ranks of an MPI precompute")
+      ->check(CLI::Range(1, 1 << 20));
+  cmd->callback([scene_file, ranks, &action] {
+    action = [scene_file, ranks] {
       if (is_photometry_file(*scene_file)) {
         std::cout << to_json(summarize_photometry_file(*scene_file)).dump() << "\n";
         return 0;
@@ -81,6 +112,7 @@ void add_info_command(CLI::App& app, Action& action) {
                       luminaires[i].distribution.flux_lm() * scene.luminaires[i].dimmer);
         std::cout << line;
       }
+      print_memory_estimate(scene, mesh, *ranks);
       return 0;
     };
   });

@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -39,7 +41,46 @@ struct PrecomputeArgs {
   std::string scene, output;
   std::uint64_t seed = 1;
   bool progress = true;
+  std::optional<double> memory_limit_mb;
 };
+
+// RELIGHT_MEMORY_LIMIT, when set: megabytes a precompute process (each rank) may use, a positive
+// number; anything else is an input error (exit 2).
+std::optional<double> memory_limit_from_environment() {
+  const char* text = std::getenv("RELIGHT_MEMORY_LIMIT");
+  if (text == nullptr) return std::nullopt;
+  const std::string value(text);
+  char* end = nullptr;
+  const double mb = std::strtod(value.c_str(), &end);
+  if (value.empty() || end != value.c_str() + value.size() || !(mb > 0) || !std::isfinite(mb)) {
+    throw InputError("RELIGHT_MEMORY_LIMIT: expected a positive number of megabytes, got '" +
+                     value + "'");
+  }
+  return mb;
+}
+
+// The memory this process may use, and where the figure comes from: the machine's available
+// memory, a rank's share of it when `ranks_here` ranks share the machine, or less where
+// --memory-limit or RELIGHT_MEMORY_LIMIT (megabytes a process) says so.
+void set_memory_limit(std::optional<double> limit_mb, int ranks_here, PrecomputeOptions& options) {
+  if (const std::optional<std::uint64_t> available = available_memory_bytes()) {
+    options.memory_bytes = *available / static_cast<unsigned>(std::max(ranks_here, 1));
+    options.memory_source = ranks_here > 1
+                                ? "this machine's MemAvailable + SwapFree shared by its " +
+                                      std::to_string(ranks_here) + " ranks"
+                                : "this machine's MemAvailable + SwapFree";
+  }
+  const auto lower = [&](std::optional<double> mb, const std::string& source) {
+    if (!mb) return;
+    const auto bytes = static_cast<std::uint64_t>(*mb * 1e6);
+    if (!options.memory_bytes || bytes < *options.memory_bytes) {
+      options.memory_bytes = bytes;
+      options.memory_source = source;
+    }
+  };
+  lower(memory_limit_from_environment(), "RELIGHT_MEMORY_LIMIT");
+  lower(limit_mb, "--memory-limit");
+}
 
 // Refuses an unwritable destination before the long computation, not after it.
 void check_output_folder(const std::filesystem::path& output) {
@@ -183,6 +224,8 @@ void precompute_and_write(const Scene& scene, const nlohmann::json& document,
   } else {
     std::printf("  peak resident memory: %.1f MB\n", most_peak * 1e-6);
   }
+  std::printf("  memory estimate: %s%s\n", memory_summary(p.memory).c_str(),
+              ranks > 1 ? " a rank" : "");
   std::printf("  bounces: %d (tolerance %g)\n", p.bounces, scene.precompute.tolerance);
   for (const PortalTransfer& t : p.portals) {
     const CubemapEncodingStats& s = t.direct.stats;
@@ -263,7 +306,7 @@ void run_precompute(const nlohmann::json& document, const std::filesystem::path&
                     const std::filesystem::path& output, const PrecomputeOptions& options) {
   check_output_folder(output);
   PrecomputeOptions checked = options;
-  if (!checked.memory_bytes) checked.memory_bytes = available_memory_bytes();
+  if (!checked.memory_bytes) set_memory_limit(std::nullopt, 1, checked);
   precompute_and_write(scene_from_json(document, scene_file), document, scene_file, output,
                        checked);
 }
@@ -308,9 +351,10 @@ int run_precompute_on_ranks(const PrecomputeArgs& args, PrecomputeOptions option
   } catch (const InputError& e) {
     failure = e.what();
   }
-  if (const std::optional<std::uint64_t> available = available_memory_bytes()) {
-    options.memory_bytes = *available / static_cast<unsigned>(mpi.ranks_here());
-    options.ranks_here = mpi.ranks_here();
+  try {
+    set_memory_limit(args.memory_limit_mb, mpi.ranks_here(), options);
+  } catch (const InputError& e) {
+    if (failure.empty()) failure = e.what();
   }
   try {
     agree_on_failure(mpi, failure);
@@ -338,12 +382,17 @@ void add_precompute_command(CLI::App& app, Action& action) {
   cmd->add_option("-o,--output", args->output, ".rlt file to write")->required();
   cmd->add_option("--seed", args->seed, "random seed of the gather rays");
   cmd->add_flag("!--no-progress", args->progress, "no progress bars");
+  cmd->add_option("--memory-limit", args->memory_limit_mb,
+                  "megabytes this process (each rank) may use; less than the available memory "
+                  "refuses a scene predicted to need more (also RELIGHT_MEMORY_LIMIT)")
+      ->check(CLI::PositiveNumber);
   cmd->callback([args, &action] {
     action = [args] {
       PrecomputeOptions options;
       options.seed = args->seed;
       options.progress = args->progress;
       if (launched_by_mpi()) return run_precompute_on_ranks(*args, options);
+      set_memory_limit(args->memory_limit_mb, 1, options);
       run_precompute(read_json_file(args->scene), args->scene, args->output, options);
       return 0;
     };

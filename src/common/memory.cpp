@@ -1,7 +1,9 @@
 #include "common/memory.h"
 
 #include <sys/resource.h>
+#include <unistd.h>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -23,7 +25,19 @@ std::optional<std::uint64_t> available_memory_bytes() {
     if (name == "SwapFree:") swap = bytes;
   }
   if (!available) return std::nullopt;
-  return *available + swap.value_or(0);
+  std::uint64_t bytes = *available + swap.value_or(0);
+  // A container's limit binds before the machine's memory does.
+  std::ifstream max("/sys/fs/cgroup/memory.max"), current("/sys/fs/cgroup/memory.current");
+  std::uint64_t limit = 0, used = 0;
+  if (max >> limit && current >> used && used < limit) bytes = std::min(bytes, limit - used);
+  return bytes;
+}
+
+std::uint64_t resident_bytes() {
+  std::ifstream in("/proc/self/statm");
+  std::uint64_t size = 0, resident = 0;
+  if (!(in >> size >> resident)) return 0;
+  return resident * static_cast<std::uint64_t>(::sysconf(_SC_PAGESIZE));
 }
 
 std::uint64_t peak_resident_bytes() {

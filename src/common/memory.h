@@ -9,8 +9,12 @@
 namespace relight {
 
 // MemAvailable plus SwapFree from /proc/meminfo, in bytes — what the kernel estimates it can
-// give without swapping out others, and the swap beyond it; nullopt where it cannot be read.
+// give without swapping out others, and the swap beyond it — or less where the process's cgroup
+// (a container) allows less; nullopt where /proc/meminfo cannot be read.
 std::optional<std::uint64_t> available_memory_bytes();
+
+// What this process holds resident now (/proc/self/statm), in bytes; 0 where it cannot be read.
+std::uint64_t resident_bytes();
 
 // The most this process has held resident so far (getrusage's ru_maxrss), in bytes.
 std::uint64_t peak_resident_bytes();

@@ -1,8 +1,9 @@
 // Builds the gather operator of the interreflection engine (see gather_operator.h): rows are traced
 // independently in parallel (oneTBB, in fixed chunks of receivers), each row's hits are merged per
-// vertex in a per-thread accumulator and appended to its chunk's own buffers, and the rows are then
-// copied into one compressed row-major matrix — no lock is taken per ray or per row, and the result
-// does not depend on thread scheduling.
+// vertex in a per-thread accumulator and appended to its chunk's own buffers, and after each window
+// of chunks the window's rows are appended in order to the compressed row-major matrix, whose
+// storage is reserved from a traced sample of rows — no lock is taken per ray or per row, the rows
+// are never held twice, and the result does not depend on thread scheduling.
 #include "engine/gather_operator.h"
 
 #include <algorithm>
@@ -16,6 +17,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include "common/progress.h"
 #include "math/frame.h"
@@ -122,12 +124,18 @@ void trace_row(const PreparedMesh& mesh, const TracedScene& traced, Vec3 origin,
   out.row_sizes.push_back(static_cast<std::uint32_t>(scratch.touched.size()));
 }
 
-}  // namespace
+// The receivers' ray origins, offset off their surfaces.
+std::vector<Vec3> ray_origins(const Receivers& receivers, const PreparedMesh& mesh) {
+  const std::vector<Vec3> points = receiver_ray_points(receivers, mesh);
+  std::vector<Vec3> origins(points.size());
+  for (std::size_t r = 0; r < points.size(); ++r) {
+    origins[r] = offset_from_surface(points[r], receivers.normals[r]);
+  }
+  return origins;
+}
 
-GatherOperator build_gather_operator(const Receivers& receivers, const PreparedMesh& mesh,
-                                     const TracedScene& traced, int rays_per_vertex,
-                                     int rays_per_sensor, std::uint64_t seed, bool progress,
-                                     const RankShares* ranks) {
+void check_inputs(const Receivers& receivers, const PreparedMesh& mesh, int rays_per_vertex,
+                  int rays_per_sensor) {
   if (rays_per_vertex < 1 || rays_per_sensor < 1) {
     throw std::invalid_argument("gather operator: rays per receiver must be at least 1");
   }
@@ -135,72 +143,160 @@ GatherOperator build_gather_operator(const Receivers& receivers, const PreparedM
       receivers.normals.size() != receivers.size()) {
     throw std::invalid_argument("gather operator: receivers do not match the prepared mesh");
   }
+}
+
+// Mean entries of `count` rows evenly spaced over [first, last), traced as the build traces them.
+double mean_row_entries(const PreparedMesh& mesh, const TracedScene& traced,
+                        const Receivers& receivers, const std::vector<Vec3>& origins,
+                        std::size_t first, std::size_t last, std::size_t count,
+                        const std::vector<Vec3>& pattern, std::uint64_t seed) {
+  count = std::min(count, last - first);
+  if (count == 0) return 0;
+  tbb::enumerable_thread_specific<RowScratch> scratches(receivers.vertex_count);
+  std::vector<std::size_t> entries(count);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count), [&](const auto& range) {
+    RowScratch& scratch = scratches.local();
+    ChunkRows row;
+    for (std::size_t i = range.begin(); i != range.end(); ++i) {
+      const std::size_t r = first + i * (last - first) / count;
+      row.row_sizes.clear();
+      row.columns.clear();
+      row.values.clear();
+      trace_row(mesh, traced, origins[r], receivers.normals[r], r, pattern, seed, scratch, row);
+      entries[i] = row.row_sizes.front();
+    }
+  });
+  double sum = 0;
+  for (const std::size_t e : entries) sum += static_cast<double>(e);
+  return sum / static_cast<double>(count);
+}
+
+// Rows sample_gather_entries traces: a sample of vertex rows gives their mean within a few per
+// cent (a sensor row, of 16 times the rays, costs as much as 16 vertex rows).
+constexpr std::size_t kSampledVertexRows = 512, kSampledSensorRows = 32;
+
+// Chunks of rows traced together between two appends to the matrix: enough to keep every
+// thread busy, few enough that their buffers stay small beside the matrix.
+std::size_t window_chunks() {
+  return 8 * static_cast<std::size_t>(std::max(1, tbb::this_task_arena::max_concurrency()));
+}
+
+}  // namespace
+
+GatherEntries sample_gather_entries(const Receivers& receivers, const PreparedMesh& mesh,
+                                    const TracedScene& traced, int rays_per_vertex,
+                                    int rays_per_sensor, std::uint64_t seed) {
+  check_inputs(receivers, mesh, rays_per_vertex, rays_per_sensor);
+  const std::vector<Vec3> origins = ray_origins(receivers, mesh);
+  GatherEntries out;
+  out.per_vertex_row =
+      mean_row_entries(mesh, traced, receivers, origins, 0, receivers.vertex_count,
+                       kSampledVertexRows, cosine_pattern(rays_per_vertex, seed), seed);
+  out.per_sensor_row =
+      mean_row_entries(mesh, traced, receivers, origins, receivers.vertex_count, receivers.size(),
+                       kSampledSensorRows, cosine_pattern(rays_per_sensor, seed), seed);
+  return out;
+}
+
+std::uint64_t gather_build_scratch_bytes(const GatherEntries& entries, std::size_t vertices) {
+  const auto threads =
+      static_cast<std::uint64_t>(std::max(1, tbb::this_task_arena::max_concurrency()));
+  const double row = std::max(entries.per_vertex_row, entries.per_sensor_row) *
+                     static_cast<double>(sizeof(std::uint32_t) + sizeof(float));
+  return static_cast<std::uint64_t>(static_cast<double>(window_chunks() * kChunkRows) * row) +
+         threads * vertices * (sizeof(double) + sizeof(std::uint64_t));
+}
+
+GatherOperator build_gather_operator(const Receivers& receivers, const PreparedMesh& mesh,
+                                     const TracedScene& traced, int rays_per_vertex,
+                                     int rays_per_sensor, std::uint64_t seed, bool progress,
+                                     const RankShares* ranks, const GatherEntries* sampled) {
+  check_inputs(receivers, mesh, rays_per_vertex, rays_per_sensor);
   const auto start = std::chrono::steady_clock::now();
   const std::size_t rows = receivers.size();
-  const std::size_t chunk_count = (rows + kChunkRows - 1) / kChunkRows;
-  std::vector<ChunkRows> chunks(chunk_count);
   const RankShares own = ranks != nullptr ? *ranks : single_process_shares(rows, kChunkRows);
   if (own.receivers != rows || own.block != kChunkRows) {
     throw std::invalid_argument("gather operator: the ranks' blocks are not its chunks of rows");
   }
-  const std::vector<Vec3> points = receiver_ray_points(receivers, mesh);
-  std::vector<Vec3> origins(points.size());
-  for (std::size_t r = 0; r < points.size(); ++r) {
-    origins[r] = offset_from_surface(points[r], receivers.normals[r]);
-  }
+  const std::vector<Vec3> origins = ray_origins(receivers, mesh);
   const std::vector<Vec3> vertex_pattern = cosine_pattern(rays_per_vertex, seed);
   const std::vector<Vec3> sensor_pattern = cosine_pattern(rays_per_sensor, seed);
   const std::vector<std::size_t> my_chunks = own.my_blocks();
-  Progress bar("gather operator", own.my_receivers(), progress);
-  tbb::enumerable_thread_specific<RowScratch> scratches(receivers.vertex_count);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, my_chunks.size()), [&](const auto& range) {
-    RowScratch& scratch = scratches.local();
-    for (std::size_t i = range.begin(); i != range.end(); ++i) {
-      const std::size_t c = my_chunks[i];
-      const std::size_t first = c * kChunkRows, last = std::min(rows, first + kChunkRows);
-      ChunkRows& out = chunks[c];
-      out.row_sizes.reserve(last - first);
-      for (std::size_t r = first; r < last; ++r) {
-        const std::vector<Vec3>& pattern =
-            r < receivers.vertex_count ? vertex_pattern : sensor_pattern;
-        trace_row(mesh, traced, origins[r], receivers.normals[r], r, pattern, seed, scratch, out);
-      }
-      bar.advance(last - first);
-    }
-  });
-  bar.finish();
 
-  // Assemble: row offsets by a prefix sum, then every chunk copies into its own span.
   using Index = Eigen::SparseMatrix<float, Eigen::RowMajor>::StorageIndex;
-  std::vector<std::size_t> chunk_offsets(chunk_count + 1, 0);
-  for (std::size_t c = 0; c < chunk_count; ++c) {
-    chunk_offsets[c + 1] = chunk_offsets[c] + chunks[c].columns.size();
-  }
-  const std::size_t nonzeros = chunk_offsets.back();
-  if (nonzeros > static_cast<std::size_t>(std::numeric_limits<Index>::max())) {
-    throw std::invalid_argument("gather operator: more than 2^31 - 1 entries");
-  }
+  constexpr auto kMaxEntries = static_cast<std::size_t>(std::numeric_limits<Index>::max());
   GatherOperator result;
   result.matrix.resize(static_cast<Eigen::Index>(rows),
                        static_cast<Eigen::Index>(receivers.vertex_count));
-  result.matrix.resizeNonZeros(static_cast<Eigen::Index>(nonzeros));
   Index* outer = result.matrix.outerIndexPtr();
-  Index* inner = result.matrix.innerIndexPtr();
-  float* values = result.matrix.valuePtr();
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunk_count), [&](const auto& range) {
-    for (std::size_t c = range.begin(); c != range.end(); ++c) {
-      const ChunkRows& chunk = chunks[c];
-      std::size_t offset = chunk_offsets[c];
-      // Another rank's chunk has no rows here: its rows are empty.
-      for (std::size_t i = 0; i < std::min(kChunkRows, rows - c * kChunkRows); ++i) {
-        outer[c * kChunkRows + i] = static_cast<Index>(offset);
-        if (i < chunk.row_sizes.size()) offset += chunk.row_sizes[i];
+  // The entries go straight into the matrix's storage, reserved for what a sample of rows
+  // predicts (its pages are touched only as rows arrive), so that the rows are never held
+  // twice; a window's buffers are all that is held beside it.
+  const GatherEntries expected =
+      sampled != nullptr
+          ? *sampled
+          : sample_gather_entries(receivers, mesh, traced, rays_per_vertex, rays_per_sensor, seed);
+  const std::size_t my_vertex_rows = own.my_receivers_below(receivers.vertex_count);
+  std::size_t capacity =
+      static_cast<std::size_t>(
+          1.05 *
+          (expected.per_vertex_row * static_cast<double>(my_vertex_rows) +
+           expected.per_sensor_row * static_cast<double>(own.my_receivers() - my_vertex_rows))) +
+      kChunkRows * static_cast<std::size_t>(3 * std::max(rays_per_vertex, rays_per_sensor));
+  capacity = std::min(capacity, kMaxEntries);
+  result.matrix.resizeNonZeros(static_cast<Eigen::Index>(capacity));
+
+  Progress bar("gather operator", own.my_receivers(), progress);
+  tbb::enumerable_thread_specific<RowScratch> scratches(receivers.vertex_count);
+  std::vector<ChunkRows> window(
+      std::min(window_chunks(), std::max<std::size_t>(1, my_chunks.size())));
+  std::size_t entries = 0, next_row = 0;
+  for (std::size_t w = 0; w < my_chunks.size(); w += window.size()) {
+    const std::size_t n = std::min(window.size(), my_chunks.size() - w);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n), [&](const auto& range) {
+      RowScratch& scratch = scratches.local();
+      for (std::size_t i = range.begin(); i != range.end(); ++i) {
+        const std::size_t c = my_chunks[w + i];
+        const std::size_t first = c * kChunkRows, last = std::min(rows, first + kChunkRows);
+        ChunkRows& out = window[i];
+        out.row_sizes.clear();
+        out.columns.clear();
+        out.values.clear();
+        for (std::size_t r = first; r < last; ++r) {
+          const std::vector<Vec3>& pattern =
+              r < receivers.vertex_count ? vertex_pattern : sensor_pattern;
+          trace_row(mesh, traced, origins[r], receivers.normals[r], r, pattern, seed, scratch, out);
+        }
+        bar.advance(last - first);
       }
-      std::copy(chunk.columns.begin(), chunk.columns.end(), inner + chunk_offsets[c]);
-      std::copy(chunk.values.begin(), chunk.values.end(), values + chunk_offsets[c]);
+    });
+    // Appended in row order; the rows of other ranks' chunks between are empty.
+    for (std::size_t i = 0; i < n; ++i) {
+      const ChunkRows& chunk = window[i];
+      const std::size_t first = my_chunks[w + i] * kChunkRows;
+      if (entries + chunk.columns.size() > kMaxEntries) {
+        throw std::invalid_argument("gather operator: more than 2^31 - 1 entries");
+      }
+      if (entries + chunk.columns.size() > capacity) {
+        capacity = std::min(kMaxEntries,
+                            std::max(entries + chunk.columns.size(), capacity + capacity / 4));
+        result.matrix.resizeNonZeros(static_cast<Eigen::Index>(capacity));
+        outer = result.matrix.outerIndexPtr();
+      }
+      for (; next_row < first; ++next_row) outer[next_row] = static_cast<Index>(entries);
+      std::copy(chunk.columns.begin(), chunk.columns.end(),
+                result.matrix.innerIndexPtr() + entries);
+      std::copy(chunk.values.begin(), chunk.values.end(), result.matrix.valuePtr() + entries);
+      for (const std::uint32_t size : chunk.row_sizes) {
+        outer[next_row++] = static_cast<Index>(entries);
+        entries += size;
+      }
     }
-  });
-  outer[rows] = static_cast<Index>(nonzeros);
+  }
+  bar.finish();
+  for (; next_row < rows; ++next_row) outer[next_row] = static_cast<Index>(entries);
+  outer[rows] = static_cast<Index>(entries);
+  result.matrix.data().resize(static_cast<Eigen::Index>(entries));
   result.rays = static_cast<std::uint64_t>(receivers.vertex_count) * rays_per_vertex +
                 static_cast<std::uint64_t>(receivers.sensor_count) * rays_per_sensor;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -15,6 +15,7 @@
 // (bounce_solver.h).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 
 #include <Eigen/SparseCore>
@@ -42,10 +43,27 @@ struct GatherOperator {
 // than 2^31 - 1 entries. With several `ranks` (engine/ranks.h; shares on multiples of kBlock),
 // this process traces its own share's rows and keeps only those (the other rows empty): the
 // bounce reads its own rows, and rank 0 gathers the rest as it writes the file; `rays` counts
-// every rank's.
+// every rank's. `sampled`: sample_gather_entries of the same inputs, when the caller has it (the
+// build reserves its storage by it; it samples itself otherwise).
+// The mean entries of a vertex row and of a sensor row of the operator, from tracing a few hundred
+// evenly spaced vertex rows and a few dozen sensor rows exactly as build_gather_operator traces them: what the matrix
+// will hold, known for a fraction of its rays (sources/precompute_memory.h predicts the
+// precompute's memory from it, and the build reserves its storage by it).
+struct GatherEntries {
+  double per_vertex_row = 0, per_sensor_row = 0;
+};
+GatherEntries sample_gather_entries(const Receivers& receivers, const PreparedMesh& mesh,
+                                    const TracedScene& traced, int rays_per_vertex,
+                                    int rays_per_sensor, std::uint64_t seed);
+
+// What build_gather_operator holds beside the matrix it fills, at most: a window of traced rows
+// (of the larger kind) and each thread's row accumulator over the vertices.
+std::uint64_t gather_build_scratch_bytes(const GatherEntries& entries, std::size_t vertices);
+
 GatherOperator build_gather_operator(const Receivers& receivers, const PreparedMesh& mesh,
                                      const TracedScene& traced, int rays_per_vertex,
                                      int rays_per_sensor, std::uint64_t seed, bool progress,
-                                     const RankShares* ranks = nullptr);
+                                     const RankShares* ranks = nullptr,
+                                     const GatherEntries* sampled = nullptr);
 
 }  // namespace relight

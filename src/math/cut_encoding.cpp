@@ -18,6 +18,13 @@ HeightCuts make_height_cuts(const DirectionTree& tree) {
   return cuts;
 }
 
+void reserve_height_cuts(HeightCuts& store, std::uint64_t cuts, std::uint64_t nodes) {
+  const std::uint64_t total = store.first.back() + nodes;
+  store.first.reserve(store.first.size() + cuts);
+  store.heights.reserve((total + 1) / 2);
+  store.visible.reserve((total + 7) / 8);
+}
+
 void append_cut(HeightCuts& cuts, const DirectionCut& cut) {
   const std::uint64_t n = cuts.leaf_count;
   const int log_n = std::bit_width(n) - 1;

@@ -17,7 +17,9 @@
 // Pinned by tests/math/cut_encoding_test.cpp.
 #pragma once
 
+#include <algorithm>
 #include <bit>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -77,6 +79,34 @@ HeightCuts make_height_cuts(const DirectionTree& tree);
 // Appends `cut`, each value rounded to 0 or 1. Throws std::invalid_argument when its nodes are
 // not a cut of the store's tree in leaf order.
 void append_cut(HeightCuts& cuts, const DirectionCut& cut);
+
+// Appends `count` cuts in index order, made a window at a time: `make(first, cuts)` fills
+// cuts[i] with cut first + i (in parallel, as the caller likes), and they are encoded before the
+// next window, so that unencoded cuts (8 bytes a node, against under 2 encoded) are never held for
+// more than a window.
+inline constexpr std::size_t kCutWindow = 8192;
+template <class Make>
+void append_cuts_in_windows(HeightCuts& store, std::size_t count, Make make) {
+  constexpr std::size_t kWindow = kCutWindow;
+  std::vector<DirectionCut> cuts(std::min(count, kWindow));
+  for (std::size_t first = 0; first < count; first += kWindow) {
+    const std::span<DirectionCut> window = std::span(cuts).first(std::min(kWindow, count - first));
+    make(first, window);
+    for (DirectionCut& cut : window) {
+      append_cut(store, cut);
+      cut = {};
+    }
+  }
+}
+
+// The bytes of `cuts` cuts of `nodes` nodes in all, height encoded (as HeightCutsView::bytes).
+inline std::uint64_t height_cuts_bytes(std::uint64_t cuts, std::uint64_t nodes) {
+  return (nodes + 1) / 2 + (nodes + 7) / 8 + (cuts + 1) * sizeof(std::uint64_t);
+}
+
+// Room for `cuts` more cuts of `nodes` nodes in all, so that a store filled to a predicted size
+// never holds its old and its grown arrays at once.
+void reserve_height_cuts(HeightCuts& store, std::uint64_t cuts, std::uint64_t nodes);
 
 // The previous methods' encoding (Akerlund et al. 2007; Cheslack-Postava et al. 2008): each
 // node by its 2-byte heap index and 1 visibility bit, the height derived from the index

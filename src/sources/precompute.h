@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,7 @@
 #include "sources/luminaires/luminaire_precompute.h"
 #include "sources/objects/object_mesh.h"
 #include "sources/portals/portal_precompute.h"
+#include "sources/precompute_memory.h"
 
 namespace relight {
 
@@ -33,14 +35,31 @@ struct PrecomputeOptions {
   // scene and options: each traces its share of the receivers, and every rank returns the same
   // Precomputed (its phases' times are its own). nullptr: this process alone.
   RankExchange* ranks = nullptr;
-  // Memory this process (rank) may use, bytes: a scene whose least need
-  // (sources/precompute_memory.h) is more is refused before any ray is traced, on every rank
-  // (AgreedInputError). nullopt: no check. `ranks_here`: ranks sharing this machine's memory.
+  // Memory this process (rank) may use, bytes: a scene whose predicted peak
+  // (sources/precompute_memory.h) is more is refused before the gather operator is traced, on
+  // every rank (AgreedInputError). nullopt: no check. `memory_source` says where the figure comes
+  // from, for the refusal.
   std::optional<std::uint64_t> memory_bytes;
-  int ranks_here = 1;
+  std::string memory_source;
 };
 
 inline constexpr std::uint32_t kGlassOutsidePortals = 0xFFFFFFFFu;
+
+// The precompute's peak memory predicted on `ranks` ranks (sources/precompute_memory.h) by a
+// process holding what precompute_transfer holds before it traces: the prepared mesh, its
+// receivers and their ray points, the movable objects and the Embree scenes. What it samples, the
+// precompute reuses to size its stores. `relight info` and precompute_transfer both call it.
+struct PrecomputePrediction {
+  GatherEntries gather;
+  CutsPrediction cuts;  // empty without a top-level environment
+  PrecomputeMemory memory;
+};
+PrecomputePrediction predict_precompute(const Scene& scene, const PreparedMesh& mesh,
+                                        const Receivers& receivers,
+                                        std::span<const Vec3> ray_points,
+                                        std::span<const ObjectMesh> objects,
+                                        const TracedScene& traced, std::uint64_t seed,
+                                        int ranks = 1);
 
 struct Precomputed {
   PreparedMesh mesh;
@@ -67,6 +86,7 @@ struct Precomputed {
   // without one.
   CutsTransfer cuts;
   std::vector<PhaseTiming> phases;
+  PrecomputeMemory memory;            // the peak predicted before the gather operator was traced
   std::vector<std::string> warnings;  // e.g. portals too large for their shells (§6)
 };
 

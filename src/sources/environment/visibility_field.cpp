@@ -9,6 +9,7 @@
 #include <tbb/parallel_for.h>
 
 #include "math/cubemap.h"
+#include "math/cut_encoding.h"
 #include "math/direction_cut.h"
 #include "math/vec3.h"
 
@@ -119,52 +120,95 @@ int VisibilityFieldLayout::samples_around(Vec3 p, std::array<std::uint32_t, 8>& 
   return 8;
 }
 
+namespace {
+
+// What every sample of one field's cuts needs: its layout, the object's tracer and each tree
+// node's cone.
+struct FieldTracing {
+  VisibilityFieldLayout layout;
+  const DirectionTree& tree;
+  RayTracer tracer;
+  std::vector<double> spread;
+
+  FieldTracing(const ObjectMesh& object, const DirectionTree& tree, const CutsSettings& settings)
+      : tree(tree),
+        tracer(object.positions, object.triangles, sequential_ids(object.triangles.size())),
+        spread(tree.cos_half_angle.size()) {
+    layout.bounds = sphere_around(object.positions);
+    layout.spheres = settings.sphere_count;
+    layout.points = settings.sphere_points;
+    layout.inner = settings.inner_radius;
+    layout.outer = settings.outer_radius;
+    for (std::size_t k = 0; k < spread.size(); ++k) {
+      spread[k] = std::acos(std::clamp(tree.cos_half_angle[k], -1.0, 1.0));
+    }
+  }
+
+  // Sample s's cut; `nodes` is scratch, `rays` counts the rays traced.
+  void cut(std::size_t s, std::vector<Emitted>& nodes, DirectionCut& cut,
+           std::uint64_t& rays) const {
+    const Vec3 x = layout.sample_point(s);
+    const BoundingSphere& b = layout.bounds;
+    const Vec3 to_centre = b.centre - x;
+    const double d = length(to_centre);
+    // Only directions within the bounding sphere's cone can meet the object.
+    const Cone cone{d > 0 ? to_centre / d : Vec3{0, 1, 0},
+                    d > b.radius ? std::asin(b.radius / d) : kPi};
+    nodes.clear();
+    const OcclusionDescent descent{tree, spread, tracer, x, cone, nodes, rays};
+    if (const float v = descent.visit(1); v >= 0) nodes.push_back({0, 1, v});
+    std::sort(nodes.begin(), nodes.end(),
+              [](const Emitted& l, const Emitted& r) { return l.first_leaf < r.first_leaf; });
+    cut.nodes.clear();
+    cut.values.clear();
+    cut.nodes.reserve(nodes.size());
+    cut.values.reserve(nodes.size());
+    for (const Emitted& e : nodes) {
+      cut.nodes.push_back(e.node);
+      cut.values.push_back(e.value);
+    }
+  }
+};
+
+}  // namespace
+
+double sample_field_nodes(const ObjectMesh& object, const DirectionTree& tree,
+                          const CutsSettings& settings, std::size_t samples) {
+  const FieldTracing field(object, tree, settings);
+  const std::size_t count = field.layout.sample_count();
+  samples = std::min(samples, count);
+  if (samples == 0) return 0;
+  std::atomic<std::uint64_t> nodes{0};
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, samples), [&](const auto& range) {
+    std::vector<Emitted> scratch;
+    DirectionCut cut;
+    std::uint64_t rays = 0, here = 0;
+    for (std::size_t i = range.begin(); i < range.end(); ++i) {
+      field.cut(i * count / samples, scratch, cut, rays);
+      here += cut.nodes.size();
+    }
+    nodes += here;
+  });
+  return static_cast<double>(nodes.load()) / static_cast<double>(samples);
+}
+
 VisibilityField precompute_visibility_field(const ObjectMesh& object, const DirectionTree& tree,
                                             const CutsSettings& settings, HeightCuts& store) {
   const auto start = std::chrono::steady_clock::now();
+  const FieldTracing field(object, tree, settings);
   VisibilityField out;
-  out.layout.bounds = sphere_around(object.positions);
-  out.layout.spheres = settings.sphere_count;
-  out.layout.points = settings.sphere_points;
-  out.layout.inner = settings.inner_radius;
-  out.layout.outer = settings.outer_radius;
-  const RayTracer tracer(object.positions, object.triangles,
-                         sequential_ids(object.triangles.size()));
-  const std::size_t count = out.layout.sample_count();
-  std::vector<DirectionCut> cuts(count);
-  std::vector<double> spread(tree.cos_half_angle.size());
-  for (std::size_t k = 0; k < spread.size(); ++k) {
-    spread[k] = std::acos(std::clamp(tree.cos_half_angle[k], -1.0, 1.0));
-  }
+  out.layout = field.layout;
   std::atomic<std::uint64_t> rays{0};
-  const BoundingSphere& b = out.layout.bounds;
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 8), [&](const auto& range) {
-    std::uint64_t traced = 0;
-    std::vector<Emitted> nodes;
-    for (std::size_t s = range.begin(); s < range.end(); ++s) {
-      const Vec3 x = out.layout.sample_point(s);
-      const Vec3 to_centre = b.centre - x;
-      const double d = length(to_centre);
-      // Only directions within the bounding sphere's cone can meet the object.
-      const Cone cone{d > 0 ? to_centre / d : Vec3{0, 1, 0},
-                      d > b.radius ? std::asin(b.radius / d) : kPi};
-      nodes.clear();
-      const OcclusionDescent descent{tree, spread, tracer, x, cone, nodes, traced};
-      if (const float v = descent.visit(1); v >= 0) nodes.push_back({0, 1, v});
-      std::sort(nodes.begin(), nodes.end(),
-                [](const Emitted& l, const Emitted& r) { return l.first_leaf < r.first_leaf; });
-      DirectionCut& cut = cuts[s];
-      for (const Emitted& e : nodes) {
-        cut.nodes.push_back(e.node);
-        cut.values.push_back(e.value);
+  append_cuts_in_windows(store, field.layout.sample_count(), [&](std::size_t first, auto cuts) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, cuts.size(), 8), [&](const auto& range) {
+      std::uint64_t traced = 0;
+      std::vector<Emitted> nodes;
+      for (std::size_t i = range.begin(); i < range.end(); ++i) {
+        field.cut(first + i, nodes, cuts[i], traced);
       }
-    }
-    rays += traced;
+      rays += traced;
+    });
   });
-  for (DirectionCut& cut : cuts) {
-    append_cut(store, cut);
-    cut = {};
-  }
   out.rays = rays;
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;

@@ -53,6 +53,11 @@ struct VisibilityField {
   double seconds = 0;
 };
 
+// The mean nodes of a cut of the field, from `samples` samples spread evenly over its spheres and
+// traced as precompute_visibility_field traces them (for the precompute's memory prediction).
+double sample_field_nodes(const ObjectMesh& object, const DirectionTree& tree,
+                          const CutsSettings& settings, std::size_t samples);
+
 // The field of `object` over `tree`'s directions with the settings' spheres: one cut per
 // sample appended to `cuts` (a store of the same tree).
 VisibilityField precompute_visibility_field(const ObjectMesh& object, const DirectionTree& tree,
