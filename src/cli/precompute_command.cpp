@@ -44,18 +44,27 @@ struct PrecomputeArgs {
   std::optional<double> memory_limit_mb;
 };
 
-// RELIGHT_MEMORY_LIMIT, when set: megabytes a precompute process (each rank) may use, a positive
-// number; anything else is an input error (exit 2).
+// `text` as a positive, finite number of megabytes; nullopt when it is not one.
+std::optional<double> megabytes_in(const std::string& text) {
+  char* end = nullptr;
+  const double mb = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size() || !(mb > 0) || !std::isfinite(mb)) {
+    return std::nullopt;
+  }
+  return mb;
+}
+
+std::string megabytes_expected(const std::string& text) {
+  return "expected a positive number of megabytes, got '" + text + "'";
+}
+
+// RELIGHT_MEMORY_LIMIT, when set: megabytes a precompute process (each rank) may use; anything
+// but a positive number is an input error (exit 2).
 std::optional<double> memory_limit_from_environment() {
   const char* text = std::getenv("RELIGHT_MEMORY_LIMIT");
   if (text == nullptr) return std::nullopt;
-  const std::string value(text);
-  char* end = nullptr;
-  const double mb = std::strtod(value.c_str(), &end);
-  if (value.empty() || end != value.c_str() + value.size() || !(mb > 0) || !std::isfinite(mb)) {
-    throw InputError("RELIGHT_MEMORY_LIMIT: expected a positive number of megabytes, got '" +
-                     value + "'");
-  }
+  const std::optional<double> mb = megabytes_in(text);
+  if (!mb) throw InputError("RELIGHT_MEMORY_LIMIT: " + megabytes_expected(text));
   return mb;
 }
 
@@ -385,7 +394,11 @@ void add_precompute_command(CLI::App& app, Action& action) {
   cmd->add_option("--memory-limit", args->memory_limit_mb,
                   "megabytes this process (each rank) may use; less than the available memory "
                   "refuses a scene predicted to need more (also RELIGHT_MEMORY_LIMIT)")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Validator(
+          [](const std::string& text) {
+            return megabytes_in(text) ? std::string() : megabytes_expected(text);
+          },
+          "MB"));
   cmd->callback([args, &action] {
     action = [args] {
       PrecomputeOptions options;

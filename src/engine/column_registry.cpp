@@ -32,10 +32,9 @@ void DirectColumns::set(ColumnRange r, const Eigen::MatrixXf& every_receiver) {
 
 PackedTransfer pack_indirect_blocks(const BounceResult& result, ColumnRange r,
                                     TransferStorage storage) {
-  const Eigen::MatrixXf red = indirect_of(result, 0, r);
-  const Eigen::MatrixXf green = indirect_of(result, 1, r);
-  const Eigen::MatrixXf blue = indirect_of(result, 2, r);
-  std::vector<float> blocked = pack_blocks({&red, &green, &blue});
+  // Read in place: copies of the three channels would hold them twice at the precompute's peak.
+  std::vector<float> blocked = pack_blocks(
+      {indirect_of(result, 0, r), indirect_of(result, 1, r), indirect_of(result, 2, r)});
   if (result.ranks == nullptr || result.ranks->alone())
     return store_blocks(std::move(blocked), storage);
   float largest = largest_magnitude(blocked);

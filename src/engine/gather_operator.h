@@ -35,20 +35,10 @@ struct GatherOperator {
   double seconds = 0;      // wall-clock time to build it
 };
 
-// Shoots `rays_per_receiver` cosine-distributed rays from every receiver (a scrambled
-// (0,2)-sequence per receiver, Kollig & Keller 2002, deterministic from `seed` and the
-// receiver's index, independent of thread scheduling). Receivers must be those of `mesh`
-// (vertex_count == mesh vertex count) and `traced` built from the same mesh. Throws
-// std::invalid_argument for rays_per_receiver < 1, mismatched inputs or a matrix with more
-// than 2^31 - 1 entries. With several `ranks` (engine/ranks.h; shares on multiples of kBlock),
-// this process traces its own share's rows and keeps only those (the other rows empty): the
-// bounce reads its own rows, and rank 0 gathers the rest as it writes the file; `rays` counts
-// every rank's. `sampled`: sample_gather_entries of the same inputs, when the caller has it (the
-// build reserves its storage by it; it samples itself otherwise).
 // The mean entries of a vertex row and of a sensor row of the operator, from tracing a few hundred
-// evenly spaced vertex rows and a few dozen sensor rows exactly as build_gather_operator traces them: what the matrix
-// will hold, known for a fraction of its rays (sources/precompute_memory.h predicts the
-// precompute's memory from it, and the build reserves its storage by it).
+// evenly spaced vertex rows and a few dozen sensor rows exactly as build_gather_operator traces
+// them: what the matrix will hold, known for a fraction of its rays (sources/precompute_memory.h
+// predicts the precompute's memory from it, and the build reserves its storage by it).
 struct GatherEntries {
   double per_vertex_row = 0, per_sensor_row = 0;
 };
@@ -60,6 +50,16 @@ GatherEntries sample_gather_entries(const Receivers& receivers, const PreparedMe
 // (of the larger kind) and each thread's row accumulator over the vertices.
 std::uint64_t gather_build_scratch_bytes(const GatherEntries& entries, std::size_t vertices);
 
+// Shoots `rays_per_receiver` cosine-distributed rays from every receiver (a scrambled
+// (0,2)-sequence per receiver, Kollig & Keller 2002, deterministic from `seed` and the
+// receiver's index, independent of thread scheduling). Receivers must be those of `mesh`
+// (vertex_count == mesh vertex count) and `traced` built from the same mesh. Throws
+// std::invalid_argument for rays_per_receiver < 1, mismatched inputs or a matrix with more
+// than 2^31 - 1 entries. With several `ranks` (engine/ranks.h; shares on multiples of kBlock),
+// this process traces its own share's rows and keeps only those (the other rows empty): the
+// bounce reads its own rows, and rank 0 gathers the rest as it writes the file; `rays` counts
+// every rank's. `sampled`: sample_gather_entries of the same inputs, when the caller has it (the
+// build reserves its storage by it; it samples itself otherwise).
 GatherOperator build_gather_operator(const Receivers& receivers, const PreparedMesh& mesh,
                                      const TracedScene& traced, int rays_per_vertex,
                                      int rays_per_sensor, std::uint64_t seed, bool progress,

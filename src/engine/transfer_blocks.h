@@ -17,6 +17,7 @@
 
 #include <array>
 #include <cstddef>
+#include <initializer_list>
 #include <span>
 #include <string>
 #include <vector>
@@ -38,8 +39,9 @@ constexpr std::size_t blocked_floats(std::size_t receivers, std::size_t k, std::
   return block_count(receivers) * k * channels * kBlock;
 }
 
-// Packs per-channel (receivers × K) matrices into the blocked layout.
-std::vector<float> pack_blocks(const std::vector<const Eigen::MatrixXf*>& channels);
+// Packs per-channel (receivers × K) matrices into the blocked layout; a channel may be a block of
+// columns of a larger matrix (Eigen::Ref binds to it without a copy).
+std::vector<float> pack_blocks(std::initializer_list<Eigen::Ref<const Eigen::MatrixXf>> channels);
 
 // The hot loop of every source's weighted sum: acc_c[i] += Σ_k w[3k + c] · T[k][c][i] over one
 // block of RGB transfer `t` in the blocked layout (K bases, each three channels of kBlock

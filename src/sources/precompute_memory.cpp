@@ -57,8 +57,18 @@ PrecomputeMemory predict_precompute_memory(const Scene& scene, const Receivers& 
   const std::uint64_t dense_vertices = share_vertices * column_bytes;  // Mv
   const std::uint64_t reflected = (m.ranks > 1 ? vertices : share_vertices) * column_bytes;
   const std::uint64_t bounce = 5 * dense + dense_vertices + reflected;
-  const std::uint64_t packed = scene.precompute.storage == "fp16" ? 3 * dense / 2 : 3 * dense;
-  const std::uint64_t pack = 4 * dense + packed;
+  const bool half = scene.precompute.storage == "fp16";
+  const std::uint64_t packed = half ? 3 * dense / 2 : 3 * dense;
+  // Packing one source's three channels (read in place) into a float copy, converted to binary16
+  // beside it: the largest source's copy is held beside the direct columns, the three channels and
+  // every source's packed transfer.
+  const std::uint64_t largest_source =
+      m.share * sizeof(float) *
+      std::max(scene.luminaires.empty() ? 0 : luminaire_columns,
+               scene.portals.empty()
+                   ? 0
+                   : static_cast<std::uint64_t>(sh_count(scene.precompute.portal_sh_order)));
+  const std::uint64_t pack = 4 * dense + packed + (half ? 3 * largest_source : 0);
   m.sources = m.share * (scene.portals.size() * kPortalCubemapBytes +
                          scene.luminaires.size() * kDirectGeometryBytes);
   if (!scene.emitters.empty()) {

@@ -13,7 +13,7 @@
 //     row-major, the channels solved M each, the channel being solved (its gathered light M, its
 //     reflected light — every vertex's on several ranks — and its column-major copy M);
 //   - the packing: the direct columns, three channels and their packed copy (3M as floats, 1.5M
-//     as binary16);
+//     as binary16, converted from a float copy of the largest source's columns);
 //   - the portals' encoded cubemaps from their direct phase on, the luminaires' exact-direct
 //     geometry and the near-field emitters' SH transfer;
 //   - the visibility cuts, last, beside the packed transfer: their height-encoded stores (sized by

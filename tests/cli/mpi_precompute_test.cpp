@@ -79,6 +79,19 @@ void expect_two_ranks_write_what_one_writes(const TempDir& dir, const std::strin
   ASSERT_EQ(ranks.exit_code, 0) << ranks.err;
   EXPECT_NE(ranks.out.find("2 ranks"), std::string::npos) << ranks.out;
   EXPECT_EQ(ranks.out.find("precompute "), ranks.out.rfind("precompute ")) << "printed twice";
+  // A rank's predicted peak against the most a rank held (sources/precompute_memory.h).
+  const std::size_t peak = ranks.out.find("peak resident memory: ");
+  const std::size_t estimate = ranks.out.find("memory estimate: ");
+  ASSERT_NE(peak, std::string::npos) << ranks.out;
+  ASSERT_NE(estimate, std::string::npos) << ranks.out;
+  const std::size_t most = ranks.out.find("–", peak);  // "least–most MB a rank"
+  ASSERT_NE(most, std::string::npos) << ranks.out;
+  const double most_mb = std::strtod(ranks.out.c_str() + most + std::string("–").size(), nullptr);
+  const double estimate_mb =
+      std::strtod(ranks.out.c_str() + estimate + std::string("memory estimate: ").size(), nullptr);
+  if (std::getenv("RELIGHT_SANITIZER") == nullptr) {
+    EXPECT_NEAR(estimate_mb / most_mb, 1, 0.25) << ranks.out;
+  }
   expect_same_transfer(one, two);
   const fs::path csv_one = dir.path() / (name + "-one.csv"),
                  csv_two = dir.path() / (name + "-two.csv");

@@ -31,7 +31,9 @@ double megabytes_after(const std::string& text, const std::string& label) {
 }
 
 // A sanitizer's shadow memory and quarantine are not the precompute's.
-bool under_sanitizer() { return std::getenv("RELIGHT_SANITIZER") != nullptr; }
+bool under_sanitizer() {
+  return std::getenv("RELIGHT_SANITIZER") != nullptr;
+}
 
 // The demo room (four luminaires and a window, binary16 storage) at `max_edge`.
 nlohmann::json demo_room(double max_edge) {
@@ -48,10 +50,13 @@ nlohmann::json luminaire_room(double max_edge) {
   room.albedo = 0.6;
   nlohmann::json scene = testing::window_room_json(room);
   scene["portals"] = nlohmann::json::array();
-  scene["sensors"] = {
-      {{"name", "floor"},
-       {"grid",
-        {{"corner", {0.5, 0.8, 0.5}}, {"u", {3, 0, 0}}, {"v", {0, 0, 4}}, {"nu", 12}, {"nv", 16}}}}};
+  scene["sensors"] = {{{"name", "floor"},
+                       {"grid",
+                        {{"corner", {0.5, 0.8, 0.5}},
+                         {"u", {3, 0, 0}},
+                         {"v", {0, 0, 4}},
+                         {"nu", 12},
+                         {"nv", 16}}}}};
   nlohmann::json second = testing::panel_luminaire("second");
   second["position"] = {2, 2.9, 1.5};
   scene["luminaires"] = {testing::panel_luminaire("first"), second};
@@ -76,9 +81,9 @@ Measured precompute_measured(const TempDir& dir, const std::string& name,
   const fs::path file = dir.write(name + ".json", scene.dump());
   const testing::CommandResult info = run_relight("info '" + file.string() + "'");
   EXPECT_EQ(info.exit_code, 0) << info.err;
-  const testing::CommandResult r = run_relight("precompute '" + file.string() + "' -o '" +
-                                               (dir.path() / (name + ".rlt")).string() +
-                                               "' --no-progress");
+  const testing::CommandResult r =
+      run_relight("precompute '" + file.string() + "' -o '" +
+                  (dir.path() / (name + ".rlt")).string() + "' --no-progress");
   EXPECT_EQ(r.exit_code, 0) << r.err;
   return {megabytes_after(r.out, "memory estimate: "),
           megabytes_after(r.out, "peak resident memory: "),

@@ -83,7 +83,7 @@ CutsPrediction predict_cuts(const CutsSettings& settings, const Receivers& recei
   const auto window = [&out](std::uint64_t nodes, std::size_t cuts) {
     if (cuts == 0) return;
     const std::uint64_t held = std::min<std::uint64_t>(cuts, kCutWindow);
-    out.window = std::max(out.window, held * (nodes / cuts * 8 + 2 * 3 * sizeof(void*)));
+    out.window = std::max(out.window, held * (nodes / cuts * 8 + 2 * sizeof(std::vector<float>)));
   };
   window(out.receiver_nodes, ray_points.size());
   for (const ObjectMesh& object : objects) {

@@ -35,8 +35,7 @@ PhaseTiming LuminairePrecompute::compute_direct(const SourceContext& context,
     rays += t.direct.rays;
     columns.set(columns_[j], sh_basis_direct(t.direct, order));
     if (scene_->precompute.direct == "sh") {
-      const Eigen::MatrixXf block = columns.of(columns_[j]);
-      t.direct_sh_blocks = pack_blocks({&block});
+      t.direct_sh_blocks = pack_blocks({columns.of(columns_[j])});
     }
     transfers.push_back(std::move(t));
   }

@@ -40,7 +40,7 @@ Synthetic make_synthetic(const Eigen::MatrixXf& vertex_rows) {
   s.r.topRows(kVertices) = vertex_rows;
   s.g = 2 * s.r;
   s.b = Eigen::MatrixXf::Zero(kReceivers, kOrder * kOrder);
-  s.blocks = pack_blocks({&s.r, &s.g, &s.b});
+  s.blocks = pack_blocks({s.r, s.g, s.b});
   return s;
 }
 
