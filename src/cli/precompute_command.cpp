@@ -74,10 +74,10 @@ std::optional<double> memory_limit_from_environment() {
 void set_memory_limit(std::optional<double> limit_mb, int ranks_here, PrecomputeOptions& options) {
   if (const std::optional<std::uint64_t> available = available_memory_bytes()) {
     options.memory_bytes = *available / static_cast<unsigned>(std::max(ranks_here, 1));
-    options.memory_source = ranks_here > 1
-                                ? "this machine's MemAvailable + SwapFree shared by its " +
-                                      std::to_string(ranks_here) + " ranks"
-                                : "this machine's MemAvailable + SwapFree";
+    options.memory_source =
+        "this machine's MemAvailable + SwapFree, or its cgroup's limit" +
+        (ranks_here > 1 ? ", shared by its " + std::to_string(ranks_here) + " ranks"
+                        : std::string());
   }
   const auto lower = [&](std::optional<double> mb, const std::string& source) {
     if (!mb) return;

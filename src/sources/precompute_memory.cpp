@@ -33,14 +33,14 @@ PrecomputeMemory predict_precompute_memory(const Scene& scene, const Receivers& 
   m.resident = resident;
   m.receivers = receivers.size();
   m.ranks = static_cast<std::uint64_t>(std::max(ranks, 1));
-  // A rank's share, rounded up to whole blocks of the transfer; its vertex rows at most the
-  // vertices (sensor rows come last and fall to the last ranks).
+  // A rank's share, rounded up to whole blocks of the transfer; the blocks are dealt in turn
+  // (engine/ranks.h), so a share holds vertex and sensor rows in the proportion of all rows.
   m.share = std::min<std::uint64_t>(m.receivers,
                                     (block_count(m.receivers) + m.ranks - 1) / m.ranks * kBlock);
   const std::uint64_t vertices = receivers.vertex_count;
-  const std::uint64_t share_vertices = std::min(m.share, vertices);
-  const std::uint64_t share_sensors = std::min<std::uint64_t>(
-      m.share - share_vertices, static_cast<std::uint64_t>(receivers.sensor_count));
+  const std::uint64_t share_sensors =
+      m.receivers == 0 ? 0 : (m.share * receivers.sensor_count + m.receivers - 1) / m.receivers;
+  const std::uint64_t share_vertices = std::min(vertices, m.share - share_sensors);
   const auto luminaire_columns = static_cast<std::uint64_t>(sh_count(scene.precompute.sh_order));
   m.columns =
       scene.luminaires.size() * luminaire_columns +
