@@ -251,6 +251,36 @@ TEST(GatherOperator, IsADeterministicFunctionOfTheSeed) {
   EXPECT_GT((a.matrix - c.matrix).norm(), 0.0f);
 }
 
+// The build reserves its storage from a sample of rows and grows it when the sample was short:
+// the matrix is the same whatever it reserved, and the sample's mean is the matrix's within 10 %.
+TEST(GatherOperator, TheMatrixDoesNotDependOnTheStorageReservedForItAndTheSampleMatchesIt) {
+  Scene scene = scene_of(make_box({0, 0, 0}, {4, 3, 5}, Facing::kInward, 0), {{"wall"}});
+  add_sensor(scene, {2, 1.5, 2.5}, {0, 1, 0});
+  add_sensor(scene, {0.5, 0.2, 4.5}, {0, 1, 0});
+  const Rig rig = make_rig(std::move(scene), 0.25);
+  const GatherOperator sampled =
+      build_gather_operator(rig.receivers, rig.mesh, rig.traced, 64, 512, 4, false);
+  const GatherEntries none{0, 0}, plenty{1e4, 1e4};
+  const GatherOperator short_of_it =
+      build_gather_operator(rig.receivers, rig.mesh, rig.traced, 64, 512, 4, false, nullptr, &none);
+  const GatherOperator beyond_it = build_gather_operator(rig.receivers, rig.mesh, rig.traced, 64,
+                                                         512, 4, false, nullptr, &plenty);
+  // More entries than the least the build reserves (a chunk of the longest rows), so that it grows.
+  ASSERT_GT(sampled.matrix.nonZeros(), 2 * 64 * 3 * 512);
+  for (const GatherOperator* other : {&short_of_it, &beyond_it}) {
+    ASSERT_EQ(other->matrix.nonZeros(), sampled.matrix.nonZeros());
+    EXPECT_EQ((other->matrix - sampled.matrix).norm(), 0.0f);
+  }
+  const GatherEntries e = sample_gather_entries(rig.receivers, rig.mesh, rig.traced, 64, 512, 4);
+  double vertex_entries = 0;
+  for (std::size_t r = 0; r < rig.receivers.vertex_count; ++r) {
+    vertex_entries += sampled.matrix.row(static_cast<Eigen::Index>(r)).nonZeros();
+  }
+  const double mean = vertex_entries / static_cast<double>(rig.receivers.vertex_count);
+  EXPECT_NEAR(e.per_vertex_row / mean, 1, 0.1) << e.per_vertex_row << " against " << mean;
+  EXPECT_GT(e.per_sensor_row, e.per_vertex_row);  // 512 rays against 64
+}
+
 TEST(GatherOperator, RejectsBadArguments) {
   Scene scene = scene_of(make_box({0, 0, 0}, {1, 1, 1}, Facing::kInward, 0), {{"wall"}});
   const Rig rig = make_rig(std::move(scene), 0);
