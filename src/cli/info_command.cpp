@@ -35,9 +35,9 @@ void print_memory_estimate(const Scene& scene, const PreparedMesh& mesh, int ran
       predict_precompute(scene, mesh, receivers, ray_points, objects, traced, 1);
   std::cout << "memory estimate: " << memory_summary(predicted.memory) << "\n";
   if (ranks > 1) {
-    const PrecomputeMemory rank = predict_precompute_memory(
-        scene, receivers, predicted.gather, predicted.cuts.bytes + predicted.cuts.window,
-        predicted.memory.resident, ranks);
+    const PrecomputeMemory rank =
+        predict_precompute_memory(scene, receivers, predicted.gather, predicted.cuts.held(),
+                                  predicted.memory.resident, ranks);
     std::cout << "memory estimate: " << memory_summary(rank) << " a rank of " << ranks << "\n";
   }
 }

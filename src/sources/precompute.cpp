@@ -50,8 +50,8 @@ PrecomputePrediction predict_precompute(const Scene& scene, const PreparedMesh& 
   if (scene.environment) {
     out.cuts = predict_cuts(scene.precompute.cuts, receivers, ray_points, traced, objects);
   }
-  out.memory = predict_precompute_memory(scene, receivers, out.gather,
-                                         out.cuts.bytes + out.cuts.window, resident, ranks);
+  out.memory =
+      predict_precompute_memory(scene, receivers, out.gather, out.cuts.held(), resident, ranks);
   return out;
 }
 

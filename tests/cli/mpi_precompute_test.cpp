@@ -117,13 +117,7 @@ TEST(MpiPrecompute, TwoRanksWriteAWindowRoomWithEverySourceByteForByteAsOneProce
        {"grid",
         {{"corner", {0.5, 0.8, 0.5}}, {"u", {3, 0, 0}}, {"v", {0, 0, 4}}, {"nu", 6}, {"nv", 8}}}}};
   scene["luminaires"] = {testing::panel_luminaire("panel")};
-  scene["emitters"] = {{{"name", "strip"},
-                        {"geometry", testing::quad({1.5, 2.5, 1}, {1, 0, 0}, {0, 0, 0.3}, "")},
-                        {"luminance", 2000}}};
-  scene["emitters"][0]["geometry"].erase("material");
-  scene["materials"]["oak"] = {{"albedo", {0.6, 0.4, 0.2}}};
-  scene["objects"] = {
-      {{"name", "cabinet"}, {"geometry", {testing::box({0.3, 0, 0.3}, {0.9, 1.6, 0.8}, "oak")}}}};
+  testing::add_strip_and_cabinet(scene);
   scene["precompute"] = {{"max_edge", 0.5}, {"gather_rays", 64}, {"sensor_gather_rays", 256}};
   const TempDir dir;
   expect_two_ranks_write_what_one_writes(dir, "window", scene);

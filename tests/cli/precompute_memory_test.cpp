@@ -60,13 +60,7 @@ nlohmann::json luminaire_room(double max_edge) {
   nlohmann::json second = testing::panel_luminaire("second");
   second["position"] = {2, 2.9, 1.5};
   scene["luminaires"] = {testing::panel_luminaire("first"), second};
-  scene["emitters"] = {{{"name", "strip"},
-                        {"geometry", testing::quad({1.5, 2.5, 1}, {1, 0, 0}, {0, 0, 0.3}, "")},
-                        {"luminance", 2000}}};
-  scene["emitters"][0]["geometry"].erase("material");
-  scene["materials"]["oak"] = {{"albedo", {0.6, 0.4, 0.2}}};
-  scene["objects"] = {
-      {{"name", "cabinet"}, {"geometry", {testing::box({0.3, 0, 0.3}, {0.9, 1.6, 0.8}, "oak")}}}};
+  testing::add_strip_and_cabinet(scene);
   scene["precompute"] = {
       {"max_edge", max_edge}, {"storage", "fp32"}, {"tolerance", 0.01}, {"sh_order", 8}};
   return scene;

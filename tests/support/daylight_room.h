@@ -153,6 +153,18 @@ inline nlohmann::json south_window_room(double sensor_height) {
   return scene;
 }
 
+// Adds to a window room a 1 × 0.3 m strip emitter of 2,000 cd/m² under its ceiling and an oak
+// cabinet (a movable object) in a corner: the near-field and movable-object sources beside its own.
+inline void add_strip_and_cabinet(nlohmann::json& scene) {
+  scene["emitters"] = {{{"name", "strip"},
+                        {"geometry", quad({1.5, 2.5, 1}, {1, 0, 0}, {0, 0, 0.3}, "")},
+                        {"luminance", 2000}}};
+  scene["emitters"][0]["geometry"].erase("material");
+  scene["materials"]["oak"] = {{"albedo", {0.6, 0.4, 0.2}}};
+  scene["objects"] = {
+      {{"name", "cabinet"}, {"geometry", {box({0.3, 0, 0.3}, {0.9, 1.6, 0.8}, "oak")}}}};
+}
+
 // A 0.6 × 0.6 m isotropic 1000 cd luminaire at (2, 2.9, 3) aimed down (its luminous area
 // from "size"), for glare and task checks with closed forms.
 inline nlohmann::json panel_luminaire(const std::string& name) {

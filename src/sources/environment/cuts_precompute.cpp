@@ -67,10 +67,14 @@ DirectionTree cuts_tree(const CutsSettings& settings) {
   return build_direction_tree(repulsed_directions(static_cast<std::size_t>(settings.directions)));
 }
 
+}  // namespace
+
 CutsPrediction predict_cuts(const CutsSettings& settings, const Receivers& receivers,
                             std::span<const Vec3> ray_points, const TracedScene& traced,
-                            std::span<const ObjectMesh> objects, const DirectionTree& tree) {
+                            std::span<const ObjectMesh> objects) {
   CutsPrediction out;
+  out.tree = cuts_tree(settings);
+  const DirectionTree& tree = out.tree;
   const auto total = [](double mean, std::size_t cuts) {
     return static_cast<std::uint64_t>(std::ceil(mean * static_cast<double>(cuts)));
   };
@@ -87,10 +91,7 @@ CutsPrediction predict_cuts(const CutsSettings& settings, const Receivers& recei
   };
   window(out.receiver_nodes, ray_points.size());
   for (const ObjectMesh& object : objects) {
-    VisibilityFieldLayout layout;
-    layout.spheres = settings.sphere_count;
-    layout.points = settings.sphere_points;
-    const std::size_t samples = layout.sample_count();
+    const std::size_t samples = field_sample_count(settings);
     out.field_nodes.push_back(
         total(sample_field_nodes(object, tree, settings, kSampledCuts), samples));
     const RayTracer own(object.positions, object.triangles,
@@ -107,21 +108,14 @@ CutsPrediction predict_cuts(const CutsSettings& settings, const Receivers& recei
   return out;
 }
 
-}  // namespace
-
-CutsPrediction predict_cuts(const CutsSettings& settings, const Receivers& receivers,
-                            std::span<const Vec3> ray_points, const TracedScene& traced,
-                            std::span<const ObjectMesh> objects) {
-  return predict_cuts(settings, receivers, ray_points, traced, objects, cuts_tree(settings));
-}
-
 CutsTransfer precompute_cuts(const CutsSettings& settings, const Receivers& receivers,
                              std::span<const Vec3> ray_points, const TracedScene& traced,
                              std::span<const ObjectMesh> objects, bool progress,
                              const CutsPrediction* predicted) {
   const auto start = std::chrono::steady_clock::now();
   CutsTransfer out;
-  const DirectionTree tree = cuts_tree(settings);
+  const DirectionTree built = predicted != nullptr ? DirectionTree{} : cuts_tree(settings);
+  const DirectionTree& tree = predicted != nullptr ? predicted->tree : built;
   out.directions = tree.leaves;
   out.threshold = settings.threshold;
   out.self_visibility = make_height_cuts(tree);
@@ -151,8 +145,7 @@ CutsTransfer precompute_cuts(const CutsSettings& settings, const Receivers& rece
       fields += predicted->field_nodes[o];
       own += predicted->object_vertex_nodes[o];
       own_cuts += objects[o].ray_points.size();
-      field_cuts += static_cast<std::size_t>(settings.sphere_count) * 6 *
-                    static_cast<std::size_t>(settings.sphere_points) * settings.sphere_points;
+      field_cuts += field_sample_count(settings);
     }
     reserve(out.field_cuts, field_cuts, fields);
     reserve(out.object_self_visibility, own_cuts, own);

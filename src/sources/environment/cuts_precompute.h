@@ -47,11 +47,15 @@ struct CutsTransfer {
 // them (a few hundred receivers' and object vertices' cuts, and of each field's samples): what the
 // precompute's memory prediction counts (sources/precompute_memory.h) and the stores reserve.
 struct CutsPrediction {
+  DirectionTree tree;  // the settings' direction tree, sampled with and then traced over
   std::uint64_t receiver_nodes = 0;                // the self-visibility cuts'
   std::vector<std::uint64_t> field_nodes;          // per object: its field's
   std::vector<std::uint64_t> object_vertex_nodes;  // per object: its vertices' own cuts'
   std::uint64_t bytes = 0;                         // all of them height encoded
   std::uint64_t window = 0;  // the most a window of cuts holds before it is encoded
+
+  // What the cuts hold at their peak: the stores and a window being encoded.
+  std::uint64_t held() const { return bytes + window; }
 };
 
 CutsPrediction predict_cuts(const CutsSettings& settings, const Receivers& receivers,
@@ -59,8 +63,8 @@ CutsPrediction predict_cuts(const CutsSettings& settings, const Receivers& recei
                             std::span<const ObjectMesh> objects);
 
 // `ray_points` per receiver (engine/receivers.h receiver_ray_points), pushed off the surface
-// here; `objects` the scene's movable objects as prepared. `predicted`, when given, sizes the
-// stores before they fill.
+// here; `objects` the scene's movable objects as prepared. `predicted`, when given (predict_cuts
+// of the same inputs), gives the direction tree and sizes the stores before they fill.
 CutsTransfer precompute_cuts(const CutsSettings& settings, const Receivers& receivers,
                              std::span<const Vec3> ray_points, const TracedScene& traced,
                              std::span<const ObjectMesh> objects, bool progress,

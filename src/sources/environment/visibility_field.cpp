@@ -172,6 +172,13 @@ struct FieldTracing {
 
 }  // namespace
 
+std::size_t field_sample_count(const CutsSettings& settings) {
+  VisibilityFieldLayout layout;
+  layout.spheres = settings.sphere_count;
+  layout.points = settings.sphere_points;
+  return layout.sample_count();
+}
+
 double sample_field_nodes(const ObjectMesh& object, const DirectionTree& tree,
                           const CutsSettings& settings, std::size_t samples) {
   const FieldTracing field(object, tree, settings);

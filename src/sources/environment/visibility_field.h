@@ -47,6 +47,9 @@ struct VisibilityFieldLayout {
                      std::array<float, 8>& weights) const;
 };
 
+// The samples of every field the settings make (VisibilityFieldLayout::sample_count).
+std::size_t field_sample_count(const CutsSettings& settings);
+
 struct VisibilityField {
   VisibilityFieldLayout layout;
   std::uint64_t rays = 0;
