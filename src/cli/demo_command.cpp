@@ -14,6 +14,7 @@
 #include "cli/commands.h"
 #include "cli/demo_room.h"
 #include "cli/precompute_run.h"
+#include "cli/oriented_scene.h"
 #include "cli/reference_run.h"
 #include "cli/serve_run.h"
 #include "common/atomic_file.h"
@@ -165,7 +166,7 @@ int run_demo(const DemoArgs& args) {
     request.progress = args.progress;
     request.sensors_out = dir / "work-plane-reference.csv";
     request.images = {{dir / "reference.png", {}}, {dir / "reference.exr", {}}};
-    run_reference(scene_from_json(document, scene_file), request);
+    run_reference(oriented_scene(scene_from_json(document, scene_file)), request);
   }
 
   std::cout << "\ndemo files in " << fs::absolute(dir).lexically_normal().string() << ":\n"

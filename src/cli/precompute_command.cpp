@@ -22,6 +22,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.h"
+#include "cli/oriented_scene.h"
 #include "cli/precompute_run.h"
 #include "common/input_error.h"
 #include "common/memory.h"
@@ -316,8 +317,8 @@ void run_precompute(const nlohmann::json& document, const std::filesystem::path&
   check_output_folder(output);
   PrecomputeOptions checked = options;
   if (!checked.memory_bytes) set_memory_limit(std::nullopt, 1, checked);
-  precompute_and_write(scene_from_json(document, scene_file), document, scene_file, output,
-                       checked);
+  precompute_and_write(oriented_scene(scene_from_json(document, scene_file)), document, scene_file,
+                       output, checked);
 }
 
 namespace {
@@ -356,7 +357,7 @@ int run_precompute_on_ranks(const PrecomputeArgs& args, PrecomputeOptions option
   try {
     if (mpi.rank() == 0) check_output_folder(args.output);
     document = read_json_file(args.scene);
-    scene.emplace(scene_from_json(document, args.scene));
+    scene.emplace(oriented_scene(scene_from_json(document, args.scene), mpi.rank() == 0));
   } catch (const InputError& e) {
     failure = e.what();
   }

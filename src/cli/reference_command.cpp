@@ -11,6 +11,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.h"
+#include "cli/oriented_scene.h"
 #include "cli/reference_run.h"
 #include "cli/view_args.h"
 #include "common/input_error.h"
@@ -144,7 +145,7 @@ void add_reference_command(CLI::App& app, Action& action) {
         request.images.push_back({args->view.output, display_options(args->view)});
       }
       request.sensors = request.sensors_out.has_value() || request.images.empty();
-      run_reference(load_scene(args->scene), request);
+      run_reference(oriented_scene(load_scene(args->scene)), request);
       return 0;
     };
   });
