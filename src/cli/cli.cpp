@@ -44,6 +44,7 @@ int run_cli(int argc, char** argv) {
   Action action;
   add_reference_command(app, action);
   add_info_command(app, action);
+  add_import_command(app, action);
   add_precompute_command(app, action);
   add_render_command(app, action);
   add_probe_command(app, action);

@@ -14,6 +14,7 @@ using Action = std::function<int()>;
 
 void add_reference_command(CLI::App& app, Action& action);
 void add_info_command(CLI::App& app, Action& action);
+void add_import_command(CLI::App& app, Action& action);
 void add_demo_command(CLI::App& app, Action& action);
 void add_precompute_command(CLI::App& app, Action& action);
 void add_render_command(CLI::App& app, Action& action);

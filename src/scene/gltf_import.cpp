@@ -28,6 +28,14 @@ struct Affine {
   std::array<std::array<double, 4>, 3> m{{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}}};
 };
 
+// KHR_materials_transmission's transmissionFactor (0 without the extension or the key).
+double transmission_factor(const tinygltf::Material& m) {
+  const auto extension = m.extensions.find("KHR_materials_transmission");
+  if (extension == m.extensions.end() || !extension->second.IsObject()) return 0;
+  const tinygltf::Value& factor = extension->second.Get("transmissionFactor");
+  return factor.IsNumber() ? factor.GetNumberAsDouble() : 0;
+}
+
 Affine operator*(const Affine& a, const Affine& b) {
   Affine r;
   for (int i = 0; i < 3; ++i) {
@@ -447,6 +455,7 @@ class GltfReader {
           imported.metallic = unit(pbr.metallicFactor, "metallicFactor");
           imported.roughness = unit(pbr.roughnessFactor, "roughnessFactor");
         }
+        imported.transparent = m.alphaMode == "BLEND" || transmission_factor(m) > 0;
         mesh_.materials.push_back(imported);
         const tinygltf::TextureInfo& base_colour = pbr.baseColorTexture;
         if (base_colour.index >= 0) {

@@ -21,6 +21,10 @@ struct ImportedMaterial {
   // glTF metallicFactor / roughnessFactor, when the file gives either (scene/scene.h Material).
   bool glossy = false;
   double metallic = 0, roughness = 1;
+  // See-through in the file: glTF KHR_materials_transmission (a transmissionFactor above 0) or
+  // alphaMode BLEND, an OBJ material's dissolve `d` below 1 (or `Tr` above 0). The scene loader
+  // ignores it; `relight import` makes such glass window portals.
+  bool transparent = false;
 };
 
 struct ImportedMesh {

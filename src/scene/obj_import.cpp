@@ -260,7 +260,10 @@ ImportedMesh import_obj(const std::filesystem::path& file) {
         mesh.materials.push_back({kDefaultImportMaterialName, kDefaultImportAlbedo});
       } else {
         const tinyobj::material_t& m = obj_materials[static_cast<std::size_t>(id)];
-        mesh.materials.push_back({m.name, Rgb{m.diffuse[0], m.diffuse[1], m.diffuse[2]}});
+        ImportedMaterial imported{m.name, Rgb{m.diffuse[0], m.diffuse[1], m.diffuse[2]}};
+        // tinyobjloader reads `Tr` as 1 − dissolve into the same field.
+        imported.transparent = m.dissolve < 1;
+        mesh.materials.push_back(imported);
       }
     }
     return it->second;
