@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/input_error.h"
+#include "common/installed_files.h"
 #include "common/read_file.h"
 #include "math/srgb.h"
 
@@ -73,13 +74,11 @@ void check_step_frame(const fs::path& file) {
 
 // The last non-empty line of a text, for a message.
 std::string last_line(const std::string& text) {
-  std::string line;
-  std::size_t end = text.find_last_not_of("\r\n ");
+  const std::size_t end = text.find_last_not_of("\r\n ");
   if (end == std::string::npos) return "";
-  const std::size_t begin = text.rfind('\n', end);
-  line = text.substr(begin == std::string::npos ? 0 : begin + 1,
-                     end + 1 - (begin == std::string::npos ? 0 : begin + 1));
-  return line;
+  const std::size_t newline = text.rfind('\n', end);
+  const std::size_t begin = newline == std::string::npos ? 0 : newline + 1;
+  return text.substr(begin, end + 1 - begin);
 }
 
 // Runs `node ifc-extract.mjs MODEL OUT` and waits; its stderr goes to `log`.
@@ -213,18 +212,10 @@ BuildingModel parse_extract(const nlohmann::json& doc, const fs::path& file) {
   return model;
 }
 
-// Where an installed relight keeps the IFC reader: PREFIX/share/relight/importer.
-fs::path installed_importer_folder() {
-  std::error_code ec;
-  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  if (ec) return {};
-  return exe.parent_path().parent_path() / "share" / "relight" / "importer";
-}
-
 }  // namespace
 
 fs::path importer_folder() {
-  fs::path installed = installed_importer_folder();
+  fs::path installed = installed_share_folder("importer");
   std::error_code ec;
   if (!installed.empty() && fs::is_regular_file(installed / "ifc-extract.mjs", ec))
     return installed;

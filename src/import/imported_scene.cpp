@@ -199,36 +199,48 @@ std::function<std::uint32_t(Facing)> opaque_material(MaterialTable& materials,
   };
 }
 
-// The glass triangles of a mesh file split into windows: groups joined by shared corners.
-std::vector<TriangleSoup> split_windows(const ModelPart& part) {
-  std::vector<std::uint32_t> parent(part.positions.size());
-  for (std::uint32_t i = 0; i < parent.size(); ++i) parent[i] = i;
-  const std::function<std::uint32_t(std::uint32_t)> root = [&](std::uint32_t i) {
+// Groups of triangles joined by shared corners (matched to 0.1 mm).
+std::vector<std::vector<std::size_t>> connected_groups(const std::vector<Vec3>& positions,
+                                                       const std::vector<Triangle>& triangles,
+                                                       const std::vector<std::size_t>& subset) {
+  std::map<std::array<long long, 3>, std::size_t> corner_group;
+  std::vector<std::size_t> parent(subset.size());
+  for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = i;
+  const auto root = [&](std::size_t i) {
     while (parent[i] != i) i = parent[i] = parent[parent[i]];
     return i;
   };
-  std::map<std::array<long long, 3>, std::uint32_t> same;
-  for (std::uint32_t i = 0; i < part.positions.size(); ++i) {
-    const Vec3 p = part.positions[i];
-    const std::array<long long, 3> key{std::llround(p.x * 1e4), std::llround(p.y * 1e4),
-                                       std::llround(p.z * 1e4)};
-    const auto [it, added] = same.try_emplace(key, i);
-    if (!added) parent[root(i)] = root(it->second);
+  for (std::size_t i = 0; i < subset.size(); ++i)
+    for (const std::uint32_t v : triangles[subset[i]]) {
+      const Vec3 p = positions[v];
+      const std::array<long long, 3> key{std::llround(p.x * 1e4), std::llround(p.y * 1e4),
+                                         std::llround(p.z * 1e4)};
+      const auto [it, added] = corner_group.try_emplace(key, i);
+      if (!added) parent[root(i)] = root(it->second);
+    }
+  std::map<std::size_t, std::size_t> index;
+  std::vector<std::vector<std::size_t>> groups;
+  for (std::size_t i = 0; i < subset.size(); ++i) {
+    const auto [it, added] = index.try_emplace(root(i), groups.size());
+    if (added) groups.emplace_back();
+    groups[it->second].push_back(subset[i]);
   }
-  for (const Triangle& t : part.triangles) {
-    parent[root(t[1])] = root(t[0]);
-    parent[root(t[2])] = root(t[0]);
-  }
-  std::map<std::uint32_t, std::size_t> group;
+  return groups;
+}
+
+// The glass triangles of a mesh file split into windows: groups joined by shared corners.
+std::vector<TriangleSoup> split_windows(const ModelPart& part) {
+  std::vector<std::size_t> all(part.triangles.size());
+  for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
   std::vector<TriangleSoup> windows;
-  for (const Triangle& t : part.triangles) {
-    const auto [it, added] = group.try_emplace(root(t[0]), windows.size());
-    if (added) windows.emplace_back();
-    TriangleSoup& w = windows[it->second];
-    const auto base = static_cast<std::uint32_t>(w.positions.size());
-    for (const std::uint32_t v : t) w.positions.push_back(part.positions[v]);
-    w.triangles.push_back({base, base + 1, base + 2});
-    w.triangle_material.push_back(0);
+  for (const auto& group : connected_groups(part.positions, part.triangles, all)) {
+    TriangleSoup& w = windows.emplace_back();
+    for (const std::size_t t : group) {
+      const auto base = static_cast<std::uint32_t>(w.positions.size());
+      for (const std::uint32_t v : part.triangles[t]) w.positions.push_back(part.positions[v]);
+      w.triangles.push_back({base, base + 1, base + 2});
+      w.triangle_material.push_back(0);
+    }
   }
   return windows;
 }
@@ -305,35 +317,6 @@ std::optional<fs::path> fixture_photometry(const ModelElement& e, const ImportOp
     if (!key.empty() && found != options.photometry.end()) return found->second;
   }
   return std::nullopt;
-}
-
-// Groups of triangles joined by shared corners (matched to 0.1 mm).
-std::vector<std::vector<std::size_t>> connected_groups(const std::vector<Vec3>& positions,
-                                                       const std::vector<Triangle>& triangles,
-                                                       const std::vector<std::size_t>& subset) {
-  std::map<std::array<long long, 3>, std::size_t> corner_group;
-  std::vector<std::size_t> parent(subset.size());
-  for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = i;
-  const auto root = [&](std::size_t i) {
-    while (parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
-  };
-  for (std::size_t i = 0; i < subset.size(); ++i)
-    for (const std::uint32_t v : triangles[subset[i]]) {
-      const Vec3 p = positions[v];
-      const std::array<long long, 3> key{std::llround(p.x * 1e4), std::llround(p.y * 1e4),
-                                         std::llround(p.z * 1e4)};
-      const auto [it, added] = corner_group.try_emplace(key, i);
-      if (!added) parent[root(i)] = root(it->second);
-    }
-  std::map<std::size_t, std::size_t> index;
-  std::vector<std::vector<std::size_t>> groups;
-  for (std::size_t i = 0; i < subset.size(); ++i) {
-    const auto [it, added] = index.try_emplace(root(i), groups.size());
-    if (added) groups.emplace_back();
-    groups[it->second].push_back(subset[i]);
-  }
-  return groups;
 }
 
 // The floors of a model without spaces: faces that point up with room above them (a surface

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "common/input_error.h"
+#include "common/installed_files.h"
 
 namespace relight {
 
@@ -45,23 +46,11 @@ HttpResponse text(int status, std::string body) {
 
 }  // namespace
 
-namespace {
-
-// Where `cmake --install` puts the client: PREFIX/share/relight/studio beside PREFIX/bin/relight.
-fs::path installed_client_folder() {
-  std::error_code ec;
-  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  if (ec) return {};
-  return exe.parent_path().parent_path() / "share" / "relight" / "studio";
-}
-
-}  // namespace
-
 fs::path studio_client_folder(const fs::path& requested) {
   fs::path folder = requested;
   if (folder.empty()) {
     // An installed relight serves its installed client; a build tree serves the checkout's.
-    const fs::path installed = installed_client_folder();
+    const fs::path installed = installed_share_folder("studio");
     std::error_code ec;
     folder = !installed.empty() && fs::is_regular_file(installed / "index.html", ec)
                  ? installed

@@ -1,0 +1,14 @@
+#include "common/installed_files.h"
+
+#include <system_error>
+
+namespace relight {
+
+std::filesystem::path installed_share_folder(std::string_view name) {
+  std::error_code ec;
+  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (ec) return {};
+  return exe.parent_path().parent_path() / "share" / "relight" / name;
+}
+
+}  // namespace relight
