@@ -36,8 +36,14 @@ const tStart = performance.now();
 const api = new W.IfcAPI();
 await api.Init();
 try { api.SetLogLevel(W.LogLevel.LOG_LEVEL_OFF ?? 6); } catch { }
-const m = api.OpenModel(new Uint8Array(fs.readFileSync(inFile)), { COORDINATE_TO_ORIGIN: false });
-if (m < 0) { console.error('web-ifc cannot open it as IFC'); process.exit(3); }
+let m = -1;
+try {
+  m = api.OpenModel(new Uint8Array(fs.readFileSync(inFile)), { COORDINATE_TO_ORIGIN: false });
+} catch (e) {
+  console.error(String(e?.message ?? e)); // one line: relight import quotes it
+  process.exit(3);
+}
+if (m < 0) { console.error('the model did not open'); process.exit(3); }
 const schema = api.GetModelSchema(m);
 // web-ifc 0.0.78 bakes a Z-up -> Y-up rotation (three.js convention) into every
 // PlacedGeometry.flatTransformation: (x, y, z)_ifc -> (x, z, -y). (SetGeometryTransformation(identity)
