@@ -1,5 +1,6 @@
 // `relight import MODEL -o SCENE.json [--storey NAME|N] [--space NAME]... [--work-plane M]
-// [--border M] [--furniture static|objects] [--window-material PATTERN]... [--photometry-map F]`:
+// [--border M] [--max-edge M] [--furniture static|objects] [--window-material PATTERN]...
+// [--photometry-map F]`:
 // an IFC, glTF or OBJ model made a scene (src/import/imported_scene.h); prints one JSON line of
 // what it found.
 #include <CLI/CLI.hpp>
@@ -25,7 +26,7 @@ struct ImportArgs {
   std::filesystem::path model, output, photometry_map;
   std::string storey, furniture = "static";
   std::vector<std::string> spaces, window_materials;
-  double work_plane = 0.8, border = 0.5;
+  double work_plane = 0.8, border = 0.5, max_edge = 0;
 };
 
 int run_import(const ImportArgs& args) {
@@ -41,6 +42,7 @@ int run_import(const ImportArgs& args) {
   options.work_plane = args.work_plane;
   options.border = args.border;
   options.furniture_objects = args.furniture == "objects";
+  if (args.max_edge > 0) options.max_edge = args.max_edge;
   if (!args.photometry_map.empty()) options.photometry = read_photometry_map(args.photometry_map);
   BuildingModel model;
   if (ext == ".ifc") {
@@ -71,6 +73,9 @@ void add_import_command(CLI::App& app, Action& action) {
       ->check(CLI::Range(0.0, 3.0));
   cmd->add_option("--border", args->border, "band kept free along the walls, m")
       ->check(CLI::Range(0.0, 5.0));
+  cmd->add_option("--max-edge", args->max_edge,
+                  "longest edge of the receivers' mesh, m (precompute.max_edge; default 0.25)")
+      ->check(CLI::Range(0.02, 10.0));
   cmd->add_option("--furniture", args->furniture, "furniture static or movable objects")
       ->check(CLI::IsMember({"static", "objects"}));
   cmd->add_option("--window-material", args->window_materials,

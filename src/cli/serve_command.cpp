@@ -1,5 +1,6 @@
-// `relight serve SCENE.rlt [--host 127.0.0.1] [--port 8080] [--client DIR] [--photometry DIR]`: the
-// studio (docs/studio.md) on a precomputed scene: prints the URL to open and serves until Ctrl-C.
+// `relight serve SCENE.rlt [--host 127.0.0.1] [--port 8080] [--client DIR] [--photometry DIR]
+// [--models DIR]`: the studio (docs/studio.md) on a precomputed scene: prints the URL to open
+// and serves until Ctrl-C, and serves a model opened in the studio next.
 // The protocol is docs/studio-protocol.md; the server serve/studio_server.h.
 #include <iostream>
 #include <memory>
@@ -16,6 +17,7 @@ void add_serve_command(CLI::App& app, Action& action) {
   auto options = std::make_shared<StudioOptions>();
   auto client = std::make_shared<std::string>();
   auto photometry = std::make_shared<std::string>();
+  auto models = std::make_shared<std::string>();
   CLI::App* cmd =
       app.add_subcommand("serve", "Serve the studio (a browser client) on a precomputed scene");
   cmd->add_option("scene", *rlt, "precomputed scene (.rlt)")->required();
@@ -24,10 +26,14 @@ void add_serve_command(CLI::App& app, Action& action) {
   cmd->add_option("--photometry", *photometry,
                   "folder of IES/LDT files for the studio's catalogue (uploads go to its "
                   "uploads/ folder)");
-  cmd->callback([rlt, options, client, photometry, &action] {
-    action = [rlt, options, client, photometry] {
+  cmd->add_option("--models", *models,
+                  "folder where the studio's \"Open model…\" keeps imported and precomputed "
+                  "models (default: models/ beside SCENE.rlt)");
+  cmd->callback([rlt, options, client, photometry, models, &action] {
+    action = [rlt, options, client, photometry, models] {
       options->client = *client;
       options->photometry = *photometry;
+      options->models = *models;
       return serve_studio(*rlt, *options);
     };
   });

@@ -4,10 +4,16 @@
 
 namespace relight {
 
-std::filesystem::path installed_share_folder(std::string_view name) {
+std::filesystem::path running_program() {
   std::error_code ec;
-  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
   if (ec) return {};
+  return exe;
+}
+
+std::filesystem::path installed_share_folder(std::string_view name) {
+  const std::filesystem::path exe = running_program();
+  if (exe.empty()) return {};
   return exe.parent_path().parent_path() / "share" / "relight" / name;
 }
 

@@ -8,6 +8,9 @@
 
 namespace relight {
 
+// The running program's own file (to run it again as a child); empty when it cannot be read.
+std::filesystem::path running_program();
+
 // PREFIX/share/relight/`name` for the running program; empty when its path cannot be read.
 std::filesystem::path installed_share_folder(std::string_view name);
 

@@ -1,6 +1,7 @@
 #include "common/progress.h"
 
 #include <cstdio>
+#include <cstdlib>
 
 #include <unistd.h>
 
@@ -57,6 +58,19 @@ void Progress::finish() {
   if (!enabled_) return;
   if (last_permille_.load() < 1000) draw(total_);
   if (tty_) std::fputc('\n', stderr);
+}
+
+std::optional<ProgressLine> parse_progress_line(const std::string& line) {
+  const std::size_t open = line.find(" [");
+  const std::size_t close = line.find("] ", open == std::string::npos ? 0 : open);
+  if (open == std::string::npos || close == std::string::npos) return std::nullopt;
+  if (line.find_first_not_of("#.", open + 2) != close) return std::nullopt;
+  const char* number = line.c_str() + close + 2;
+  char* end = nullptr;
+  const double percent = std::strtod(number, &end);
+  if (end == number || *end != '%' || !(percent >= 0 && percent <= 100)) return std::nullopt;
+  const std::size_t last = line.find_last_not_of(' ', open);
+  return ProgressLine{line.substr(0, last == std::string::npos ? 0 : last + 1), percent / 100};
 }
 
 }  // namespace relight

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cstdint>
 #include <mutex>
+#include <optional>
 #include <string>
 
 namespace relight {
@@ -35,5 +36,14 @@ class Progress {
   std::chrono::steady_clock::time_point start_;
   bool finished_ = false;
 };
+
+// A line Progress prints when stderr is not a terminal ("LABEL [###...] 40.0% 12.3s"), read
+// back by a program that runs this one (the studio's precompute of an uploaded model); nullopt
+// for any other line.
+struct ProgressLine {
+  std::string label;
+  double fraction = 0;  // 0..1
+};
+std::optional<ProgressLine> parse_progress_line(const std::string& line);
 
 }  // namespace relight

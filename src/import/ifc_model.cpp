@@ -1,26 +1,22 @@
 #include "import/ifc_model.h"
 
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "common/child_process.h"
 #include "common/input_error.h"
 #include "common/installed_files.h"
 #include "common/read_file.h"
 #include "math/srgb.h"
-
-extern char** environ;
 
 namespace relight {
 namespace fs = std::filesystem;
@@ -72,41 +68,18 @@ void check_step_frame(const fs::path& file) {
     fail_input(file.string(), "truncated: the IFC file does not end with END-ISO-10303-21;");
 }
 
-// The last non-empty line of a text, for a message.
-std::string last_line(const std::string& text) {
-  const std::size_t end = text.find_last_not_of("\r\n ");
-  if (end == std::string::npos) return "";
-  const std::size_t newline = text.rfind('\n', end);
-  const std::size_t begin = newline == std::string::npos ? 0 : newline + 1;
-  return text.substr(begin, end + 1 - begin);
-}
-
-// Runs `node ifc-extract.mjs MODEL OUT` and waits; its stderr goes to `log`.
-int run_extractor(const fs::path& model, const fs::path& out, const fs::path& log) {
+// Runs `node ifc-extract.mjs MODEL OUT` and waits: its exit code and the end of its stderr.
+ChildResult run_extractor(const fs::path& model, const fs::path& out) {
   const fs::path script = importer_folder() / "ifc-extract.mjs";
   if (!fs::is_regular_file(script))
     fail_input(model.string(), "the IFC reader " + script.string() + " is missing");
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, 2, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
-  std::string node = "node", script_arg = script.string(), model_arg = model.string(),
-              out_arg = out.string();
-  std::vector<char*> argv{node.data(), script_arg.data(), model_arg.data(), out_arg.data(),
-                          nullptr};
-  pid_t pid = 0;
-  const int spawned = posix_spawnp(&pid, "node", &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (spawned != 0)
+  try {
+    return run_child({"node", script.string(), model.string(), out.string()});
+  } catch (const std::runtime_error&) {
     fail_input(
         model.string(),
         "reading IFC needs node (Debian package nodejs) and web-ifc: run scripts/bootstrap.sh");
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0) {
-    if (errno != EINTR) fail_input(model.string(), "the IFC reader could not be waited for");
   }
-  return WIFEXITED(status) ? WEXITSTATUS(status)
-                           : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
 }
 
 std::string text_of(const nlohmann::json& value) {
@@ -225,10 +198,10 @@ fs::path importer_folder() {
 BuildingModel read_ifc_model(const fs::path& file) {
   check_step_frame(file);
   const ScratchFolder scratch;
-  const fs::path out = scratch.path() / "model.json", log = scratch.path() / "reader.log";
-  const int status = run_extractor(file, out, log);
-  if (status != 0) {
-    const std::string why = last_line(read_file(log));
+  const fs::path out = scratch.path() / "model.json";
+  const ChildResult reader = run_extractor(file, out);
+  if (reader.status != 0) {
+    const std::string why = last_line(reader.err_end);
     if (why.find("web-ifc is not installed") != std::string::npos)
       fail_input(file.string(), "reading IFC needs web-ifc: run scripts/bootstrap.sh");
     fail_input(file.string(),

@@ -578,6 +578,7 @@ ImportSummary write_imported_scene(const BuildingModel& model, const ImportOptio
   if (!sensors.empty()) scene["sensors"] = sensors;
   if (!portals.empty()) scene["portals"] = portals;
   if (!objects_json.empty()) scene["objects"] = objects_json;
+  if (options.max_edge) scene["precompute"] = {{"max_edge", *options.max_edge}};
   if (model.site) {
     scene["site"] = {{"latitude", model.site->latitude},
                      {"longitude", model.site->longitude},

@@ -28,6 +28,9 @@ struct ImportOptions {
   double border = 0.5;                // m kept free along the walls
   double spacing = 0.25;              // m between sensors
   bool furniture_objects = false;     // furniture as movable objects (else static)
+  // The receivers' mesh: `precompute.max_edge` of the scene (else the format's default), for
+  // a storey too large to precompute at the default density.
+  std::optional<double> max_edge;
   // Light fixture type name → photometric file (IES or LDT), from --photometry-map.
   std::map<std::string, std::filesystem::path> photometry;
 };

@@ -140,6 +140,12 @@ ClientMessage parse_client_message(const std::string& text, const Scene& scene,
   } else if (type == "upload") {
     root.expect_keys({"type", "seq", "name", "text"});
     m.request = UploadRequest{root.at("name").string(), root.at("text").string()};
+  } else if (type == "open_model") {
+    root.expect_keys({"type", "seq", "name", "bytes"});
+    const JsonNode bytes = root.at("bytes");
+    const double n = bytes.number();
+    if (n < 1 || n != std::floor(n) || n > 1e15) bytes.fail("expected the file's size in bytes");
+    m.request = OpenModelRequest{root.at("name").string(), static_cast<std::uint64_t>(n)};
   } else if (type == "export_scene") {
     root.expect_keys({"type", "seq"});
     m.request = ExportSceneRequest{};
@@ -151,7 +157,7 @@ ClientMessage parse_client_message(const std::string& text, const Scene& scene,
   } else {
     root.at("type").fail("unknown message type \"" + type +
                          "\" (expected state, pick, distribution, ping, annual, weather_day, "
-                         "optimize, view, upload or export_scene)");
+                         "optimize, view, upload, export_scene or open_model)");
   }
   return m;
 }

@@ -49,6 +49,12 @@ struct UploadRequest {
   std::string name;
   std::string text;
 };
+// "Open model…": a model file the sender is about to send in RLMU chunks (serve/model_opening.h):
+// its name as the client knows it (for its extension and for messages; never a path) and size.
+struct OpenModelRequest {
+  std::string name;
+  std::uint64_t bytes = 0;
+};
 // The scene JSON with the layout shown as ordinary luminaires (runtime/scene_export.h).
 struct ExportSceneRequest {};
 struct PingRequest {};
@@ -84,7 +90,8 @@ inline constexpr std::size_t kMaxClientMessageBytes = std::size_t{8} << 20;
 struct ClientMessage {
   std::optional<std::uint32_t> seq;
   std::variant<StateRequest, PickRequest, DistributionRequest, PingRequest, AnnualRequest,
-               WeatherDayRequest, OptimizeRequest, ViewRequest, UploadRequest, ExportSceneRequest>
+               WeatherDayRequest, OptimizeRequest, ViewRequest, UploadRequest, ExportSceneRequest,
+               OpenModelRequest>
       request;
 };
 

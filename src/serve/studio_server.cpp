@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "common/input_error.h"
+#include "common/installed_files.h"
 #include "design/optimize.h"
 #include "light/distribution.h"
 #include "material/metallic_roughness.h"
@@ -22,6 +23,7 @@
 #include "runtime/relit_scene.h"
 #include "runtime/scene_export.h"
 #include "scene/json_node.h"
+#include "serve/model_opening.h"
 #include "serve/photometry_catalogue.h"
 #include "serve/static_files.h"
 #include "serve/studio_frames.h"
@@ -128,6 +130,9 @@ struct StudioServer::Impl {
   std::thread optimizer;
   std::atomic<bool> optimize_busy{false};
   std::unique_ptr<RelitScene> design_scene;  // only the optimizer thread uses it
+  std::optional<fs::path> next_scene;        // guarded by `mutex`
+  // "Open model…"; last, so that it ends (and its thread stops) before the transport it sends on.
+  std::unique_ptr<ModelOpening> opening;
 
   const TransferFile& transfer() const { return relit->transfer(); }
   const Scene& scene() const { return relit->scene(); }
@@ -288,16 +293,27 @@ struct StudioServer::Impl {
   }
 
   void on_close(ConnectionId id) {
+    opening->disconnected(id);
     std::lock_guard lock(mutex);
     clients.erase(id);
     eyes.erase(id);
     views_due.erase(id);
   }
 
+  void broadcast_json(const nlohmann::json& message) {
+    const std::string text = text_of(message);
+    std::lock_guard lock(mutex);
+    for (const ConnectionId c : clients) transport->send(c, text, false);
+  }
+
   void on_message(ConnectionId id, const std::string& payload, bool binary) {
     std::optional<std::uint32_t> seq;
     try {
-      if (binary) fail_input("message", "binary messages are not part of the protocol (send JSON)");
+      if (binary) {  // only the pieces of a model being opened
+        const nlohmann::json reply = opening->receive(id, payload);
+        if (!reply.is_null()) send_json(id, reply);
+        return;
+      }
       ClientMessage m = parse_client_message(payload, scene(), seq);
       std::visit([&](auto& request) { handle(id, m.seq, request); }, m.request);
     } catch (const InputError& e) {
@@ -427,9 +443,7 @@ struct StudioServer::Impl {
       listing = catalogue_message(*catalogue);
     }
     send_json(id, {{"type", "uploaded"}, {"seq", seq_json(seq)}, {"entry", entry}});
-    const std::string text = text_of(listing);
-    std::lock_guard lock(mutex);
-    for (const ConnectionId c : clients) transport->send(c, text, false);
+    broadcast_json(listing);
   }
 
   // The scene with the layout of the latest state received (one sent just before this message
@@ -544,6 +558,19 @@ struct StudioServer::Impl {
     });
   }
 
+  void handle(ConnectionId id, std::optional<std::uint32_t> seq, const OpenModelRequest& r) {
+    send_json(id, opening->begin(id, seq, r.name, r.bytes));
+  }
+
+  // A model precomputed: run() ends and the caller serves it (StudioServer::next_scene).
+  void open_next(const fs::path& next) {
+    {
+      std::lock_guard lock(mutex);
+      next_scene = next;
+    }
+    transport->stop();
+  }
+
   void handle(ConnectionId id, std::optional<std::uint32_t>, const ViewRequest& r) {
     {
       std::lock_guard lock(mutex);
@@ -613,6 +640,12 @@ StudioServer::StudioServer(const fs::path& rlt, const StudioOptions& options)
   } catch (const std::runtime_error& e) {
     fail_input("--host/--port", e.what());
   }
+  ModelOpeningEvents events;
+  events.broadcast = [&s](const nlohmann::json& message) { s.broadcast_json(message); };
+  events.opened = [&s](const fs::path& next) { s.open_next(next); };
+  const fs::path models =
+      options.models.empty() ? fs::absolute(rlt).parent_path() / "models" : options.models;
+  s.opening = std::make_unique<ModelOpening>(models, running_program(), std::move(events));
   s.worker = std::thread([&s] { s.work(); });
 }
 
@@ -648,6 +681,11 @@ void StudioServer::run() {
 
 void StudioServer::stop() {
   impl_->transport->stop();
+}
+
+std::optional<fs::path> StudioServer::next_scene() const {
+  std::lock_guard lock(impl_->mutex);
+  return impl_->next_scene;
 }
 
 }  // namespace relight

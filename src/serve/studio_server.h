@@ -3,12 +3,15 @@
 // are validated as they arrive and coalesced while the worker is busy (latest state wins);
 // every client then gets the new state and the new radiance frame. Picks, distribution
 // profiles and pings are answered on the network thread from the latest frame, so they never
-// wait for a relight. Malformed messages get an `error` reply and change nothing.
+// wait for a relight. Malformed messages get an `error` reply and change nothing. A model a
+// client opens (serve/model_opening.h) ends run() once it is precomputed, with next_scene()
+// naming it, so that the caller serves it next.
 #pragma once
 
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace relight {
@@ -20,6 +23,9 @@ struct StudioOptions {
   // The photometry catalogue's folder (serve/photometry_catalogue.h); empty: no catalogue, and
   // uploads are refused.
   std::filesystem::path photometry;
+  // Where "Open model…" keeps the models it imports and precomputes (serve/model_opening.h);
+  // empty: a `models` folder beside the .rlt.
+  std::filesystem::path models;
   bool stop_on_signals = true;  // Ctrl-C / SIGTERM end run()
 };
 
@@ -36,8 +42,11 @@ class StudioServer {
   std::string url() const;  // http://HOST:PORT/
   // The folder the client's files are served from (serve/static_files.h).
   const std::filesystem::path& client_folder() const;
-  void run();   // serves until stop() or a signal
+  void run();   // serves until stop(), a signal, or a model opened
   void stop();  // from any thread
+  // After run(): the .rlt of a model "Open model…" precomputed, to be served next (at the same
+  // address); nullopt when run() ended for another reason.
+  std::optional<std::filesystem::path> next_scene() const;
 
  private:
   struct Impl;

@@ -19,6 +19,7 @@ import { layoutLuminaires } from './luminaire_model.js';
 import { LuminairePanel } from './luminaires.js';
 import { Markers } from './markers.js';
 import { MaterialPanel } from './materials.js';
+import { ModelOpener } from './open_model.js';
 import { ObjectPanel, ObjectsView } from './objects.js';
 import { OptimizePanel } from './optimize.js';
 import { decodeFrame, decodeGeometry, decodeGlossyView, decodeObjects, halfToFloat, messages, splitGlossyView } from './protocol.js';
@@ -70,6 +71,10 @@ const connection = new Connection(`${proto}//${location.host}/ws`, {
   text: onText,
   binary: onBinary,
   clientError,
+  // The server came back after reopening on a model this page saw opened: show it afresh.
+  open: () => {
+    if (opener.reopening) location.reload();
+  },
   close: () => {
     session.hello = null;
     session.geometry = false;
@@ -85,6 +90,8 @@ const sendMessage = (message) => {
   const seq = connection.nextSeq();
   return connection.send({ ...message, seq }) ? seq : null;
 };
+const opener = new ModelOpener($('model-open'), $('model-status'), sendMessage, (bytes) => connection.sendRaw(bytes));
+api.modelMessages = opener.messages;
 // The catalogue's armed card places a luminaire with the next click in the view.
 const catalogue = new CataloguePanel($('catalogue'), sendMessage, (entry) => layout.setMode(entry ? { kind: 'place', entry } : null));
 // Takes presses on luminaire markers on #stage in the capture phase, ahead of everything below.
@@ -193,6 +200,8 @@ function onText(msg) {
       api.uploads.push(msg.entry);
       notice(`Uploaded ${msg.entry.name}: in the catalogue as ${msg.entry.id}`);
       return;
+    case 'model':
+      return opener.onModel(msg);
     case 'scene':
       api.exports++;
       return layout.onExport(msg);
@@ -222,6 +231,7 @@ function onText(msg) {
         notice(`Optimise: ${msg.message}`, 'error');
         return;
       }
+      if (opener.onError(msg)) return;
       const undone = store.refused(msg.seq);
       notice(`Server: ${msg.message}${undone ? ' (the change was undone)' : ''}`, 'error');
       const p = session.picks.get(msg.seq);
