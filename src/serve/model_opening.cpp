@@ -87,15 +87,25 @@ struct ModelOpening::Impl {
     stage = Stage::idle;
   }
 
-  // A child's error as the designer should read it: its last line, without "error: " and with
-  // the server's paths replaced by the model's name and the files' own names.
-  std::string reason(const ChildResult& r, const char* what) const {
-    std::string line = last_line(r.err_end);
-    if (line.rfind("error: ", 0) == 0) line.erase(0, 7);
+  // A child's message as the designer should read it: without its "error: " or "warning: " and
+  // with the server's paths replaced by the model's name and the files' own names.
+  std::string tidy(std::string line, std::string_view prefix) const {
+    if (line.rfind(prefix, 0) == 0) line.erase(0, prefix.size());
     replace_all(line, model.string(), name);
     replace_all(line, (folder / "").string(), "");
-    if (line.empty()) line = std::string(what) + " ended with status " + std::to_string(r.status);
     return line;
+  }
+
+  std::string reason(const ChildResult& r, const char* what) const {
+    const std::string line = tidy(last_line(r.err_end), "error: ");
+    return line.empty() ? std::string(what) + " ended with status " + std::to_string(r.status)
+                        : line;
+  }
+
+  // The server is stopping: what the model left so far goes with it.
+  void abandon() {
+    std::lock_guard lock(mutex);
+    drop();
   }
 
   void run() {
@@ -106,7 +116,10 @@ struct ModelOpening::Impl {
     try {
       const ChildResult imported =
           run_child({program.string(), "import", model.string(), "-o", scene.string()}, options);
-      if (cancel) return;
+      if (cancel) {
+        abandon();
+        return;
+      }
       if (imported.status != 0) throw InputError(reason(imported, "the import"));
       nlohmann::json summary = nlohmann::json::parse(last_line(imported.out), nullptr, false);
       if (summary.is_discarded()) summary = nullptr;
@@ -116,7 +129,7 @@ struct ModelOpening::Impl {
 
       nlohmann::json warnings = nlohmann::json::array();
       options.on_error_line = [&](const std::string& line) {
-        if (line.rfind("warning: ", 0) == 0) warnings.push_back(line.substr(9));
+        if (line.rfind("warning: ", 0) == 0) warnings.push_back(tidy(line, "warning: "));
         const std::optional<ProgressLine> p = parse_progress_line(line);
         if (!p) return;
         nlohmann::json progress = message("precomputing");
@@ -126,7 +139,10 @@ struct ModelOpening::Impl {
       };
       const ChildResult precomputed =
           run_child({program.string(), "precompute", scene.string(), "-o", rlt.string()}, options);
-      if (cancel) return;
+      if (cancel) {
+        abandon();
+        return;
+      }
       if (precomputed.status != 0) throw InputError(reason(precomputed, "the precompute"));
       nlohmann::json opening = message("opening");
       opening["scene"] = rlt.filename().string();

@@ -88,7 +88,7 @@ export class ModelOpener {
       case 'receiving':
         if (this.file && msg.seq === this.seq && msg.done < msg.total) {
           this.show(`sending ${name}: ${percent(msg.done / msg.total)}`, msg.done / msg.total);
-          this.sendPiece(msg.done);
+          this.sendPiece(msg.done).catch((e) => this.fail(`cannot read the file: ${e.message}`));
         }
         return;
       case 'importing':
