@@ -61,6 +61,21 @@ export class LabelLayer {
     return true;
   }
 
+  // A line between two world points (a piece of an isoline); nothing when either end is off
+  // screen or behind the camera.
+  segment(a, b, color = '#fff', width = 1.5) {
+    const s = this.project(a), t = this.project(b);
+    if (!s || !t) return;
+    const ctx = this.ctx;
+    ctx.beginPath();
+    ctx.moveTo(s[0], s[1]);
+    ctx.lineTo(t[0], t[1]);
+    ctx.strokeStyle = color;
+    ctx.lineWidth = width;
+    ctx.stroke();
+    ctx.lineWidth = 1;
+  }
+
   dot(p, color = '#fff', r = 3) {
     const s = this.project(p);
     if (!s) return;

@@ -97,7 +97,7 @@ export class LayoutTools {
     this.selectionText = el('span', { class: 'hint', dataset: { testid: 'layout-selection' } });
     this.selectionBox = el('div', { class: 'layout-selection' });
     const b = (text, testid, title, fn) => el('button', { type: 'button', class: 'small', text, dataset: { testid }, title, onclick: fn });
-    this.dimmer = sliderNumber({ min: 0, max: 1, step: 0.01, value: 1, numberMax: 1e6, testid: 'layout-dimmer', title: 'Dimmer of every selected luminaire', onChange: (v) => this.forSelection((e) => (e.dimmer = v), 'layout-dim') });
+    this.dimmer = sliderNumber({ min: 0, max: 100, step: 0.1, value: 1, numberMax: 1e8, factor: 100, unit: '%', testid: 'layout-dimmer', title: 'Dimmer of every selected luminaire, in % of its photometry', onChange: (v) => this.forSelection((e) => (e.dimmer = v), 'layout-dim') });
     this.selectionBox.append(
       el('div', { class: 'row' }, [this.selectionText]),
       el('div', { class: 'row' }, [

@@ -1,8 +1,9 @@
 // The Luminaires panel: one block per luminaire of the layout (the scene's in hello order, then
 // those the state adds; index i in that order) with on/off
-// (data-testid on-i), a dimmer slider 0..1 (dimmer-i) and a number box that also takes
-// values above 1, colour as the scene's, an RGB chromaticity (colour picker) or a colour
-// temperature (cct_kelvin 1667..25000 K), the distribution type and its parameters
+// (data-testid on-i), a dimmer in % (dimmer-i: a slider 0..100 % and a number box that also
+// takes more), colour as the scene's, an RGB chromaticity (colour picker) or a colour
+// temperature (a logarithmic slider 1800..10000 K; the box takes the state's 1667..25000 K),
+// the distribution type and its parameters
 // (isotropic, cosine_power, curve, ies, ldt; scene format), and aiming: "Aim at a point"
 // (aim-i) makes the next click in the view pick a surface point, which becomes the
 // luminaire's "target" (the lighting-design paper §4.2, Fig. 5). Every change edits the
@@ -10,6 +11,11 @@
 import { cctToRgb, hexToLinear, linearToHex } from './colors.js';
 import { effectiveLuminaire, layoutLuminaires, peakCandela, sampleCurve } from './luminaire_model.js';
 import { el, numberInput, onValue, row, select, setIfIdle, sliderNumber } from './ui.js';
+
+// The colour temperature slider's range (the lamps a designer chooses among), and what a
+// lighting state takes (docs/lighting-state.md), which the number box allows.
+const CCT_SLIDER_K = [1800, 10000];
+const CCT_STATE_K = [1667, 25000];
 
 const DIST_TYPES = [
   ['isotropic', 'isotropic'],
@@ -73,15 +79,17 @@ export class LuminairePanel {
     // Dimmer.
     b.dimmer = sliderNumber({
       min: 0,
-      max: 1,
-      step: 0.01,
-      numberMax: 1e6,
+      max: 100,
+      step: 0.1,
+      numberMax: 1e8,
+      factor: 100,
+      unit: '%',
       value: 1,
       testid: `dimmer-${i}`,
-      title: 'Dimmer: multiplies the photometry (0 = dark, 1 = as specified; the number box takes values above 1)',
+      title: 'Dimmer in % of the photometry (0 % dark, 100 % as specified; the number box takes more than 100 %)',
       onChange: (v) => this._edit(name, (e) => (e.dimmer = v)),
     });
-    details.append(row('Dimmer', b.dimmer.element, 'Multiplier on the luminous intensity, ≥ 0'));
+    details.append(row('Dimmer', b.dimmer.element, 'The luminous intensity in % of the photometry'));
 
     // Colour.
     b.colorMode = select(
@@ -108,12 +116,16 @@ export class LuminairePanel {
       e.color = hexToLinear(hex).map((x) => Number(x.toFixed(4)));
     }));
     b.cct = sliderNumber({
-      min: 1667,
-      max: 25000,
+      min: CCT_SLIDER_K[0],
+      max: CCT_SLIDER_K[1],
+      numberMin: CCT_STATE_K[0],
+      numberMax: CCT_STATE_K[1],
+      log: true,
       step: 1,
       value: 3000,
       unit: 'K',
-      title: 'Correlated colour temperature, 1667–25000 K (2700 K warm white, 4000 K neutral, 6500 K daylight)',
+      testid: `cct-${i}`,
+      title: 'Correlated colour temperature: the slider 1800–10000 K on a logarithmic scale (2700 K warm white, 4000 K neutral, 6500 K daylight); the box takes 1667–25000 K',
       onChange: (v) => this._edit(name, (e) => {
         delete e.color;
         e.cct_kelvin = v;

@@ -115,7 +115,10 @@ const objectsView = new ObjectsView(viewer, store, $('stage'), {
 });
 const sensors = new Sensors(viewer, $('sensors'));
 const rig = new CameraRig(viewer, () => viewPanel.markFree());
+api.orbitCentre = () => rig.controls.target.toArray();
 const viewPanel = new ViewPanel(viewer, rig, markers, $('labels'));
+viewPanel.onPlan = (on) => sensors.setPlanView(on);
+api.isolineSegments = () => sensors.drawnIsolines;
 const luminairePanel = new LuminairePanel($('luminaires'), store, distributions, {
   aim: (i) => startAim(i),
   editCurve: (i) => {
@@ -259,6 +262,11 @@ function onHello(hello) {
   $('scene-name').title = `${hello.scene_file}: ${hello.vertices} vertices, ${hello.triangles} triangles, SH order ${hello.sh_order}, direct light ${hello.direct}`;
   $('overlay-message').textContent = 'Loading geometry…';
   if (hello.protocol !== 1) notice(`Server speaks protocol ${hello.protocol}; this client knows 1`, 'error');
+  rig.setRoom(hello.bounds);
+  // The plan's cut: 1.2 m over the lowest work plane (2 m over a floor), below the ceilings.
+  let workPlane = Infinity;
+  for (const s of hello.sensors ?? []) for (const p of s.points) workPlane = Math.min(workPlane, p[1]);
+  viewPanel.setPlanCut(Number.isFinite(workPlane) ? workPlane + 1.2 : (hello.bounds?.min[1] ?? 0) + 2);
   viewPanel.setCameras(hello.cameras, session.hadView);
   if (!session.hadView && !(hello.cameras || []).length && hello.bounds) rig.frameBounds(hello.bounds);
   session.hadView = true;

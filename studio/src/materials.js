@@ -1,8 +1,9 @@
 // Materials (issue 13; hello.materials and the state's `materials`: docs/lighting-state.md
 // "Materials"): a click on a surface that reads a material (the pick's `material`; not window
 // glass, not a movable object) opens its panel — colour (the base colour: the linear albedo,
-// shown and picked as sRGB), metallic and roughness (data-testid material-color,
-// material-metallic, material-roughness; Reset drops the state's entry) — and every change
+// shown and picked as sRGB) with its reflectance in % beside it, metallic and roughness
+// (data-testid material-color, material-reflectance, material-metallic, material-roughness;
+// Reset drops the state's entry) — and every change
 // edits the state's materials[NAME] live. The server answers an edit with a first frame that is
 // approximate (the edit's light reflected once; #frame-quality says so) and the converged one
 // after it.
@@ -19,6 +20,19 @@ export function linearToHex(rgb) {
 }
 export function hexToLinear(hex) {
   return [1, 3, 5].map((i) => round4(toLinear(parseInt(hex.slice(i, i + 2), 16) / 255)));
+}
+
+// The luminance Y of a linear Rec.709 albedo (the photometric reflectance), in % to 0.1.
+const luminanceY = (rgb) => 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2];
+export const reflectancePercent = (rgb) => Number((100 * luminanceY(rgb)).toFixed(1));
+
+// `rgb` scaled to reflectance `y` (0..1) with its hue kept; a grey of `y` when it is black.
+// Capped where a channel would exceed 1 (a saturated colour cannot reflect as much).
+export function withReflectance(rgb, y) {
+  const now = luminanceY(rgb);
+  if (now <= 0) return [y, y, y].map(round4);
+  const k = Math.min(y / now, 1 / Math.max(...rgb));
+  return rgb.map((c) => round4(c * k));
 }
 
 export class MaterialPanel {
@@ -70,6 +84,21 @@ export class MaterialPanel {
       dataset: { testid: 'material-color' },
     });
     this.color.addEventListener('input', () => this.edit((e) => (e.albedo = hexToLinear(this.color.value))));
+    // The reflectance a designer specifies: the albedo's luminance Y in %. Typing one scales the
+    // colour to it, keeping its hue, as far as no channel exceeds 1.
+    this.reflectance = el('input', {
+      type: 'number', min: 0, max: 100, step: 0.1, class: 'num',
+      value: reflectancePercent(m.albedo),
+      title: 'Reflectance: the share of light the surface reflects (luminance Y of the colour), %',
+      dataset: { testid: 'material-reflectance' },
+    });
+    // On `change` (Enter or leaving the box), not per keystroke: scaling to each partial number
+    // typed would wear the hue down.
+    this.reflectance.addEventListener('change', () => {
+      const percent = Number(this.reflectance.value);
+      if (this.reflectance.value === '' || !(percent >= 0 && percent <= 100)) return;
+      this.edit((e) => (e.albedo = withReflectance(this.effective(this.name).albedo, percent / 100)));
+    });
     this.metallic = sliderNumber({
       min: 0, max: 1, step: 0.01, value: m.metallic, testid: 'material-metallic',
       title: 'Metallic: 0 a dielectric (paint, wood, stone), 1 a metal',
@@ -87,7 +116,7 @@ export class MaterialPanel {
     });
     this.container.append(
       el('div', { class: 'row-label', text: this.name, dataset: { testid: 'material-name' } }),
-      row('Colour', this.color),
+      row('Colour', [this.color, this.reflectance, el('span', { class: 'unit', text: '%' })]),
       row('Metallic', this.metallic.element),
       row('Roughness', this.roughness.element),
       reset,
@@ -98,6 +127,7 @@ export class MaterialPanel {
     if (!this.name) return;
     const m = this.effective(this.name);
     if (document.activeElement !== this.color) this.color.value = linearToHex(m.albedo);
+    if (document.activeElement !== this.reflectance) this.reflectance.value = reflectancePercent(m.albedo);
     this.metallic.set(m.metallic);
     this.roughness.set(m.roughness);
   }

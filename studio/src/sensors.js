@@ -4,7 +4,9 @@
 // style): Eavg, Emin, Emax and the uniformity U0 = Emin / Eavg, all in lx. The readings
 // can be downloaded as CSV (sensor,index,x,y,z,lux).
 import * as THREE from 'three';
+
 import { formatValue, rampColor, scalePosition } from './false_color.js';
+import { gridIsolines, isolineLevels } from './isolines.js';
 import { downloadBlob, el } from './ui.js';
 import { srgbToLinear } from './colors.js';
 
@@ -15,7 +17,10 @@ export class Sensors {
     this.sets = [];
     this.values = new Float32Array(0);
     this.showPoints = true;
-    this.showValues = true;
+    this.planView = false; // readings and isolines drawn whatever the checkboxes say
+    this.drawnIsolines = 0; // isoline segments in the last drawing
+    // Readings are written only when asked: a storey's hundreds of labels would cover the view.
+    this.showValues = false;
     this.object = null;
     // A year-of-daylight map shown instead of the readings (annual.js): {values (per point, NaN
     // where unknown), max (the value at the top of the ramp), format(v) for the labels}.
@@ -92,9 +97,36 @@ export class Sensors {
     this.object.visible = this.showPoints;
   }
 
-  // After each render: readings as labels.
+  // The plan view: readings and isolines drawn whatever the checkboxes say.
+  setPlanView(on) {
+    this.planView = on;
+    this.viewer.requestRender();
+  }
+
+  // After each render: the isolines of every grid set in the plan view (the readings' lux,
+  // each level labelled once a set), then the readings as labels.
   drawLabels(layer) {
-    if (!this.showValues || !this.object) return;
+    if (!this.object) return;
+    this.drawnIsolines = 0;
+    if (this.planView && !this.metric) {
+      for (const s of this.sets) {
+        if (!(s.nu > 1 && s.nv > 1)) continue;
+        const values = this.values.subarray(s.offset, s.offset + s.points.length);
+        let lo = Infinity, hi = -Infinity;
+        for (const v of values) {
+          if (v < lo) lo = v;
+          if (v > hi) hi = v;
+        }
+        for (const level of isolineLevels(lo, hi)) {
+          const segments = gridIsolines(s, values, level);
+          this.drawnIsolines += segments.length;
+          for (const [a, b] of segments) layer.segment(a, b, '#ffffff');
+          const middle = segments[Math.floor(segments.length / 2)];
+          if (middle) layer.label(middle[0], `${formatValue(level)} lx`, { font: '10px system-ui, sans-serif', background: 'rgba(0,0,0,0.75)' });
+        }
+      }
+    }
+    if (!this.showValues && !this.planView) return;
     for (const s of this.sets) {
       s.points.forEach((p, i) => {
         const m = this.metric;

@@ -50,14 +50,28 @@ export function setIfIdle(input, value, prop = 'value') {
   if (input[prop] !== value) input[prop] = value;
 }
 
-// A range slider with a number box beside it. The number box may go beyond the slider's
-// range (e.g. a dimmer above 1) when numberMax allows it. onChange(number).
-export function sliderNumber({ min, max, step, value, numberMax, title, testid, id, unit, onChange }) {
-  const slider = el('input', { type: 'range', min, max, step, title, id, dataset: testid ? { testid } : undefined });
+// A range slider with a number box beside it, both in the units shown: `factor` × the value
+// (a dimmer of 0.5 shown as 50 %), min, max, step and numberMin/numberMax in those units. The
+// number box may go beyond the slider's range (a dimmer above 100 %) within numberMin..
+// numberMax. `log`: the slider moves on a logarithmic scale (colour temperature), its position
+// ln(shown). set(value) and onChange(value) take the value itself.
+export function sliderNumber({ min, max, step, value, numberMin, numberMax, title, testid, id, unit, log = false, factor = 1, onChange }) {
+  const toSlider = (shown) => (log ? Math.log(shown) : shown);
+  const fromSlider = (position) => (log ? Math.round(Math.exp(position) / step) * step : position);
+  const slider = el('input', {
+    type: 'range',
+    min: toSlider(min),
+    max: toSlider(max),
+    step: log ? 'any' : step,
+    title,
+    id,
+    dataset: testid ? { testid } : undefined,
+  });
+  const lowest = numberMin ?? min, highest = numberMax ?? max;
   const number = el('input', {
     type: 'number',
-    min,
-    max: numberMax ?? max,
+    min: lowest,
+    max: highest,
     step,
     title,
     class: 'num',
@@ -65,22 +79,25 @@ export function sliderNumber({ min, max, step, value, numberMax, title, testid, 
   });
   slider.addEventListener('pointerdown', () => (slider._dragging = true));
   slider.addEventListener('pointerup', () => (slider._dragging = false));
+  const place = (shown) => setIfIdle(slider, String(toSlider(Math.min(Math.max(shown, min), max))));
   const set = (v) => {
-    setIfIdle(slider, String(Math.min(Math.max(v, min), max)));
-    if (document.activeElement !== number) number.value = String(round(v, step));
+    place(v * factor);
+    if (document.activeElement !== number) number.value = String(round(v * factor, step));
   };
   set(value);
-  slider.addEventListener('input', () => {
-    number.value = slider.value;
-    onChange(Number(slider.value));
-  });
-  slider.addEventListener('change', () => onChange(Number(slider.value)));
+  const fromSliderEvent = () => {
+    const shown = fromSlider(Number(slider.value));
+    number.value = String(round(shown, step));
+    onChange(shown / factor);
+  };
+  slider.addEventListener('input', fromSliderEvent);
+  slider.addEventListener('change', fromSliderEvent);
   const fromNumber = () => {
     const v = Number(number.value);
     if (number.value === '' || !Number.isFinite(v)) return;
-    const clamped = Math.max(min, numberMax === undefined ? Math.min(v, max) : Math.min(v, numberMax));
-    setIfIdle(slider, String(Math.min(Math.max(clamped, min), max)));
-    onChange(clamped);
+    const clamped = Math.min(Math.max(v, lowest), highest);
+    place(clamped);
+    onChange(clamped / factor);
   };
   number.addEventListener('change', fromNumber);
   number.addEventListener('keydown', (e) => e.key === 'Enter' && fromNumber());

@@ -1,11 +1,15 @@
-// The View panel: camera presets (#camera-preset: the scene's cameras by name, plus "orbit"
-// for a free camera), navigation (orbit or walk), field of view, the display mode
+// The View panel: camera presets (#camera-preset: the scene's cameras by name, "orbit" for a
+// free camera, and "plan view": straight down in false colour, with the sensor grids'
+// isolines and readings), navigation (orbit or walk; walk's eye height), field of view, the display mode
 // (#view-mode: tonemapped, false-lux, false-luminance), exposure in EV100 (#exposure) with
 // automatic exposure (#auto-exposure), the tone curve, the false-colour range and scale,
 // back faces, luminaire markers, a PNG screenshot and the current camera as scene JSON.
 import { screenshot } from './screenshot.js';
 
 const $ = (id) => document.getElementById(id);
+
+// The camera list's entry for the plan view, after the scene's cameras.
+const PLAN = 'plan view';
 
 export class ViewPanel {
   constructor(viewer, rig, markers, labelsCanvas) {
@@ -16,12 +20,21 @@ export class ViewPanel {
     preset.addEventListener('change', () => this.applyPreset(preset.value));
 
     $('nav-mode').addEventListener('change', (e) => {
+      if (e.target.value === 'walk' && rig.plan) this.applyPreset('orbit');
       rig.setMode(e.target.value);
       $('nav-hint').textContent = e.target.value === 'walk'
-        ? 'Walk: W A S D or arrows move, Q / E down / up, Shift runs, drag to look, wheel changes the field of view. Click a surface to read its lux and cd/m²; Esc clears.'
-        : 'Orbit: drag to turn, right-drag to pan, wheel to zoom. Click a surface to read its illuminance and luminance; Esc clears.';
+        ? 'Walk at eye height: W A S D or arrows move (walls stop you), Q / E lower / raise the eye, Shift runs, drag to look, wheel changes the field of view. Click a surface to read its lux and cd/m²; Esc clears.'
+        : 'Orbit about the room\'s centre (double-click a surface to orbit about it): drag to turn, right-drag to pan, wheel to zoom. Click a surface to read its illuminance and luminance; Esc clears.';
       viewer.canvas.focus();
     });
+    const eye = $('eye-height');
+    eye.addEventListener('change', () => {
+      const h = Number(eye.value);
+      if (eye.value !== '' && h >= 0.3 && h <= 3) rig.setEyeHeight(h);
+    });
+    rig.onEyeHeight = (h) => {
+      if (document.activeElement !== eye) eye.value = h.toFixed(2);
+    };
 
     const fov = $('fov');
     fov.addEventListener('input', () => {
@@ -92,6 +105,11 @@ export class ViewPanel {
     free.value = 'orbit';
     free.textContent = 'orbit (free camera)';
     preset.append(free);
+    const plan = document.createElement('option');
+    plan.value = PLAN;
+    plan.textContent = 'plan (from above, false colour, isolines)';
+    plan.title = 'Straight down, north up, the ceilings left out; illuminance in false colour with each sensor grid\'s isolines and readings';
+    preset.append(plan);
     if (keepView) preset.value = 'orbit';
     else if (this.cameras.length) this.applyPreset(this.cameras[0].name);
     else preset.value = 'orbit';
@@ -101,13 +119,35 @@ export class ViewPanel {
     const preset = $('camera-preset');
     preset.value = name;
     const cam = this.cameras.find((c) => c.name === name);
+    const mode = $('view-mode');
+    const setMode = (value) => {
+      mode.value = value;
+      mode.dispatchEvent(new Event('change'));
+    };
+    if (!cam && name === PLAN) {
+      if (!this.rig.plan) this.modeBeforePlan = mode.value;
+      if (this.rig.showPlan(this.planCut)) {
+        setMode('false-lux');
+        this.onPlan?.(true);
+      }
+    } else if (this.rig.plan) {
+      this.rig.leavePlan();
+      setMode(this.modeBeforePlan ?? 'tonemapped');
+      this.onPlan?.(false);
+    }
     if (cam) this.rig.applyPreset(cam);
     $('fov').value = String(this.rig.camera.fov);
     $('fov-value').textContent = `${Math.round(this.rig.camera.fov)}°`;
   }
 
-  // The user moved the camera: no preset any more.
+  // The plan view's cut: the ceilings above it are left out (m; see CameraRig.showPlan).
+  setPlanCut(cut) {
+    this.planCut = cut;
+  }
+
+  // The user moved the camera: no preset any more (the plan stays a plan when panned).
   markFree() {
+    if (this.rig.plan) return;
     $('camera-preset').value = 'orbit';
     $('fov-value').textContent = `${Math.round(this.rig.camera.fov)}°`;
   }

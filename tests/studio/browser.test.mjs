@@ -54,21 +54,21 @@ test('moving the dimmers brightens the pixels; latency is measured', async () =>
       (p) => [p.name, { environment: { type: 'uniform', luminance: 0 } }]));
     window.relightStudio.setState(s);
   }, hello.portals));
-  for (let i = 0; i < count; ++i) await setRange(`dimmer-${i}`, 0.1);
+  for (let i = 0; i < count; ++i) await setRange(`dimmer-${i}`, 10);
   const dim = await pixels();
-  for (let i = 0; i < count; ++i) await setRange(`dimmer-${i}`, 1);
+  for (let i = 0; i < count; ++i) await setRange(`dimmer-${i}`, 100);
   const bright = await pixels();
   assert.ok(bright.mean > dim.mean * 1.5, `mean ${dim.mean} → ${bright.mean}`);
   // Latency: 20 more dimmer moves, each waiting for its frame on screen.
   const start = await page.evaluate(() => window.relightStudio.latencies.length);
-  for (let k = 0; k < 20; ++k) await setRange('dimmer-0', k % 2 ? 1 : 0.5);
+  for (let k = 0; k < 20; ++k) await setRange('dimmer-0', k % 2 ? 100 : 50);
   const latencies = (await page.evaluate(() => window.relightStudio.latencies)).slice(start);
   const sorted = [...latencies].sort((a, b) => a - b);
   const median = sorted[Math.floor(sorted.length / 2)];
   console.log(`latency: state change → frame on screen, ${sorted.length} changes: median ` +
               `${median.toFixed(1)} ms, min ${sorted[0].toFixed(1)} ms, max ${sorted.at(-1).toFixed(1)} ms ` +
-              `(pixels: mean display value ${dim.mean.toFixed(1)} at dimmer 0.1, ` +
-              `${bright.mean.toFixed(1)} at 1)`);
+              `(pixels: mean display value ${dim.mean.toFixed(1)} at dimmer 10 %, ` +
+              `${bright.mean.toFixed(1)} at 100 %)`);
   assert.ok(sorted.length >= 10);
   assert.ok(median < 1000, `median latency ${median} ms`);
 });
@@ -143,7 +143,7 @@ test('a malformed message gets an error reply and the server still answers', asy
   await page.waitForFunction((n) => window.relightStudio.errors.length > n, before.errors);
   await page.evaluate(() => window.relightStudio.send({ type: 'ping', seq: 1 }));
   await page.waitForFunction((n) => window.relightStudio.pongs > n, before.pongs);
-  await setRange('dimmer-0', 0.42);  // and still relights
+  await setRange('dimmer-0', 42);  // and still relights
 });
 
 test('no page errors or console errors', () => {

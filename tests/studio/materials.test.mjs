@@ -155,3 +155,27 @@ test('a metal panel is shaded toward the eye, and its look follows the camera', 
   assert.ok(change > 0.1, `the look follows the eye: ${change}`);
   assert.deepEqual(await page.evaluate(() => window.relightStudio.clientErrors), []);
 });
+
+test('the reflectance box shows the colour\'s Y in % and scales the colour to a typed one', async () => {
+  const albedo = () => page.evaluate(() => window.relightStudio.state().materials?.panel?.albedo);
+  const type = async (percent) => {
+    await testid('material-reflectance').fill(String(percent));
+    await testid('material-reflectance').press('Enter');
+  };
+  const y = (c) => 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2];
+  await page.evaluate(() => window.relightStudio.setState({ materials: { panel: { albedo: [0.6, 0.3, 0.1] } } }));
+  await page.waitForFunction(() => document.querySelector('[data-testid="material-reflectance"]').value === '34.9');
+  await type(50);
+  await page.waitForFunction(() => {
+    const c = window.relightStudio.state().materials?.panel?.albedo;
+    return c && Math.abs(0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2] - 0.5) < 1e-3;
+  });
+  let c = await albedo();
+  assert.ok(Math.abs(c[0] / c[1] - 2) < 1e-3 && Math.abs(c[1] / c[2] - 3) < 1e-2, `the hue kept: ${c}`);
+  // More than the colour can reflect: as far as its red channel reaches 1.
+  await type(90);
+  await page.waitForFunction(() => window.relightStudio.state().materials?.panel?.albedo?.[0] === 1);
+  c = await albedo();
+  assert.ok(Math.abs(y(c) - 0.582) < 2e-3, `capped at Y ${y(c)}`);
+  await page.waitForFunction(() => document.querySelector('[data-testid="material-reflectance"]').value === '58.2');
+});

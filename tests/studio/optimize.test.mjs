@@ -151,7 +151,7 @@ async function assertApplied(msg, cli) {
   for (const [i, l] of hello.luminaires.entries()) {
     const d = msg.state.luminaires[l.name]?.dimmer;
     if (d === undefined) continue;
-    assert.ok(Math.abs(Number(await testid(`dimmer-${i}-value`).inputValue()) - d) <= 1e-3, `${l.name}'s dimmer box`);
+    assert.ok(Math.abs(Number(await testid(`dimmer-${i}-value`).inputValue()) / 100 - d) <= 1e-3, `${l.name}'s dimmer box (%)`);
   }
 }
 
