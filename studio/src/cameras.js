@@ -8,7 +8,8 @@
 // by moving the orbit's centre along the line of sight to that point's depth, so the view does
 // not jump and the eye stays within the room instead of swinging out through a wall; a
 // double-click turns the view to the point clicked and orbits about it exactly.
-// The plan view looks straight down from above the ceilings with them cut away (showPlan).
+// The plan view looks straight down with the ceilings cut away, an elevation level at a wall
+// with the room's near half cut away (showSection).
 // Walk keeps the eye at an eye height (1.6 m, editable) above the floor under it, and stops at
 // walls: W/A/S/D or the arrow keys move, Q/E lower or raise the eye height, Shift runs,
 // dragging looks around. A floor more than a step higher is a wall; one lower is walked down to.
@@ -35,7 +36,7 @@ export class CameraRig {
     this.onEyeHeight = null; // called with the eye height when Q/E change it
     this.room = null; // {centre, min, max} from the scene's bounds
     this.pivot = null; // the point last double-clicked, else null: the room's centre
-    this.plan = null; // in the plan view: {cut, near, far} (the perspective's own near and far)
+    this.plan = null; // in a plan or elevation: {cut, dir, near, far} (near, far: the perspective's own)
     this._ray = new THREE.Raycaster();
     this._makeControls();
     this._walkLoop = null;
@@ -177,19 +178,27 @@ export class CameraRig {
     this.viewer.requestRender();
   }
 
-  // The plan view: straight down onto the room from above, north (−z) up, nearly orthographic
-  // (a 2° field of view from far away), with everything above `cut` (m; the ceilings) left out
-  // by the near plane, which follows the eye as it zooms. Turning is off; pan and zoom work.
-  showPlan(cut) {
+  // A plan or an elevation: the room seen along `direction` ([x, y, z]: straight down for the
+  // plan, level towards a wall for an elevation) from far away, nearly orthographic (a 2° field
+  // of view), with everything before the plane through `cut` (a point) across the line of sight
+  // left out by the near plane — the ceilings over the plan's cut height, the near half of the
+  // room before an elevation's wall — which follows the eye as it zooms. `up`: the picture's
+  // up (north, −z, for the plan). Turning is off; drags pan and the wheel zooms.
+  showSection(direction, up, cut) {
     if (!this.room) return false;
     const { min, max, centre } = this.room;
     if (!this.plan) this.plan = { near: this.camera.near, far: this.camera.far };
-    this.plan.cut = cut;
+    const dir = new THREE.Vector3(...direction).normalize();
+    this.plan.cut = new THREE.Vector3(...cut);
+    this.plan.dir = dir;
     if (this.mode !== 'orbit') this.setMode('orbit');
-    const half = 0.55 * Math.max(max.x - min.x, max.z - min.z) + 0.3;
+    const half = 0.55 * max.clone().sub(min).length() + 0.3;
     const fov = 2;
     const distance = half / Math.tan(THREE.MathUtils.degToRad(fov / 2));
-    this.applyPreset({ eye: [centre.x, cut + distance, centre.z], target: [centre.x, min.y, centre.z], up: [0, 0, -1], fov_deg: fov });
+    // The eye on the line through the room's centre, `distance` before the cut plane.
+    const along = this.plan.cut.clone().sub(centre).dot(dir);
+    const eye = centre.clone().addScaledVector(dir, along - distance);
+    this.applyPreset({ eye: eye.toArray(), target: centre.toArray(), up, fov_deg: fov });
     this.controls.enableRotate = false;
     this.controls.mouseButtons.LEFT = THREE.MOUSE.PAN; // a plan is moved, not turned
     this._clipPlan();
@@ -208,9 +217,9 @@ export class CameraRig {
 
   _clipPlan() {
     if (!this.plan) return;
-    const above = this.camera.position.y - this.plan.cut;
-    this.camera.near = Math.max(0.01, above);
-    this.camera.far = above + (this.room.max.y - this.room.min.y) + 10;
+    const before = this.plan.cut.clone().sub(this.camera.position).dot(this.plan.dir);
+    this.camera.near = Math.max(0.01, before);
+    this.camera.far = before + this.room.max.clone().sub(this.room.min).length() + 10;
     this.camera.updateProjectionMatrix();
   }
 

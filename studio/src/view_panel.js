@@ -8,8 +8,16 @@ import { screenshot } from './screenshot.js';
 
 const $ = (id) => document.getElementById(id);
 
-// The camera list's entry for the plan view, after the scene's cameras.
+// The camera list's entries for the plan view and the elevations, after the scene's cameras:
+// an elevation looks at its wall from the room's centre (north is −z, as the site's north_deg
+// counts from).
 const PLAN = 'plan view';
+const ELEVATIONS = {
+  'north elevation': [0, 0, -1],
+  'east elevation': [1, 0, 0],
+  'south elevation': [0, 0, 1],
+  'west elevation': [-1, 0, 0],
+};
 
 export class ViewPanel {
   constructor(viewer, rig, markers, labelsCanvas) {
@@ -105,11 +113,16 @@ export class ViewPanel {
     free.value = 'orbit';
     free.textContent = 'orbit (free camera)';
     preset.append(free);
-    const plan = document.createElement('option');
-    plan.value = PLAN;
-    plan.textContent = 'plan (from above, false colour, isolines)';
-    plan.title = 'Straight down, north up, the ceilings left out; illuminance in false colour with each sensor grid\'s isolines and readings';
-    preset.append(plan);
+    for (const [value, text, title] of [
+      [PLAN, 'plan (from above, false colour, isolines)', 'Straight down, north up, the ceilings left out; illuminance in false colour with each sensor grid\'s isolines and readings'],
+      ...Object.keys(ELEVATIONS).map((wall) => [wall, `elevation: ${wall.split(' ')[0]} wall`, 'Level towards that wall, the near half of the room left out; illuminance in false colour']),
+    ]) {
+      const o = document.createElement('option');
+      o.value = value;
+      o.textContent = text;
+      o.title = title;
+      preset.append(o);
+    }
     if (keepView) preset.value = 'orbit';
     else if (this.cameras.length) this.applyPreset(this.cameras[0].name);
     else preset.value = 'orbit';
@@ -124,11 +137,12 @@ export class ViewPanel {
       mode.value = value;
       mode.dispatchEvent(new Event('change'));
     };
-    if (!cam && name === PLAN) {
+    const section = cam ? null : this.section(name);
+    if (section) {
       if (!this.rig.plan) this.modeBeforePlan = mode.value;
-      if (this.rig.showPlan(this.planCut)) {
+      if (this.rig.showSection(...section)) {
         setMode('false-lux');
-        this.onPlan?.(true);
+        this.onPlan?.(name === PLAN);
       }
     } else if (this.rig.plan) {
       this.rig.leavePlan();
@@ -140,9 +154,18 @@ export class ViewPanel {
     $('fov-value').textContent = `${Math.round(this.rig.camera.fov)}°`;
   }
 
-  // The plan view's cut: the ceilings above it are left out (m; see CameraRig.showPlan).
+  // The plan view's cut: the ceilings above it are left out (m; see CameraRig.showSection).
   setPlanCut(cut) {
     this.planCut = cut;
+  }
+
+  // CameraRig.showSection's arguments for the plan or an elevation entry; null for others.
+  section(name) {
+    const centre = this.rig.room?.centre;
+    if (!centre) return null;
+    if (name === PLAN) return [[0, -1, 0], [0, 0, -1], [centre.x, this.planCut, centre.z]];
+    const dir = ELEVATIONS[name];
+    return dir ? [dir, [0, 1, 0], centre.toArray()] : null;
   }
 
   // The user moved the camera: no preset any more (the plan stays a plan when panned).

@@ -4,7 +4,8 @@
 // clicked (the eye brought in where the turn would take it through a wall); walking keeps the eye at eye height (1.6 m, editable) and stops at walls; the
 // readings' labels are off until asked; the dimmer is in %; the colour temperature slider is
 // logarithmic over 1800–10000 K and its box takes any value the state allows; the plan view
-// looks straight down in false colour, cut 1.2 m over the work plane, with isolines.
+// looks straight down in false colour, cut 1.2 m over the work plane, with isolines; an
+// elevation looks level at a wall with the room's near half cut away.
 import test from 'node:test';
 import assert from 'node:assert/strict';
 
@@ -110,7 +111,7 @@ test('readings are off until asked; dimmer in %; colour temperature on a log sca
   await page.waitForFunction((n) => window.relightStudio.state().luminaires?.[n]?.cct_kelvin === 20000, name);
 });
 
-test('the plan view looks down in false colour with the ceiling cut away and isolines drawn', async () => {
+test('the plan view looks down in false colour with the ceiling cut away and isolines drawn; an elevation looks at a wall', async () => {
   await page.locator('#camera-preset').selectOption({ label: 'plan (from above, false colour, isolines)' });
   await page.waitForFunction(() => window.relightStudio.isolineSegments() > 0);
   const view = await page.evaluate(() => {
@@ -125,6 +126,16 @@ test('the plan view looks down in false colour with the ceiling cut away and iso
   assert.ok(Math.abs(view.y - view.near - (workPlane + 1.2)) < 1e-6, `cut at ${view.y - view.near}`);
   assert.ok(view.y - view.near < hello.bounds.max[1], 'below the ceiling');
   console.log(`plan view: ${view.segments} isoline segments drawn`);
+  // An elevation: level towards the north (−z) wall, the room's nearer half cut away.
+  await page.locator('#camera-preset').selectOption({ label: 'elevation: north wall' });
+  const north = await page.evaluate(() => {
+    const c = window.relightStudio.camera;
+    return { dir: c.getWorldDirection(new c.position.constructor()).toArray(), z: c.position.z, near: c.near,
+             isolines: window.relightStudio.isolineSegments() };
+  });
+  assert.ok(north.dir[2] < -0.999, `towards −z: ${north.dir}`);
+  const centreZ = (hello.bounds.min[2] + hello.bounds.max[2]) / 2;
+  assert.ok(Math.abs(north.z - north.near - centreZ) < 1e-6, `cut through the centre: ${north.z - north.near}`);
   // Back to a scene camera: the tone-mapped picture and the perspective's own clipping.
   await page.locator('#camera-preset').selectOption({ label: 'overview' });
   const back = await page.evaluate(() => ({ near: window.relightStudio.camera.near, mode: document.getElementById('view-mode').value }));
