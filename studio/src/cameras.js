@@ -56,13 +56,17 @@ export class CameraRig {
     this.room = { min, max, centre: min.clone().add(max).multiplyScalar(0.5) };
   }
 
-  // The nearest surface of the room along a ray, or null (the room's mesh, as drawn).
-  _hit(origin, direction, far = Infinity) {
+  // The room's surfaces along a ray, nearest first (the room's mesh, as drawn: either side).
+  _hits(origin, direction, far = Infinity) {
     const mesh = this.viewer.mesh;
-    if (!mesh) return null;
+    if (!mesh) return [];
     this._ray.set(origin, direction);
     this._ray.far = far;
-    return this._ray.intersectObject(mesh, false)[0] ?? null;
+    return this._ray.intersectObject(mesh, false);
+  }
+
+  _hit(origin, direction, far = Infinity) {
+    return this._hits(origin, direction, far)[0] ?? null;
   }
 
   _within(p, margin) {
@@ -229,11 +233,12 @@ export class CameraRig {
     if (this.mode === 'walk') this._standOnFloor();
   }
 
-  // The floor under the eye (the up-facing surface a ray straight down meets), or the scene's
-  // lowest point; null with neither.
+  // The floor under the eye (the first surface facing up that a ray straight down meets: the
+  // back of a ceiling seen from above is passed through), or the scene's lowest point; null
+  // with neither.
   _floorUnder(position) {
     const up = this.camera.up;
-    const hit = this._hit(position, up.clone().negate());
+    const hit = this._hits(position, up.clone().negate()).find((h) => h.face && h.face.normal.dot(up) > 0.5);
     if (hit) return position.dot(up) - hit.distance;
     return this.room ? this.room.min.dot(up) : null;
   }
