@@ -28,4 +28,17 @@ Rgb window_view_radiance(const Shell& shell, Vec3 outward) {
   return weight > 0 ? sum * (1.0 / weight) : Rgb{};
 }
 
+WindowView window_view(const Shell& shell, Vec3 centre, std::uint32_t portal,
+                       std::span<const PortalSun> suns) {
+  WindowView view{&shell, centre, std::nullopt, Rgb{}};
+  for (const PortalSun& sun : suns) {
+    if (sun.portal != portal || !(sun.disc.solid_angle > 0)) continue;
+    // The illuminance facing the sun over the disc's solid angle: its uniform luminance (the
+    // disc is 0.53° across, where cos α = 1 to 1e-5).
+    view.sun = sun.disc;
+    view.sun_luminance = sun.illuminance * (1.0 / sun.disc.solid_angle);
+  }
+  return view;
+}
+
 }  // namespace relight

@@ -1,5 +1,6 @@
 #include "serve/studio_frames.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <bit>
@@ -7,6 +8,7 @@
 #include <stdexcept>
 
 #include "material/lambert.h"
+#include "math/cubemap.h"
 #include "math/vec3.h"
 #include "serve/half_float.h"
 
@@ -204,6 +206,36 @@ std::string encode_glossy_view(std::uint32_t frame_number, Vec3 eye, float milli
   for (const std::uint32_t v : glossy) put(out, v);
   for (const std::uint32_t v : glossy) {
     for (std::size_t c = 0; c < 3; ++c) put(out, float_to_half(luminance[3 * std::size_t{v} + c]));
+  }
+  return out;
+}
+
+std::string encode_window_views(std::uint32_t frame_number, std::span<const WindowView> views) {
+  const int n = views.empty() ? 0 : views.front().shell->face_size;
+  std::string out;
+  out.reserve(16 + views.size() * (40 + 6 * cubemap_texel_count(n)));
+  put_tag(out, "RLWV");
+  put(out, frame_number);
+  put(out, static_cast<std::uint32_t>(views.size()));
+  put(out, static_cast<std::uint32_t>(n));
+  for (const WindowView& v : views) {
+    if (v.shell->face_size != n || v.shell->cubemap.size() != cubemap_texel_count(n))
+      throw std::invalid_argument("encode_window_views: the shells' face sizes differ");
+    for (const double x : {v.centre.x, v.centre.y, v.centre.z}) put(out, static_cast<float>(x));
+    const Vec3 d = v.sun ? v.sun->direction : Vec3{0, 1, 0};
+    for (const double x : {d.x, d.y, d.z}) put(out, static_cast<float>(x));
+    // cos of the disc's angular radius; −2 (no direction has it) without a sun.
+    put(out, static_cast<float>(v.sun ? v.sun->cos_angular_radius : -2.0));
+    for (const double x : {v.sun_luminance.r, v.sun_luminance.g, v.sun_luminance.b})
+      put(out, static_cast<float>(v.sun ? x : 0.0));
+  }
+  constexpr double kHalfMax = 65504;  // brighter texels (a frosted sun) saturate
+  for (const WindowView& v : views) {
+    for (const Rgb& l : v.shell->cubemap) {
+      for (const double x : {l.r, l.g, l.b}) {
+        put(out, float_to_half(static_cast<float>(std::min(std::max(x, 0.0), kHalfMax))));
+      }
+    }
   }
   return out;
 }

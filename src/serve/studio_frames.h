@@ -1,6 +1,7 @@
 // The studio's binary messages (docs/studio-protocol.md): the geometry `RLGE` once per
 // connection, the movable objects' meshes `RLOB` after it (scenes with objects only), and a
-// radiance frame `RLFR` per state change. A frame carries per vertex what a camera sees of the
+// radiance frame `RLFR` per state change, and the windows' views out `RLWV` when they change. A
+// frame carries per vertex what a camera sees of the
 // diffuse surface, L = ρ·E/π per channel (cd/m²), and the illuminance Y(E) (lx) for the
 // false-colour view, as half floats, then the sensors' own readings as floats, then the same
 // two values per object vertex. Little-endian, as the protocol page lays out.
@@ -14,6 +15,7 @@
 
 #include "math/rgb.h"
 #include "runtime/relit_scene.h"
+#include "runtime/window_view.h"
 
 namespace relight {
 
@@ -63,5 +65,11 @@ std::string encode_frame(std::uint32_t frame_number, std::optional<std::uint32_t
 // (render/relit_scene_image.h glossy_vertex_luminance).
 std::string encode_glossy_view(std::uint32_t frame_number, Vec3 eye, float milliseconds,
                                std::span<const float> luminance);
+
+// `RLWV` (docs/studio-protocol.md): what each window shows looking out, for frame
+// `frame_number`, for a client that draws the outside through the glass per pixel: per portal
+// its centre, the sun traced apart from its shell, and the shell's cubemap (math/cubemap.h
+// layout) as half floats. Throws std::invalid_argument when the shells' face sizes differ.
+std::string encode_window_views(std::uint32_t frame_number, std::span<const WindowView> views);
 
 }  // namespace relight

@@ -22,6 +22,7 @@
 #include "runtime/progressive_frames.h"
 #include "runtime/relit_scene.h"
 #include "runtime/scene_export.h"
+#include "runtime/window_view.h"
 #include "scene/json_node.h"
 #include "serve/model_opening.h"
 #include "serve/photometry_catalogue.h"
@@ -131,6 +132,12 @@ struct StudioServer::Impl {
   std::atomic<bool> optimize_busy{false};
   std::unique_ptr<RelitScene> design_scene;  // only the optimizer thread uses it
   std::optional<fs::path> next_scene;        // guarded by `mutex`
+  // The latest RLWV (what the windows show looking out), for clients that open; null when the
+  // scene has no windows. Guarded by `mutex`.
+  std::shared_ptr<const std::string> window_views;
+  // The portals and site of the state the latest RLWV shows (the worker's): the views change
+  // only with them.
+  std::optional<std::pair<std::vector<PortalState>, std::optional<Site>>> window_views_of;
   // "Open model…"; last, so that it ends (and its thread stops) before the transport it sends on.
   std::unique_ptr<ModelOpening> opening;
 
@@ -239,10 +246,12 @@ struct StudioServer::Impl {
                                             {"frame", number},
                                             {"final", final},
                                             {"state", p.document}});
+    const std::shared_ptr<const std::string> views = changed_window_views(p.state, number);
     std::set<ConnectionId> to;
     {
       std::lock_guard lock(mutex);
       shown = {frame, values, p.document, p.state, number, std::move(placed)};
+      if (views) window_views = views;
       to = clients;
     }
     frame_number = number;
@@ -252,8 +261,29 @@ struct StudioServer::Impl {
     for (const ConnectionId c : to) {
       transport->send(c, state_text, false, true);
       transport->send(c, *frame, true, true);
+      // Not droppable: a client that missed it would show stale windows until the sky changes.
+      if (views) transport->send(c, *views, true);
       for (const std::string& m : profiles) transport->send(c, m, false, true);
     }
+  }
+
+  // The RLWV of what `relit` shows when the state's portals or site differ from those of the
+  // last one (sky, sun, tint, frost, exterior objects), else null.
+  std::shared_ptr<const std::string> changed_window_views(const LightingState& state,
+                                                          std::uint32_t frame_number) {
+    const std::size_t portals = transfer().view.portals.size();
+    if (portals == 0) return nullptr;
+    auto of = std::make_pair(state.portals, state.site);
+    if (window_views_of == of) return nullptr;
+    window_views_of = std::move(of);
+    std::vector<WindowView> views;
+    views.reserve(portals);
+    const Relighter& r = relit->relighter();
+    for (std::size_t p = 0; p < portals; ++p) {
+      views.push_back(window_view(r.shell(p), transfer().view.portals[p].centre,
+                                  static_cast<std::uint32_t>(p), r.suns()));
+    }
+    return std::make_shared<const std::string>(encode_window_views(frame_number, views));
   }
 
   // Sends client `id` its glossy vertices' luminance toward `eye` under the state shown
@@ -286,6 +316,7 @@ struct StudioServer::Impl {
     transport->send(id, geometry, true);
     if (!objects_message.empty()) transport->send(id, objects_message, true);
     transport->send(id, *shown.frame, true);
+    if (window_views) transport->send(id, *window_views, true);
     if (catalogue) {
       std::lock_guard catalogue_lock(catalogue_mutex);
       send_json(id, catalogue_message(*catalogue));
@@ -620,6 +651,7 @@ StudioServer::StudioServer(const fs::path& rlt, const StudioOptions& options)
       initial,
       1,
       placed_for_picks(t, initial)};
+  s.window_views = s.changed_window_views(initial, 1);
 
   WebSocketServerOptions transport_options;
   transport_options.host = options.host;

@@ -13,15 +13,23 @@
 //    automatic false-colour range.
 // Back faces absorb (the CLI shows them as "no surface": black, grey in false colour) unless
 // the material is two-sided (window glass, whose illuminance is shown as no surface too).
+// Window glass shows, once the server has sent the windows' views (RLWV), what its portal
+// sees along the line of sight from the eye: the shell and the sun's disc, per pixel.
 import * as THREE from 'three';
 import { RAMP } from './false_color.js';
 
 const vertexShader = /* glsl */ `
 attribute vec4 lighting;
+attribute float portal;      // the portal of a glass vertex (RLGE code − 1), −1 elsewhere
 varying vec4 vLighting;
+varying vec3 vWorld;
+flat varying float vPortal;
 void main() {
   vLighting = lighting;
-  gl_Position = projectionMatrix * modelViewMatrix * vec4(position, 1.0);
+  vPortal = portal;
+  vec4 world = modelMatrix * vec4(position, 1.0);
+  vWorld = world.xyz;
+  gl_Position = projectionMatrix * viewMatrix * world;
 }
 `;
 
@@ -34,7 +42,15 @@ uniform bool uLog;
 uniform bool uTwoSided;
 uniform vec3 uRamp[7];
 uniform vec3 uNoSurface;
+// Window views (RLWV): per portal a 6N × N strip of its shell's faces (+X −X +Y −Y +Z −Z) and
+// a row of its sun: (direction, cos of the disc's radius), (luminance, 0).
+uniform bool uViews;
+uniform highp sampler2DArray uViewMaps;
+uniform highp sampler2D uViewSuns;
+uniform float uViewFace;
 varying vec4 vLighting;
+varying vec3 vWorld;
+flat varying float vPortal;
 
 float rolloff(float x) {
   if (x <= 0.6) return x;
@@ -59,9 +75,32 @@ float scalePosition(float v) {
   return (v - uMin) / (uMax - uMin);
 }
 
+// What portal p's glass shows along d: its shell by the OpenGL cube-map convention
+// (src/math/cubemap.h), bilinear within a face, and the sun's disc.
+vec3 windowView(int p, vec3 d) {
+  vec3 a = abs(d);
+  float face, sc, tc, ma;
+  if (a.x >= a.y && a.x >= a.z) {
+    ma = a.x; face = d.x > 0.0 ? 0.0 : 1.0; sc = d.x > 0.0 ? -d.z : d.z; tc = -d.y;
+  } else if (a.y >= a.z) {
+    ma = a.y; face = d.y > 0.0 ? 2.0 : 3.0; sc = d.x; tc = d.y > 0.0 ? d.z : -d.z;
+  } else {
+    ma = a.z; face = d.z > 0.0 ? 4.0 : 5.0; sc = d.z > 0.0 ? d.x : -d.x; tc = -d.y;
+  }
+  // Kept half a texel inside the face: its neighbour in the strip is another face.
+  float inset = 0.5 / uViewFace;
+  float s = clamp(0.5 * (sc / ma + 1.0), inset, 1.0 - inset);
+  float t = clamp(0.5 * (tc / ma + 1.0), inset, 1.0 - inset);
+  vec3 L = texture(uViewMaps, vec3((face + s) / 6.0, t, float(p))).rgb;
+  vec4 sun = texelFetch(uViewSuns, ivec2(0, p), 0);
+  if (dot(d, sun.xyz) >= sun.w) L += texelFetch(uViewSuns, ivec2(1, p), 0).rgb;
+  return L;
+}
+
 void main() {
   bool front = gl_FrontFacing || uTwoSided;
   vec3 L = max(vLighting.rgb, vec3(0.0));
+  if (uTwoSided && uViews && vPortal >= 0.0) L = max(windowView(int(vPortal + 0.5), normalize(vWorld - cameraPosition)), vec3(0.0));
   float Y = dot(L, vec3(0.2126, 0.7152, 0.0722));
   float E = max(vLighting.a, 0.0);
   if (uMode == 3) {
@@ -104,6 +143,10 @@ export function createDisplayMaterial(twoSided) {
       uTwoSided: { value: twoSided },
       uRamp: { value: RAMP.map((c) => new THREE.Vector3(...c)) },
       uNoSurface: { value: new THREE.Vector3(128, 128, 128) },
+      uViews: { value: false },
+      uViewMaps: { value: null },
+      uViewSuns: { value: null },
+      uViewFace: { value: 1 },
     },
   });
 }

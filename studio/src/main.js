@@ -22,7 +22,7 @@ import { MaterialPanel } from './materials.js';
 import { ModelOpener } from './open_model.js';
 import { ObjectPanel, ObjectsView } from './objects.js';
 import { OptimizePanel } from './optimize.js';
-import { decodeFrame, decodeGeometry, decodeGlossyView, decodeObjects, halfToFloat, messages, splitGlossyView } from './protocol.js';
+import { decodeFrame, decodeGeometry, decodeGlossyView, decodeObjects, decodeWindowViews, halfToFloat, messages, splitGlossyView } from './protocol.js';
 import { Sensors } from './sensors.js';
 import { StateStore, canonical } from './state.js';
 import { notice } from './ui.js';
@@ -64,6 +64,7 @@ try {
   throw e;
 }
 api.camera = viewer.camera;
+api.portalAt = (x, y) => viewer.portalAt(x, y);
 
 const proto = location.protocol === 'https:' ? 'wss:' : 'ws:';
 const connection = new Connection(`${proto}//${location.host}/ws`, {
@@ -324,6 +325,11 @@ function onBinary(tag, buffer) {
       objectsView.setGlossyView(parts.objects);
       api.glossyViews++;
       api.lastGlossyView = { frame: g.frame, count: g.count, eye: g.eye, serverMs: g.serverMs, vertices: Array.from(g.vertices) };
+    } else if (tag === 'RLWV') {
+      if (!session.geometry) throw new Error('RLWV before RLGE');
+      const views = decodeWindowViews(buffer);
+      viewer.setWindowViews(views);
+      api.windowViews = viewer.windowViews;
     } else {
       console.warn(`relight studio: unknown binary message "${tag}"`);
     }

@@ -1,5 +1,6 @@
 // Wire format of `relight serve` (docs/studio-protocol.md): decoding of the binary
-// geometry ("RLGE"), movable objects ("RLOB"), frame ("RLFR") and glossy view ("RLGV")
+// geometry ("RLGE"), movable objects ("RLOB"), frame ("RLFR"), glossy view ("RLGV") and window
+// views ("RLWV")
 // messages, IEEE 754 binary16 → number, and builders for the client's text messages (state,
 // pick, distribution, ping, view).
 
@@ -134,6 +135,32 @@ export function decodeGlossyView(buffer) {
     eye: [dv.getFloat32(16, true), dv.getFloat32(20, true), dv.getFloat32(24, true)],
     vertices: view(Uint32Array, buffer, 28, G, 'getUint32'),
     halfs: view(Uint16Array, buffer, 28 + 4 * G, 3 * G, 'getUint16'),
+  };
+}
+
+// RLWV: what each window shows looking out — per portal its centre, the sun disc drawn apart
+// (direction, cos of its angular radius, −2 without a sun; luminance R G B) and its shell as
+// 6·N² texels of three half floats (cd/m²; faces +X −X +Y −Y +Z −Z, the OpenGL cube-map
+// layout), all portals' texels back to back.
+export function decodeWindowViews(buffer) {
+  need(buffer, 16, 'RLWV header');
+  if (binaryTag(buffer) !== 'RLWV') throw new Error(`expected RLWV, got "${binaryTag(buffer)}"`);
+  const dv = new DataView(buffer);
+  const P = dv.getUint32(8, true), N = dv.getUint32(12, true);
+  const expected = 16 + 40 * P + 6 * 6 * N * N * P;
+  if (buffer.byteLength !== expected) throw new Error(`RLWV: ${buffer.byteLength} bytes, expected ${expected}`);
+  const f = (at) => dv.getFloat32(at, true);
+  const portals = [];
+  for (let p = 0; p < P; ++p) {
+    const at = 16 + 40 * p;
+    portals.push({ centre: [f(at), f(at + 4), f(at + 8)], sunDirection: [f(at + 12), f(at + 16), f(at + 20)],
+                   sunCos: f(at + 24), sunLuminance: [f(at + 28), f(at + 32), f(at + 36)] });
+  }
+  return {
+    frame: dv.getUint32(4, true),
+    faceSize: N,
+    portals,
+    halfs: view(Uint16Array, buffer, 16 + 40 * P, 3 * 6 * N * N * P, 'getUint16'),
   };
 }
 

@@ -8,7 +8,7 @@
 // Overlays (luminaire markers, sensor points) live on layer 1, which metering ignores. The
 // movable objects (objects.js) are surfaces like the room: their meshes go into `objects`
 // (layer 0), drawn with the room's opaque material, so exposure, false colour and metering
-// treat them as the room.
+// treat them as the room. Window glass (group 1) shows the windows' views (RLWV) per pixel.
 import * as THREE from 'three';
 import { createDisplayMaterial } from './display_shader.js';
 import { autoExposureEv100, exposureScale, resolveScale } from './false_color.js';
@@ -107,11 +107,20 @@ export class Viewer {
       }
     }
     const opaqueCount = 3 * geom.triangleCodes.reduce((a, c) => a + (c === 0 ? 1 : 0), 0);
+    this.opaqueCount = opaqueCount;
     const g = new THREE.BufferGeometry();
     g.setAttribute('position', new THREE.BufferAttribute(new Float32Array(geom.positions), 3));
     this.lighting = new THREE.Float16BufferAttribute(new Uint16Array(4 * geom.vertexCount), 4);
     this.lighting.setUsage(THREE.DynamicDrawUsage);
     g.setAttribute('lighting', this.lighting);
+    // Each glass vertex's portal, for the window views (a vertex two portals share takes one).
+    const portal = new Float32Array(geom.vertexCount).fill(-1);
+    for (let t = 0; t < T; t++) {
+      const code = geom.triangleCodes[t];
+      if (code > 0) for (let k = 0; k < 3; k++) portal[geom.indices[3 * t + k]] = code - 1;
+    }
+    g.setAttribute('portal', new THREE.BufferAttribute(portal, 1));
+    this.materials[1].uniforms.uViews.value = false; // until this scene's RLWV
     g.setIndex(new THREE.BufferAttribute(index, 1));
     g.addGroup(0, opaqueCount, 0);
     g.addGroup(opaqueCount, 3 * T - opaqueCount, 1);
@@ -169,6 +178,58 @@ export class Viewer {
     for (let i = 0; i < vertices.length; i++) {
       for (let c = 0; c < 3; c++) a[4 * vertices[i] + c] = halfs[3 * i + c];
     }
+  }
+
+  // The portal whose glass canvas point (x, y) shows first, or −1 (not glass, or nothing).
+  portalAt(x, y) {
+    if (!this.mesh) return -1;
+    const { origin, direction } = this.rayAt(x, y);
+    const ray = new THREE.Raycaster(new THREE.Vector3(...origin), new THREE.Vector3(...direction));
+    const hit = ray.intersectObject(this.mesh, false)[0];
+    if (!hit || 3 * hit.faceIndex < this.opaqueCount) return -1;
+    return this.mesh.geometry.getAttribute('portal').getX(hit.face.a);
+  }
+
+  // What the windows show looking out (a decoded RLWV): the glass draws it per pixel from now on.
+  setWindowViews(views) {
+    const N = views.faceSize, P = views.portals.length;
+    if (!P || !N) return;
+    const data = new Uint16Array(4 * 6 * N * N * P);
+    const ONE = 0x3c00; // 1.0 as a half float
+    for (let p = 0; p < P; p++) {
+      for (let face = 0; face < 6; face++) {
+        for (let j = 0; j < N; j++) {
+          for (let i = 0; i < N; i++) {
+            const from = 3 * (((p * 6 + face) * N + j) * N + i);
+            const to = 4 * ((p * N + j) * 6 * N + face * N + i);
+            data[to] = views.halfs[from];
+            data[to + 1] = views.halfs[from + 1];
+            data[to + 2] = views.halfs[from + 2];
+            data[to + 3] = ONE;
+          }
+        }
+      }
+    }
+    const maps = new THREE.DataArrayTexture(data, 6 * N, N, P);
+    maps.type = THREE.HalfFloatType;
+    maps.format = THREE.RGBAFormat;
+    maps.minFilter = maps.magFilter = THREE.LinearFilter;
+    maps.needsUpdate = true;
+    const sunData = new Float32Array(8 * P);
+    views.portals.forEach((v, p) => {
+      sunData.set([...v.sunDirection, v.sunCos, ...v.sunLuminance, 0], 8 * p);
+    });
+    const suns = new THREE.DataTexture(sunData, 2, P, THREE.RGBAFormat, THREE.FloatType);
+    suns.needsUpdate = true;
+    const u = this.materials[1].uniforms;
+    u.uViewMaps.value?.dispose();
+    u.uViewSuns.value?.dispose();
+    u.uViewMaps.value = maps;
+    u.uViewSuns.value = suns;
+    u.uViewFace.value = N;
+    u.uViews.value = true;
+    this.windowViews = { frame: views.frame, portals: P, faceSize: N };
+    this.requestRender();
   }
 
   addOverlay(object) {

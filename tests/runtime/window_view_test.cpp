@@ -1,5 +1,6 @@
 // runtime/window_view.h: the glass of a window shows the mean radiance of its shell over the
-// outward hemisphere, without the sun's deposit.
+// outward hemisphere, without the sun's deposit; per direction, the shell and the sun traced
+// through that portal, its disc's luminance its illuminance over its solid angle.
 #include <gtest/gtest.h>
 
 #include "math/cubemap.h"
@@ -37,6 +38,23 @@ TEST(WindowView, MeanOverTheOutwardHemisphereWeightedBySolidAngle) {
 
 TEST(WindowView, EmptyShellShowsBlack) {
   EXPECT_EQ(window_view_radiance(Shell{}, {0, 0, 1}).r, 0);
+}
+
+TEST(WindowView, TheSunTracedThroughThePortalIsItsDiscAtIlluminanceOverSolidAngle) {
+  Shell shell;
+  const SunDisc disc = make_sun_disc(normalize(Vec3{0.3, 0.8, -0.5}), 80000);
+  const std::vector<PortalSun> suns{make_portal_sun(1, disc, Rgb{60000, 50000, 40000}, nullptr)};
+  const WindowView through = window_view(shell, {1, 2, 3}, 1, suns);
+  ASSERT_TRUE(through.sun.has_value());
+  EXPECT_EQ(through.shell, &shell);
+  EXPECT_NEAR(through.centre.y, 2, 0);
+  EXPECT_NEAR(dot(through.sun->direction, disc.direction), 1, 1e-12);
+  EXPECT_NEAR(through.sun_luminance.r * disc.solid_angle, 60000, 1e-6);
+  EXPECT_NEAR(through.sun_luminance.b * disc.solid_angle, 40000, 1e-6);
+  // Another portal's sun is not this one's.
+  const WindowView other = window_view(shell, {0, 0, 0}, 0, suns);
+  EXPECT_FALSE(other.sun.has_value());
+  EXPECT_EQ(other.sun_luminance.g, 0);
 }
 
 }  // namespace

@@ -10,6 +10,8 @@
 
 #include <gtest/gtest.h>
 
+#include "light/sky_model.h"
+#include "math/cubemap.h"
 #include "math/rgb.h"
 #include "runtime/lighting_state.h"
 #include "runtime/relit_scene.h"
@@ -240,8 +242,8 @@ TEST(StudioFrames, ObjectValuesAreTheRelighterLight) {
 // half floats after the indices; the header carries the frame, the count and the eye.
 TEST(StudioFrames, GlossyViewListsTheGlossyVerticesAndTheirLuminance) {
   const float nan = std::nanf("");
-  const std::vector<float> luminance{nan, nan, nan, 1.5f, 2.0f, 4.0f, nan, nan, nan,
-                                     0.25f, 0.5f, 0.75f};
+  const std::vector<float> luminance{nan, nan, nan, 1.5f,  2.0f, 4.0f,
+                                     nan, nan, nan, 0.25f, 0.5f, 0.75f};
   const std::string bytes = encode_glossy_view(7, {1, 2, 3}, 3.5f, luminance);
   ASSERT_EQ(bytes.size(), 28u + 2 * 4 + 2 * 6);
   EXPECT_EQ(bytes.substr(0, 4), "RLGV");
@@ -258,6 +260,56 @@ TEST(StudioFrames, GlossyViewListsTheGlossyVerticesAndTheirLuminance) {
   EXPECT_EQ(half_to_float(read<std::uint16_t>(bytes, 46)), 0.75f);
   // Nothing glossy: the header alone.
   EXPECT_EQ(encode_glossy_view(1, {}, 0, std::vector<float>(6, nan)).size(), 28u);
+}
+
+TEST(StudioFrames, WindowViewsCarryEachPortalsShellAndSunAsTheProtocolLaysOut) {
+  const int n = 2;
+  Shell a, b;
+  for (Shell* s : {&a, &b}) {
+    s->face_size = n;
+    s->cubemap.resize(cubemap_texel_count(n));
+  }
+  for (std::size_t i = 0; i < a.cubemap.size(); ++i) {
+    a.cubemap[i] = Rgb{static_cast<double>(i), 0.5, 1e6};  // 1e6 saturates at half's 65504
+    b.cubemap[i] = Rgb{2, 3, -1};                          // negative: 0
+  }
+  const SunDisc disc = make_sun_disc(Vec3{0, 1, 0}, 1e5);
+  std::vector<WindowView> views{{&a, {1, 2, 3}, std::nullopt, Rgb{}},
+                                {&b, {4, 5, 6}, disc, Rgb{7, 8, 9}}};
+  const std::string m = encode_window_views(42, views);
+  const std::size_t texels = cubemap_texel_count(n);
+  ASSERT_EQ(m.size(), 16 + 40 * 2 + 6 * texels * 2);
+  EXPECT_EQ(m.substr(0, 4), "RLWV");
+  const auto u32 = [&](std::size_t at) {
+    std::uint32_t v;
+    std::memcpy(&v, m.data() + at, 4);
+    return v;
+  };
+  const auto f32 = [&](std::size_t at) {
+    float v;
+    std::memcpy(&v, m.data() + at, 4);
+    return v;
+  };
+  const auto half = [&](std::size_t k) {
+    std::uint16_t h;
+    std::memcpy(&h, m.data() + 16 + 80 + 2 * k, 2);
+    return half_to_float(h);
+  };
+  EXPECT_EQ(u32(4), 42U);
+  EXPECT_EQ(u32(8), 2U);
+  EXPECT_EQ(u32(12), static_cast<std::uint32_t>(n));
+  EXPECT_EQ(f32(16), 1.0F);        // portal 0's centre
+  EXPECT_EQ(f32(16 + 24), -2.0F);  // no sun
+  EXPECT_EQ(f32(16 + 28), 0.0F);
+  EXPECT_EQ(f32(56 + 12 + 4), 1.0F);  // portal 1's sun direction y
+  EXPECT_NEAR(f32(56 + 24), std::cos(disc.angular_radius), 1e-7);
+  EXPECT_EQ(f32(56 + 36), 9.0F);
+  EXPECT_EQ(half(3 * 5), 5.0F);  // portal 0, texel 5, red
+  EXPECT_EQ(half(3 * 5 + 2), 65504.0F);
+  EXPECT_EQ(half(3 * texels + 1), 3.0F);  // portal 1, texel 0, green
+  EXPECT_EQ(half(3 * texels + 2), 0.0F);
+  b.face_size = 4;
+  EXPECT_THROW((void)encode_window_views(1, views), std::invalid_argument);
 }
 
 }  // namespace
