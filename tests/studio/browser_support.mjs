@@ -44,6 +44,16 @@ export async function openStudio(url, { viewport = { width: 1100, height: 700 } 
   }
 }
 
+// The hello a new connection to `server` gets: the scene's names, as the page has them.
+export async function sceneHello(server) {
+  const c = await connect(server.ws);
+  try {
+    return await c.nextJson('hello');
+  } finally {
+    c.close();
+  }
+}
+
 // A real `relight serve` (startServer's arguments), a WebSocket watcher on it and the studio in
 // Chromium. Returns {server, watcher, studio, page, close}; close() takes down what was opened,
 // in reverse order, and asserts that the server exits cleanly.

@@ -9,17 +9,14 @@
 import test from 'node:test';
 import assert from 'node:assert/strict';
 
-import { openSession } from './browser_support.mjs';
-import { connect } from './studio_support.mjs';
+import { openSession, sceneHello } from './browser_support.mjs';
 
 let session, page, hello;
 
 test.before(async () => {
   session = await openSession();
   page = session.page;
-  const c = await connect(session.server.ws);
-  hello = await c.nextJson('hello');
-  c.close();
+  hello = await sceneHello(session.server);
 });
 
 test.after(async () => {

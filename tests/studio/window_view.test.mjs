@@ -7,17 +7,14 @@
 import test from 'node:test';
 import assert from 'node:assert/strict';
 
-import { afterNewFrame, openSession } from './browser_support.mjs';
-import { connect } from './studio_support.mjs';
+import { afterNewFrame, openSession, pixels, sceneHello } from './browser_support.mjs';
 
 let session, page, hello;
 
 test.before(async () => {
   session = await openSession();
   page = session.page;
-  const c = await connect(session.server.ws);
-  hello = await c.nextJson('hello');
-  c.close();
+  hello = await sceneHello(session.server);
 });
 
 test.after(async () => {
@@ -32,16 +29,12 @@ const overcast = (lux) => ({
 
 // The mean display value of the glass pixels whose line of sight rises (above) and falls
 // (below) more than `slope`, over a grid of canvas points.
-function glassBrightness(slope) {
+async function glassBrightness(slope) {
+  await pixels(page);  // keeps each pixel's display value (browser_support.mjs)
   return page.evaluate((slope) => {
     const api = window.relightStudio;
     const canvas = document.getElementById('viewport');
-    const copy = document.createElement('canvas');
-    copy.width = canvas.width;
-    copy.height = canvas.height;
-    const ctx = copy.getContext('2d');
-    ctx.drawImage(canvas, 0, 0);
-    const { data } = ctx.getImageData(0, 0, copy.width, copy.height);
+    const y8 = window.__studioTestLuminance.last;
     const scale = canvas.width / canvas.clientWidth;
     const sums = { above: [0, 0], below: [0, 0] };
     for (let y = 4; y < canvas.clientHeight; y += 8) {
@@ -51,8 +44,7 @@ function glassBrightness(slope) {
         const dir = new api.camera.position.constructor(ndcX, ndcY, 0.5).unproject(api.camera).sub(api.camera.position).normalize();
         const side = dir.y > slope ? 'above' : dir.y < -slope ? 'below' : null;
         if (!side) continue;
-        const k = 4 * (Math.round(y * scale) * copy.width + Math.round(x * scale));
-        sums[side][0] += 0.2126 * data[k] + 0.7152 * data[k + 1] + 0.0722 * data[k + 2];
+        sums[side][0] += y8[Math.round(y * scale) * canvas.width + Math.round(x * scale)];
         sums[side][1] += 1;
       }
     }
@@ -68,7 +60,6 @@ test('the window shows the overcast sky above the horizon and the darker ground 
   await page.locator('#exposure').fill('11');
   await afterNewFrame(page, () => page.evaluate((s) => window.relightStudio.setState(s), overcast(10000)));
   await page.waitForFunction(() => window.relightStudio.windowViews && window.relightStudio.lastState?.final);
-  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
   const b = await glassBrightness(0.05);
   console.log(`window glass: mean display value ${b.above.toFixed(1)} above the horizon, ` +
               `${b.below.toFixed(1)} below (${b.counts[0]} and ${b.counts[1]} points)`);
