@@ -189,7 +189,10 @@ TEST(MpiPrecompute, ASceneTooLargeForARanksShareOfMemoryIsRefusedBeforeTracingWi
     EXPECT_TRUE(r.out.empty()) << r.out;
     EXPECT_FALSE(fs::exists(out));
     // Refused once the Embree scene is built and a sample of the gather operator's rows traced.
-    EXPECT_LT(seconds, 20) << (ranks ? "two ranks" : "one process");
+    // Under AddressSanitizer the ranks unwind every allocation's stack (mpirun_two), several
+    // times slower: the bound is for the build that ships.
+    if (std::getenv("RELIGHT_SANITIZER") == nullptr)
+      EXPECT_LT(seconds, 20) << (ranks ? "two ranks" : "one process");
   }
 }
 
