@@ -273,9 +273,11 @@ struct StudioServer::Impl {
                                                           std::uint32_t frame_number) {
     const std::size_t portals = transfer().view.portals.size();
     if (portals == 0) return nullptr;
-    auto of = std::make_pair(state.portals, state.site);
-    if (window_views_of == of) return nullptr;
-    window_views_of = std::move(of);
+    // Compared in place: a copy only when they changed (a dimmer drag copies nothing).
+    if (window_views_of && window_views_of->first == state.portals &&
+        window_views_of->second == state.site)
+      return nullptr;
+    window_views_of.emplace(state.portals, state.site);
     std::vector<WindowView> views;
     views.reserve(portals);
     const Relighter& r = relit->relighter();
